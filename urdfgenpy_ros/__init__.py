@@ -1,0 +1,40 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Build, read, check and publish robot descriptions for ROS 2.
+
+>>> from urdfgenpy_ros import Box, Inertial, Link, Robot, Visual
+>>> robot = Robot('demo').add_link(Link('base_link'))
+"""
+
+from urdfgenpy_ros.errors import ParseError, SourceLocation, UrdfgenpyError
+from urdfgenpy_ros.extensions import Extension
+from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Mesh, Origin, Sphere
+from urdfgenpy_ros.inertial import Inertial
+from urdfgenpy_ros.joint import (
+    Joint, JointCalibration, JointDynamics, JointLimit, JointMimic, JointType,
+    SafetyController)
+from urdfgenpy_ros.link import Collision, Link, Visual
+from urdfgenpy_ros.material import Material
+from urdfgenpy_ros.robot import Robot
+
+__version__ = '0.1.0'
+
+__all__ = [
+    'Box', 'Collision', 'Cylinder', 'Extension', 'Geometry', 'Inertial', 'Joint',
+    'JointCalibration', 'JointDynamics', 'JointLimit', 'JointMimic', 'JointType', 'Link',
+    'Material', 'Mesh', 'Origin', 'ParseError', 'Robot', 'SafetyController', 'SourceLocation',
+    'Sphere', 'UrdfgenpyError', 'Visual', '__version__',
+]

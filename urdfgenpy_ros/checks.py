@@ -1,0 +1,97 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Argument checks run when model elements are built in Python.
+
+Readers turn them off with :func:`unchecked`, so that a faulty file still loads and
+``validate()`` can report every problem with its line instead of stopping at the first.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
+from contextvars import ContextVar
+import math
+
+_ENABLED: ContextVar[bool] = ContextVar('urdfgenpy_checks', default=True)
+
+Vec3 = tuple[float, float, float]
+
+
+def enabled() -> bool:
+    """Return whether construction checks are active in this context."""
+    return _ENABLED.get()
+
+
+@contextmanager
+def unchecked() -> Iterator[None]:
+    """Build elements without raising on bad values (readers use this)."""
+    token = _ENABLED.set(False)
+    try:
+        yield
+    finally:
+        _ENABLED.reset(token)
+
+
+def to_float(owner: str, field: str, value: object) -> float:
+    """Coerce ``value`` to float, or raise a ValueError naming the field."""
+    try:
+        return float(value)  # type: ignore[arg-type]
+    except (TypeError, ValueError):
+        raise ValueError(f'{owner}: {field} must be a number, got {value!r}') from None
+
+
+def finite(owner: str, field: str, value: object) -> float:
+    """Return ``value`` as a finite float; raise ValueError when checks are on."""
+    number = to_float(owner, field, value)
+    if not math.isfinite(number) and _ENABLED.get():
+        raise ValueError(f'{owner}: {field} must be finite, got {number!r}')
+    return number
+
+
+def positive(owner: str, field: str, value: object, unit: str = 'm') -> float:
+    """Return ``value`` as a float > 0 (a size); raise ValueError when checks are on."""
+    number = to_float(owner, field, value)
+    if _ENABLED.get() and not (math.isfinite(number) and number > 0.0):
+        raise ValueError(
+            f'{owner}: {field} must be a positive finite number of {unit}, got {number!r}')
+    return number
+
+
+def non_negative(owner: str, field: str, value: object, unit: str) -> float:
+    """Return ``value`` as a float >= 0 (a mass, an effort); raise ValueError if checked."""
+    number = to_float(owner, field, value)
+    if _ENABLED.get() and not (math.isfinite(number) and number >= 0.0):
+        raise ValueError(
+            f'{owner}: {field} must be a finite number >= 0 {unit}, got {number!r}')
+    return number
+
+
+def vec3(owner: str, field: str, value: Sequence[object]) -> Vec3:
+    """Return a 3-vector of finite floats; raise ValueError when malformed."""
+    try:
+        x, y, z = value  # type: ignore[misc]
+    except (TypeError, ValueError):
+        raise ValueError(
+            f'{owner}: {field} must have 3 numbers (x, y, z), got {value!r}') from None
+    return (finite(owner, field, x), finite(owner, field, y), finite(owner, field, z))
+
+
+def name(owner: str, value: object) -> str:
+    """Return a non-empty string name or raise ValueError."""
+    if _ENABLED.get() and (not isinstance(value, str) or not value.strip()):
+        raise ValueError(f'{owner}: name must be a non-empty string, got {value!r}')
+    return value  # type: ignore[return-value]

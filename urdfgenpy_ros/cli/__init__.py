@@ -1,0 +1,55 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""The ``urdfgenpy`` command: one click group, one module per sub-command."""
+
+from __future__ import annotations
+
+import sys
+import traceback
+
+import click
+
+from urdfgenpy_ros.cli.example import example
+from urdfgenpy_ros.errors import UrdfgenpyError
+
+EXIT_UNREADABLE = 2
+
+
+class _Group(click.Group):
+    """A group that prints known errors as one line and exits 2."""
+
+    def invoke(self, ctx: click.Context) -> object:
+        try:
+            return super().invoke(ctx)
+        except (UrdfgenpyError, OSError, ValueError) as error:
+            if ctx.obj and ctx.obj.get('verbose'):
+                traceback.print_exc()
+            message = str(error)
+            if isinstance(error, OSError) and error.filename:
+                message = f'{error.filename}: {error.strerror}'
+            click.echo(f'urdfgenpy: {message}', err=True)
+            sys.exit(EXIT_UNREADABLE)
+
+
+@click.group(cls=_Group, context_settings={'help_option_names': ['-h', '--help']})
+@click.option('--verbose', is_flag=True, help='Show tracebacks of known errors too.')
+@click.version_option(package_name='urdfgenpy_ros')
+@click.pass_context
+def main(ctx: click.Context, verbose: bool) -> None:
+    """Build, read, check and convert robot descriptions."""
+    ctx.obj = {'verbose': verbose}
+
+
+main.add_command(example)

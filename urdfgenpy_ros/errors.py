@@ -1,0 +1,62 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Errors a user can meet, and where in a file they come from."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+class UrdfgenpyError(Exception):
+    """Base class of every error this package raises on purpose."""
+
+
+@dataclass(frozen=True, slots=True)
+class SourceLocation:
+    """Where an element was read from: file, line, column and element path."""
+
+    file: str | None = None
+    line: int | None = None
+    column: int | None = None
+    path: str | None = None
+
+    def __str__(self) -> str:
+        """Return ``file:line:col`` when known, else the element path."""
+        if self.line is not None:
+            where = self.file or '<string>'
+            column = self.column if self.column is not None else 1
+            return f'{where}:{self.line}:{column}'
+        return self.path or self.file or '<model>'
+
+
+class ParseError(UrdfgenpyError):
+    """A description that cannot be read; the message is one line."""
+
+    def __init__(self, message: str, location: SourceLocation | None = None,
+                 code: str = 'P001') -> None:
+        self.location = location
+        self.code = code
+        self.message = message
+        prefix = f'{location}: ' if location is not None else ''
+        super().__init__(f'{prefix}error {code} {message}')
+
+
+class MissingDependencyError(UrdfgenpyError):
+    """An optional dependency a feature needs is not installed."""
+
+    def __init__(self, module: str, extra: str, feature: str) -> None:
+        super().__init__(
+            f'{feature} needs the Python package {module!r}: '
+            f"pip install 'urdfgenpy_ros[{extra}]'")

@@ -1,0 +1,46 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Reading and writing robot descriptions, chosen by file suffix."""
+
+from __future__ import annotations
+
+from os import PathLike
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
+
+WRITERS = {'.urdf': 'urdf', '.xacro': 'xacro'}
+
+
+def format_of(path: str | PathLike[str]) -> str:
+    """Return ``urdf``, ``xacro`` or ``sdf`` for a file name; raise ValueError otherwise."""
+    suffix = Path(path).suffix.lower()
+    try:
+        return WRITERS[suffix]
+    except KeyError:
+        known = ', '.join(WRITERS)
+        raise ValueError(f'{path}: unknown suffix {suffix!r} (use one of {known}, '
+                         'or .urdf.xacro)') from None
+
+
+def save(robot: Robot, path: str | PathLike[str]) -> None:
+    """Write ``robot`` to ``path`` in the format its suffix names."""
+    kind = format_of(path)
+    if kind == 'urdf':
+        robot.to_urdf(path)
+    else:
+        robot.to_xacro(path)

@@ -1,0 +1,162 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Shapes of visuals and collisions, and the ``Origin`` pose that places them."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, KW_ONLY
+import math
+
+from urdfgenpy_ros import checks
+from urdfgenpy_ros.checks import Vec3
+from urdfgenpy_ros.errors import SourceLocation
+from urdfgenpy_ros.preserved import Preserved
+
+_ZERO: Vec3 = (0.0, 0.0, 0.0)
+
+
+@dataclass(slots=True, frozen=True)
+class Origin:
+    """Pose of a frame: translation ``xyz`` in metres, fixed-axis ``rpy`` in radians."""
+
+    xyz: Vec3 = _ZERO
+    rpy: Vec3 = _ZERO
+    _: KW_ONLY
+    source: SourceLocation | None = field(default=None, compare=False, repr=False)
+    extras: Preserved | None = field(default=None, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        """Coerce both vectors to float triples."""
+        if self.xyz is not _ZERO:
+            object.__setattr__(self, 'xyz', checks.vec3('origin', 'xyz', self.xyz))
+        if self.rpy is not _ZERO:
+            object.__setattr__(self, 'rpy', checks.vec3('origin', 'rpy', self.rpy))
+
+    @property
+    def is_identity(self) -> bool:
+        """Return whether this origin neither moves nor turns."""
+        return self.xyz == _ZERO and self.rpy == _ZERO
+
+    @classmethod
+    def above(cls, geometry: Geometry, xy: tuple[float, float] = (0.0, 0.0),
+              rpy: Vec3 = _ZERO) -> Origin:
+        """
+        Return the origin that puts the bottom of ``geometry`` at z = 0.
+
+        A box or cylinder is lifted by half its height, a sphere by its radius.
+        """
+        return cls(xyz=(xy[0], xy[1], geometry.half_height()), rpy=rpy)
+
+    @classmethod
+    def wheel(cls, xy: tuple[float, float] = (0.0, 0.0), z: float = 0.0) -> Origin:
+        """Return an origin rolled by -pi/2, turning a cylinder's axis from z onto y."""
+        return cls(xyz=(xy[0], xy[1], z), rpy=(-math.pi / 2.0, 0.0, 0.0))
+
+
+IDENTITY = Origin()
+
+
+@dataclass(slots=True, frozen=True)
+class Box:
+    """A box centred on its frame; sizes along x, y and z in metres."""
+
+    length: float
+    width: float
+    height: float
+    _: KW_ONLY
+    source: SourceLocation | None = field(default=None, compare=False, repr=False)
+    extras: Preserved | None = field(default=None, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        """Check that every size is positive."""
+        for attr in ('length', 'width', 'height'):
+            object.__setattr__(self, attr, checks.positive('box', attr, getattr(self, attr)))
+
+    @property
+    def size(self) -> Vec3:
+        """Return ``(length, width, height)`` as URDF's ``size`` attribute lists them."""
+        return (self.length, self.width, self.height)
+
+    def half_height(self) -> float:
+        """Return the distance from the centre to the bottom face."""
+        return self.height / 2.0
+
+
+@dataclass(slots=True, frozen=True)
+class Cylinder:
+    """A cylinder along z, centred on its frame."""
+
+    radius: float
+    length: float
+    _: KW_ONLY
+    source: SourceLocation | None = field(default=None, compare=False, repr=False)
+    extras: Preserved | None = field(default=None, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        """Check that radius and length are positive."""
+        object.__setattr__(self, 'radius', checks.positive('cylinder', 'radius', self.radius))
+        object.__setattr__(self, 'length', checks.positive('cylinder', 'length', self.length))
+
+    def half_height(self) -> float:
+        """Return the distance from the centre to the bottom face."""
+        return self.length / 2.0
+
+
+@dataclass(slots=True, frozen=True)
+class Sphere:
+    """A sphere centred on its frame."""
+
+    radius: float
+    _: KW_ONLY
+    source: SourceLocation | None = field(default=None, compare=False, repr=False)
+    extras: Preserved | None = field(default=None, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        """Check that the radius is positive."""
+        object.__setattr__(self, 'radius', checks.positive('sphere', 'radius', self.radius))
+
+    def half_height(self) -> float:
+        """Return the distance from the centre to the lowest point."""
+        return self.radius
+
+
+@dataclass(slots=True, frozen=True)
+class Mesh:
+    """A mesh file (``package://``, ``file://`` or a path) with an optional scale."""
+
+    filename: str
+    scale: Vec3 | None = None
+    _: KW_ONLY
+    source: SourceLocation | None = field(default=None, compare=False, repr=False)
+    extras: Preserved | None = field(default=None, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        """Check the file name and coerce the scale."""
+        if checks.enabled() and (not isinstance(self.filename, str) or not self.filename):
+            raise ValueError(f'mesh: filename must be a non-empty string, got {self.filename!r}')
+        if self.scale is not None:
+            scale = checks.vec3('mesh', 'scale', self.scale)
+            if checks.enabled() and 0.0 in scale:
+                raise ValueError(f'mesh {self.filename!r}: scale must not be 0, got {scale!r}')
+            object.__setattr__(self, 'scale', scale)
+
+    def half_height(self) -> float:
+        """Refuse: a mesh's extent is not known without loading it."""
+        raise ValueError(
+            f'Origin.above(): the height of mesh {self.filename!r} is unknown; '
+            'give the origin explicitly, e.g. Origin(xyz=(0, 0, h / 2))')
+
+
+Geometry = Box | Cylinder | Sphere | Mesh

@@ -1,0 +1,132 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Mass, centre of mass and inertia tensor of a link, with solid-body helpers."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, KW_ONLY
+
+from urdfgenpy_ros import checks
+from urdfgenpy_ros.errors import SourceLocation
+from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, IDENTITY, Mesh, Origin, Sphere
+from urdfgenpy_ros.preserved import Preserved
+
+INERTIA_ATTRS = ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz')
+
+
+def box_tensor(mass: float, length: float, width: float, height: float) -> tuple[float, ...]:
+    """Return ``(ixx, ixy, ixz, iyy, iyz, izz)`` of a solid box about its centre."""
+    return (mass * (width * width + height * height) / 12.0, 0.0, 0.0,
+            mass * (length * length + height * height) / 12.0, 0.0,
+            mass * (length * length + width * width) / 12.0)
+
+
+def cylinder_tensor(mass: float, radius: float, length: float) -> tuple[float, ...]:
+    """Return the tensor of a solid cylinder along z about its centre."""
+    side = mass * (3.0 * radius * radius + length * length) / 12.0
+    return (side, 0.0, 0.0, side, 0.0, mass * radius * radius / 2.0)
+
+
+def sphere_tensor(mass: float, radius: float) -> tuple[float, ...]:
+    """Return the tensor of a solid sphere about its centre."""
+    moment = 2.0 * mass * radius * radius / 5.0
+    return (moment, 0.0, 0.0, moment, 0.0, moment)
+
+
+@dataclass(slots=True)
+class Inertial:
+    """Mass (kg) and inertia tensor (kg m^2) about the centre of mass at ``origin``."""
+
+    mass: float
+    ixx: float = 0.0
+    ixy: float = 0.0
+    ixz: float = 0.0
+    iyy: float = 0.0
+    iyz: float = 0.0
+    izz: float = 0.0
+    _: KW_ONLY
+    origin: Origin = IDENTITY
+    source: SourceLocation | None = field(default=None, compare=False, repr=False)
+    extras: Preserved | None = field(default=None, compare=False, repr=False)
+    # The solid this was computed from, e.g. ('box', mass, l, w, h); the Xacro writer
+    # turns it back into an inertia macro call while the values still match it.
+    solid: tuple | None = field(default=None, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        """Check the mass and coerce the tensor to floats."""
+        self.mass = checks.non_negative('inertial', 'mass', self.mass, 'kg')
+        for attr in INERTIA_ATTRS:
+            setattr(self, attr, checks.finite('inertial', attr, getattr(self, attr)))
+
+    @property
+    def tensor(self) -> tuple[tuple[float, float, float], ...]:
+        """Return the symmetric 3x3 inertia matrix."""
+        return ((self.ixx, self.ixy, self.ixz),
+                (self.ixy, self.iyy, self.iyz),
+                (self.ixz, self.iyz, self.izz))
+
+    def matches_solid(self) -> bool:
+        """Return whether the values still equal the solid they were computed from."""
+        if self.solid is None or self.mass != self.solid[1]:
+            return False
+        tensor = _SOLID_TENSORS[self.solid[0]](*self.solid[1:])
+        return tensor == tuple(getattr(self, attr) for attr in INERTIA_ATTRS)
+
+    @classmethod
+    def _of_solid(cls, kind: str, mass: float, dims: tuple[float, ...],
+                  origin: Origin | None) -> Inertial:
+        mass = checks.non_negative(f'Inertial.from_{kind}', 'mass', mass, 'kg')
+        inertial = cls(mass, *_SOLID_TENSORS[kind](mass, *dims), origin=origin or IDENTITY)
+        inertial.solid = (kind, mass, *dims)
+        return inertial
+
+    @classmethod
+    def from_box(cls, mass: float, length: float, w: float, h: float, *,
+                 origin: Origin | None = None) -> Inertial:
+        """Return the inertial of a solid box of sizes ``length`` x ``w`` x ``h``."""
+        size = Box(length, w, h).size
+        return cls._of_solid('box', mass, size, origin)
+
+    @classmethod
+    def from_cylinder(cls, mass: float, radius: float, length: float, *,
+                      origin: Origin | None = None) -> Inertial:
+        """Return the inertial of a solid cylinder along z."""
+        cylinder = Cylinder(radius, length)
+        return cls._of_solid('cylinder', mass, (cylinder.radius, cylinder.length), origin)
+
+    @classmethod
+    def from_sphere(cls, mass: float, radius: float, *,
+                    origin: Origin | None = None) -> Inertial:
+        """Return the inertial of a solid sphere."""
+        return cls._of_solid('sphere', mass, (Sphere(radius).radius,), origin)
+
+    @classmethod
+    def from_geometry(cls, mass: float, geometry: Geometry, *,
+                      origin: Origin | None = None) -> Inertial:
+        """Return the inertial of a solid primitive (box, cylinder or sphere)."""
+        if isinstance(geometry, Box):
+            return cls._of_solid('box', mass, geometry.size, origin)
+        if isinstance(geometry, Cylinder):
+            return cls._of_solid('cylinder', mass, (geometry.radius, geometry.length), origin)
+        if isinstance(geometry, Sphere):
+            return cls._of_solid('sphere', mass, (geometry.radius,), origin)
+        if isinstance(geometry, Mesh):
+            raise ValueError(f'Inertial.from_geometry(): {geometry.filename!r} is a mesh; '
+                             'use Inertial.from_mesh(filename, mass=...)')
+        raise TypeError(f'Inertial.from_geometry(): expected Box, Cylinder, Sphere or Mesh, '
+                        f'got {type(geometry).__name__}')
+
+
+_SOLID_TENSORS = {'box': box_tensor, 'cylinder': cylinder_tensor, 'sphere': sphere_tensor}

@@ -1,0 +1,117 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Links and the visuals and collisions they carry."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, KW_ONLY
+from typing import TYPE_CHECKING
+
+from urdfgenpy_ros import checks
+from urdfgenpy_ros.errors import SourceLocation
+from urdfgenpy_ros.geometry import Geometry, IDENTITY, Origin
+from urdfgenpy_ros.inertial import Inertial
+from urdfgenpy_ros.material import Material
+from urdfgenpy_ros.preserved import Preserved
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.extensions import Extension
+
+
+@dataclass(slots=True)
+class Visual:
+    """What a link looks like: a geometry at an origin, optionally named and coloured."""
+
+    geometry: Geometry
+    _: KW_ONLY
+    origin: Origin = IDENTITY
+    material: Material | None = None
+    name: str | None = None
+    source: SourceLocation | None = field(default=None, compare=False, repr=False)
+    extras: Preserved | None = field(default=None, compare=False, repr=False)
+
+
+@dataclass(slots=True)
+class Collision:
+    """The shape a physics engine collides: a geometry at an origin, optionally named."""
+
+    geometry: Geometry
+    _: KW_ONLY
+    origin: Origin = IDENTITY
+    name: str | None = None
+    source: SourceLocation | None = field(default=None, compare=False, repr=False)
+    extras: Preserved | None = field(default=None, compare=False, repr=False)
+
+
+@dataclass(slots=True)
+class Link:
+    """
+    A rigid body: any number of visuals and collisions, and at most one inertial.
+
+    ``extensions`` are ``<gazebo>`` blocks that refer to this link; writers set their
+    ``reference`` to the link's current name.
+    """
+
+    name: str
+    _: KW_ONLY
+    visuals: list[Visual] = field(default_factory=list)
+    collisions: list[Collision] = field(default_factory=list)
+    inertial: Inertial | None = None
+    extensions: list[Extension] = field(default_factory=list)
+    source: SourceLocation | None = field(default=None, compare=False, repr=False)
+    extras: Preserved | None = field(default=None, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        """Check the name."""
+        checks.name('link', self.name)
+
+    def add_visual(self, visual: Visual) -> Link:
+        """Append a visual and return the link, for chaining."""
+        if not isinstance(visual, Visual):
+            raise TypeError(f'link {self.name!r}: add_visual() takes a Visual, '
+                            f'got {type(visual).__name__}')
+        self.visuals.append(visual)
+        return self
+
+    def add_collision(self, collision: Collision) -> Link:
+        """Append a collision and return the link, for chaining."""
+        if not isinstance(collision, Collision):
+            raise TypeError(f'link {self.name!r}: add_collision() takes a Collision, '
+                            f'got {type(collision).__name__}')
+        self.collisions.append(collision)
+        return self
+
+    def set_inertial(self, inertial: Inertial | None) -> Link:
+        """Set (or clear, with None) the inertial and return the link."""
+        if inertial is not None and not isinstance(inertial, Inertial):
+            raise TypeError(f'link {self.name!r}: set_inertial() takes an Inertial, '
+                            f'got {type(inertial).__name__}')
+        self.inertial = inertial
+        return self
+
+    def add_extension(self, extension: Extension) -> Link:
+        """Attach a ``<gazebo>`` block that refers to this link; return the link."""
+        self.extensions.append(extension)
+        return self
+
+    @property
+    def visual(self) -> Visual | None:
+        """Return the first visual, or None."""
+        return self.visuals[0] if self.visuals else None
+
+    @property
+    def collision(self) -> Collision | None:
+        """Return the first collision, or None."""
+        return self.collisions[0] if self.collisions else None
