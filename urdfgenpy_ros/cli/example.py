@@ -30,8 +30,9 @@ from urdfgenpy_ros.examples import EXAMPLES
 def example(name: str, output_dir: Path) -> None:
     """Print the tree of example robot NAME and write NAME.urdf and NAME.urdf.xacro."""
     robot = EXAMPLES[name]()
-    robot.print_tree()
-    for suffix in ('.urdf', '.urdf.xacro'):
-        path = output_dir / f'{name}{suffix}'
+    paths = [output_dir / f'{name}{suffix}' for suffix in ('.urdf', '.urdf.xacro')]
+    for path in paths:
         robot.save(path)
+    robot.print_tree()
+    for path in paths:
         click.echo(f'wrote {path}')

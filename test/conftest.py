@@ -1,0 +1,45 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Shared fixtures: the corpus, the example robots, a scratch directory."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from helpers import CORPUS, full_robot
+import pytest
+
+from urdfgenpy_ros.examples import pan_tilt_unit
+from urdfgenpy_ros.robot import Robot
+
+
+@pytest.fixture
+def corpus() -> Path:
+    """Return the third-party corpus directory, or skip when it is absent."""
+    if not CORPUS.is_dir():
+        pytest.skip(f'corpus not found at {CORPUS} (set URDFGENPY_CORPUS)')
+    return CORPUS
+
+
+@pytest.fixture
+def ptu() -> Robot:
+    """Return the built-in pan-tilt unit."""
+    return pan_tilt_unit()
+
+
+@pytest.fixture
+def every_element() -> Robot:
+    """Return a robot using every element and attribute of the model."""
+    return full_robot()

@@ -1,0 +1,172 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Independent tools the tests compare against: check_urdf, xacro, yourdfpy."""
+
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+import shutil
+import subprocess
+
+import pytest
+
+from urdfgenpy_ros import (
+    Box, Collision, Cylinder, Extension, Inertial, Joint, JointCalibration, JointDynamics,
+    JointLimit, JointMimic, Link, Material, Mesh, Origin, Robot, SafetyController, Sphere,
+    Visual)
+
+REPO = Path(__file__).resolve().parents[1]
+CORPUS = Path(os.environ.get('URDFGENPY_CORPUS', REPO.parent / 'shared' / 'corpus'))
+
+
+def require_tool(name: str) -> str:
+    """Return the path of a command; skip locally, fail in CI when it is missing."""
+    path = shutil.which(name)
+    if path is None:
+        message = f'{name} not installed (apt install liburdfdom-tools)'
+        if os.environ.get('URDFGENPY_REQUIRE_TOOLS'):
+            pytest.fail(message)
+        pytest.skip(message)
+    return path
+
+
+def check_urdf(path: Path) -> subprocess.CompletedProcess:
+    """Run Debian's check_urdf on a file (with a timeout: it hangs on loops)."""
+    return subprocess.run([require_tool('check_urdf'), str(path)], capture_output=True,
+                          text=True, timeout=30)
+
+
+def assert_check_urdf_accepts(path: Path) -> None:
+    """Fail unless check_urdf parses the file successfully."""
+    result = check_urdf(path)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert 'Successfully Parsed XML' in result.stdout
+
+
+def xacro_expand(path: Path, mappings: dict[str, str] | None = None) -> str:
+    """Expand a Xacro file with the real xacro package and return the URDF text."""
+    xacro = pytest.importorskip('xacro')
+    document = xacro.process_file(str(path), mappings=mappings or {})
+    return document.toprettyxml(indent='  ')
+
+
+def load_yourdfpy(path: Path):
+    """Load a URDF with yourdfpy, without meshes or scene graph."""
+    yourdfpy = pytest.importorskip('yourdfpy')
+    return yourdfpy.URDF.load(str(path), load_meshes=False, build_scene_graph=False,
+                              build_collision_scene_graph=False).robot
+
+
+def pose_matrix(origin: Origin):
+    """Return the 4x4 pose yourdfpy builds from xyz/rpy (trimesh's compose_matrix)."""
+    from trimesh import transformations
+    import numpy
+    return transformations.compose_matrix(translate=numpy.array(origin.xyz),
+                                          angles=numpy.array(origin.rpy))
+
+
+def full_robot() -> Robot:
+    """Return a robot that uses every element and attribute the model has."""
+    red = Material('red', rgba=(1.0, 0.1, 0.1, 1.0))
+    skin = Material('skin', rgba=(0.9, 0.8, 0.7, 0.5), texture='package://demo/skin.png')
+    robot = Robot('every_element')
+    robot.add_material(red).add_material(skin)
+    base = Link('base_link')
+    base.add_visual(Visual(Box(0.4, 0.3, 0.1), origin=Origin((0, 0, 0.05)), material=red,
+                           name='chassis'))
+    shell = Mesh('package://demo/meshes/shell.stl', scale=(0.001, 0.001, 0.001))
+    base.add_visual(Visual(shell,
+                           material=Material('inline_blue', rgba=(0, 0, 1, 1)), name='shell'))
+    base.add_collision(Collision(Box(0.4, 0.3, 0.1), origin=Origin((0, 0, 0.05)),
+                                 name='chassis_collision'))
+    base.add_collision(Collision(Sphere(0.05), origin=Origin((0.2, 0, 0))))
+    base.set_inertial(Inertial(5.0, 0.1, 0.001, -0.002, 0.2, 0.003, 0.25,
+                               origin=Origin((0.01, -0.02, 0.03), (0.1, -0.2, 0.3))))
+    base.add_extension(Extension.gazebo('<material>Gazebo/Red</material>'))
+    robot.add_link(base)
+    names = ['rev', 'cont', 'pris', 'fix', 'float', 'plan', 'follower']
+    for name in names:
+        link = Link(f'{name}_link')
+        cylinder = Cylinder(0.02, 0.1)
+        link.add_visual(Visual(cylinder, origin=Origin.above(cylinder), material=skin))
+        link.add_collision(Collision(cylinder, origin=Origin.above(cylinder)))
+        link.set_inertial(Inertial.from_geometry(0.3, cylinder, origin=Origin.above(cylinder)))
+        robot.add_link(link)
+    robot.add_joint(Joint(
+        'rev', 'revolute', 'base_link', 'rev_link', origin=Origin((0.1, 0, 0.1), (0, 0, 1.5)),
+        axis=(0, 0, 1), limit=JointLimit(-1.5, 1.5, effort=20, velocity=2.0),
+        dynamics=JointDynamics(damping=0.7, friction=0.1),
+        safety_controller=SafetyController(-1.4, 1.4, k_position=15, k_velocity=10),
+        calibration=JointCalibration(rising=0.25, falling=-0.25)))
+    robot.add_joint(Joint('cont', 'continuous', 'rev_link', 'cont_link',
+                          origin=Origin((0, 0, 0.1)), axis=(0, 1, 0),
+                          limit=JointLimit(effort=5, velocity=10)))
+    robot.add_joint(Joint('pris', 'prismatic', 'base_link', 'pris_link',
+                          origin=Origin((-0.1, 0, 0.1)), axis=(0.6, 0.8, 0),
+                          limit=JointLimit(0.0, 0.3, effort=100, velocity=0.5)))
+    robot.add_joint(Joint('fix', 'fixed', 'base_link', 'fix_link',
+                          origin=Origin((0, 0.1, 0.1), (math.pi, 0, 0))))
+    robot.add_joint(Joint('float', 'floating', 'base_link', 'float_link',
+                          origin=Origin((0, -0.1, 0.1))))
+    robot.add_joint(Joint('plan', 'planar', 'base_link', 'plan_link',
+                          origin=Origin((0.2, 0.2, 0.1)), axis=(0, 0, 1)))
+    robot.add_joint(Joint('follower', 'revolute', 'base_link', 'follower_link',
+                          origin=Origin((-0.2, -0.2, 0.1)), axis=(0, 0, 1),
+                          limit=JointLimit(-3.0, 3.0, effort=20, velocity=2.0),
+                          mimic=JointMimic('rev', multiplier=-2.0, offset=0.5)))
+    robot.get_joint('rev').add_extension(
+        Extension.gazebo('<implicitSpringDamper>true</implicitSpringDamper>'))
+    robot.add_extension(Extension.transmission(
+        'rev_transmission', '<type>transmission_interface/SimpleTransmission</type>'
+        '<joint name="rev"><hardwareInterface>hardware_interface/EffortJointInterface'
+        '</hardwareInterface></joint><actuator name="rev_motor">'
+        '<mechanicalReduction>50</mechanicalReduction></actuator>'))
+    robot.add_extension(Extension.ros2_control(
+        'demo_system', '<hardware><plugin>mock_components/GenericSystem</plugin></hardware>'
+        '<joint name="rev"><command_interface name="position"/>'
+        '<state_interface name="position"/></joint>'))
+    robot.add_extension(Extension.gazebo(
+        '<plugin filename="gz-sim-joint-state-publisher-system" '
+        'name="gz::sim::systems::JointStatePublisher"/>'))
+    return robot
+
+
+def snapshot(value):
+    """Return yourdfpy's model as plain Python values, for exact comparison."""
+    import dataclasses
+    import numpy
+    if dataclasses.is_dataclass(value):
+        return {f.name: snapshot(getattr(value, f.name)) for f in dataclasses.fields(value)}
+    if isinstance(value, numpy.ndarray):
+        return value.tolist()
+    if isinstance(value, (list, tuple)):
+        return [snapshot(item) for item in value]
+    return value
+
+
+def canonical_blocks(urdf_text: str, tags=('gazebo', 'transmission', 'ros2_control')):
+    """Return the top-level extension blocks of a URDF, canonicalised."""
+    from lxml import etree
+    root = etree.fromstring(urdf_text.encode())
+    blocks = []
+    for element in root:
+        if element.tag in tags:
+            for node in element.iter():
+                node.text = node.text.strip() or None if node.text else None
+                node.tail = None
+            blocks.append(etree.tostring(element, method='c14n'))
+    return blocks

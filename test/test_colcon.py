@@ -1,0 +1,79 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""colcon builds the package, and the ament index finds its executables as ros2 run does."""
+
+from __future__ import annotations
+
+from pathlib import Path
+import shutil
+import subprocess
+import sys
+
+from helpers import assert_check_urdf_accepts, REPO
+import pytest
+
+_SKIP = shutil.ignore_patterns('.git', '.venv', 'build', 'install', 'log', '__pycache__',
+                               '.pytest_cache', '.hypothesis', '*.egg-info')
+
+
+def _colcon() -> str:
+    pytest.importorskip('colcon_core')
+    pytest.importorskip('ament_index_python')
+    return str(Path(sys.executable).with_name('colcon'))
+
+
+@pytest.fixture(scope='module')
+def workspace(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """Return a workspace in which colcon has built this repository."""
+    colcon = _colcon()
+    root = tmp_path_factory.mktemp('ws')
+    shutil.copytree(REPO, root / 'src' / 'urdfgenpy_ros', ignore=_SKIP)
+    result = subprocess.run([colcon, 'build', '--event-handlers', 'console_cohesion-'],
+                            cwd=root, capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stdout + result.stderr
+    return root
+
+
+def _sourced(workspace: Path, command: str) -> subprocess.CompletedProcess:
+    script = f'source install/setup.bash && {command}'
+    return subprocess.run(['bash', '-c', script], cwd=workspace, capture_output=True,
+                          text=True, timeout=120)
+
+
+def test_install_tree_has_the_ros_layout(workspace: Path) -> None:
+    share = workspace / 'install' / 'urdfgenpy_ros' / 'share'
+    assert (share / 'ament_index' / 'resource_index' / 'packages' / 'urdfgenpy_ros').is_file()
+    assert (share / 'urdfgenpy_ros' / 'package.xml').is_file()
+    assert (workspace / 'install' / 'urdfgenpy_ros' / 'lib' / 'urdfgenpy_ros' /
+            'urdfgenpy').is_file()
+
+
+def test_ament_index_finds_urdfgenpy_and_it_runs(workspace: Path) -> None:
+    # What `ros2 run urdfgenpy_ros urdfgenpy` does: the package prefix from the ament
+    # index, then lib/<package>/<executable>.
+    locate = ('python3 -c "from ament_index_python.packages import get_package_prefix; '
+              "import os; print(os.path.join(get_package_prefix('urdfgenpy_ros'), 'lib', "
+              "'urdfgenpy_ros', 'urdfgenpy'))\"")
+    found = _sourced(workspace, locate.replace('python3', sys.executable))
+    assert found.returncode == 0, found.stderr
+    executable = Path(found.stdout.strip())
+    assert executable == workspace / 'install' / 'urdfgenpy_ros' / 'lib' / 'urdfgenpy_ros' / \
+        'urdfgenpy'
+    ran = _sourced(workspace, f'{executable} example -o out && {sys.executable} -c '
+                   '"import urdfgenpy_ros; print(urdfgenpy_ros.__file__)"')
+    assert ran.returncode == 0, ran.stderr
+    assert 'pan_joint [revolute] → pan_link' in ran.stdout
+    assert str(workspace / 'install') in ran.stdout.splitlines()[-1]
+    assert_check_urdf_accepts(workspace / 'out' / 'ptu.urdf')
