@@ -57,7 +57,7 @@ def to_float(owner: str, field: str, value: object) -> float:
 def finite(owner: str, field: str, value: object) -> float:
     """Return ``value`` as a finite float; raise ValueError when checks are on."""
     number = to_float(owner, field, value)
-    if not math.isfinite(number) and _ENABLED.get():
+    if number - number != 0.0 and _ENABLED.get():  # only inf and nan fail this
         raise ValueError(f'{owner}: {field} must be finite, got {number!r}')
     return number
 
@@ -65,7 +65,7 @@ def finite(owner: str, field: str, value: object) -> float:
 def positive(owner: str, field: str, value: object, unit: str = 'm') -> float:
     """Return ``value`` as a float > 0 (a size); raise ValueError when checks are on."""
     number = to_float(owner, field, value)
-    if _ENABLED.get() and not (math.isfinite(number) and number > 0.0):
+    if not 0.0 < number < _INF and _ENABLED.get():
         raise ValueError(
             f'{owner}: {field} must be a positive finite number of {unit}, got {number!r}')
     return number
@@ -74,24 +74,72 @@ def positive(owner: str, field: str, value: object, unit: str = 'm') -> float:
 def non_negative(owner: str, field: str, value: object, unit: str) -> float:
     """Return ``value`` as a float >= 0 (a mass, an effort); raise ValueError if checked."""
     number = to_float(owner, field, value)
-    if _ENABLED.get() and not (math.isfinite(number) and number >= 0.0):
+    if not 0.0 <= number < _INF and _ENABLED.get():
         raise ValueError(
             f'{owner}: {field} must be a finite number >= 0 {unit}, got {number!r}')
     return number
+
+
+def numbers(owner: str, names: tuple[str, ...], values: tuple,
+            minimum: float | None = None, strict: bool = False) -> tuple[float, ...]:
+    """
+    Return ``values`` as finite floats, each > or >= ``minimum`` when one is given.
+
+    One pass over the values in the common case; the field-by-field check that names the
+    culprit in the ValueError runs only when something is wrong and checks are on.
+    """
+    try:
+        result = tuple([float(value) for value in values])
+    except (TypeError, ValueError):
+        result = tuple(to_float(owner, field, value) for field, value in zip(names, values))
+    total = sum(result)
+    good = total - total == 0.0
+    if good and minimum is not None:
+        least = min(result)
+        good = least > minimum if strict else least >= minimum
+    if not good and _ENABLED.get():
+        for field, number in zip(names, result):
+            if minimum is None:
+                finite(owner, field, number)
+            elif strict and minimum == 0.0:
+                positive(owner, field, number)
+            else:
+                non_negative(owner, field, number, '')
+    return result
+
+
+def are_finite_floats(*values: object) -> bool:
+    """Return True when every value already is a finite float (the fast path)."""
+    for value in values:
+        if type(value) is not float or value - value != 0.0:  # type: ignore[operator]
+            return False
+    return True
 
 
 def vec3(owner: str, field: str, value: Sequence[object]) -> Vec3:
     """Return a 3-vector of finite floats; raise ValueError when malformed."""
     try:
         x, y, z = value  # type: ignore[misc]
+        if type(value) is tuple and type(x) is float and type(y) is float and type(z) is float:
+            result = value
+        else:
+            result = (float(x), float(y), float(z))  # type: ignore[arg-type]
     except (TypeError, ValueError):
+        if isinstance(value, Sequence) and len(value) == 3:
+            return numbers(owner, (field,) * 3, tuple(value))  # type: ignore[return-value]
         raise ValueError(
             f'{owner}: {field} must have 3 numbers (x, y, z), got {value!r}') from None
-    return (finite(owner, field, x), finite(owner, field, y), finite(owner, field, z))
+    total = result[0] + result[1] + result[2]
+    if total - total != 0.0:
+        return numbers(owner, (field,) * 3, result)  # type: ignore[return-value]
+    return result
 
 
 def name(owner: str, value: object) -> str:
     """Return a non-empty string name or raise ValueError."""
-    if _ENABLED.get() and (not isinstance(value, str) or not value.strip()):
+    if (type(value) is not str or not value or value.isspace()) and _ENABLED.get():
         raise ValueError(f'{owner}: name must be a non-empty string, got {value!r}')
     return value  # type: ignore[return-value]
+
+
+_INF = math.inf

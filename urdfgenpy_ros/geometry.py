@@ -27,7 +27,20 @@ from urdfgenpy_ros.preserved import Preserved
 _ZERO: Vec3 = (0.0, 0.0, 0.0)
 
 
-@dataclass(slots=True, frozen=True)
+def _setters(cls: type, *names: str) -> tuple:
+    """Return the slot setters of a frozen class, to initialise it without __setattr__."""
+    return tuple(getattr(cls, name).__set__ for name in names)
+
+
+def _positive(owner: str, names: tuple[str, ...], *values: float) -> tuple[float, ...]:
+    """Return sizes unchanged when they are positive floats, else check them in full."""
+    for value in values:
+        if type(value) is not float or not 0.0 < value < math.inf:
+            return checks.numbers(owner, names, values, 0.0, strict=True)
+    return values
+
+
+@dataclass(slots=True, frozen=True, init=False)
 class Origin:
     """Pose of a frame: translation ``xyz`` in metres, fixed-axis ``rpy`` in radians."""
 
@@ -36,13 +49,17 @@ class Origin:
     _: KW_ONLY
     source: SourceLocation | None = field(default=None, compare=False, repr=False)
     extras: Preserved | None = field(default=None, compare=False, repr=False)
+    # The URDF attribute text, made once by the writer (the origin is immutable).
+    text: str | None = field(default=None, compare=False, repr=False, init=False)
 
-    def __post_init__(self) -> None:
-        """Coerce both vectors to float triples."""
-        if self.xyz is not _ZERO:
-            object.__setattr__(self, 'xyz', checks.vec3('origin', 'xyz', self.xyz))
-        if self.rpy is not _ZERO:
-            object.__setattr__(self, 'rpy', checks.vec3('origin', 'rpy', self.rpy))
+    def __init__(self, xyz: Vec3 = _ZERO, rpy: Vec3 = _ZERO, *,
+                 source: SourceLocation | None = None, extras: Preserved | None = None) -> None:
+        set_xyz, set_rpy, set_source, set_extras, set_text = _ORIGIN_SLOTS
+        set_xyz(self, xyz if xyz is _ZERO else checks.vec3('origin', 'xyz', xyz))
+        set_rpy(self, rpy if rpy is _ZERO else checks.vec3('origin', 'rpy', rpy))
+        set_source(self, source)
+        set_extras(self, extras)
+        set_text(self, None)
 
     @property
     def is_identity(self) -> bool:
@@ -57,7 +74,7 @@ class Origin:
 
         A box or cylinder is lifted by half its height, a sphere by its radius.
         """
-        return cls(xyz=(xy[0], xy[1], geometry.half_height()), rpy=rpy)
+        return cls((xy[0], xy[1], geometry.half_height()), rpy)
 
     @classmethod
     def wheel(cls, xy: tuple[float, float] = (0.0, 0.0), z: float = 0.0) -> Origin:
@@ -65,10 +82,13 @@ class Origin:
         return cls(xyz=(xy[0], xy[1], z), rpy=(-math.pi / 2.0, 0.0, 0.0))
 
 
+_ORIGIN_SLOTS = _setters(Origin, 'xyz', 'rpy', 'source', 'extras', 'text')
+set_origin_text = _ORIGIN_SLOTS[4]
 IDENTITY = Origin()
+_BOX_SIZES = ('length', 'width', 'height')
 
 
-@dataclass(slots=True, frozen=True)
+@dataclass(slots=True, frozen=True, init=False)
 class Box:
     """A box centred on its frame; sizes along x, y and z in metres."""
 
@@ -79,10 +99,15 @@ class Box:
     source: SourceLocation | None = field(default=None, compare=False, repr=False)
     extras: Preserved | None = field(default=None, compare=False, repr=False)
 
-    def __post_init__(self) -> None:
-        """Check that every size is positive."""
-        for attr in ('length', 'width', 'height'):
-            object.__setattr__(self, attr, checks.positive('box', attr, getattr(self, attr)))
+    def __init__(self, length: float, width: float, height: float, *,
+                 source: SourceLocation | None = None, extras: Preserved | None = None) -> None:
+        length, width, height = _positive('box', _BOX_SIZES, length, width, height)
+        set_length, set_width, set_height, set_source, set_extras = _BOX_SLOTS
+        set_length(self, length)
+        set_width(self, width)
+        set_height(self, height)
+        set_source(self, source)
+        set_extras(self, extras)
 
     @property
     def size(self) -> Vec3:
@@ -94,7 +119,10 @@ class Box:
         return self.height / 2.0
 
 
-@dataclass(slots=True, frozen=True)
+_BOX_SLOTS = _setters(Box, 'length', 'width', 'height', 'source', 'extras')
+
+
+@dataclass(slots=True, frozen=True, init=False)
 class Cylinder:
     """A cylinder along z, centred on its frame."""
 
@@ -104,17 +132,24 @@ class Cylinder:
     source: SourceLocation | None = field(default=None, compare=False, repr=False)
     extras: Preserved | None = field(default=None, compare=False, repr=False)
 
-    def __post_init__(self) -> None:
-        """Check that radius and length are positive."""
-        object.__setattr__(self, 'radius', checks.positive('cylinder', 'radius', self.radius))
-        object.__setattr__(self, 'length', checks.positive('cylinder', 'length', self.length))
+    def __init__(self, radius: float, length: float, *, source: SourceLocation | None = None,
+                 extras: Preserved | None = None) -> None:
+        radius, length = _positive('cylinder', ('radius', 'length'), radius, length)
+        set_radius, set_length, set_source, set_extras = _CYLINDER_SLOTS
+        set_radius(self, radius)
+        set_length(self, length)
+        set_source(self, source)
+        set_extras(self, extras)
 
     def half_height(self) -> float:
         """Return the distance from the centre to the bottom face."""
         return self.length / 2.0
 
 
-@dataclass(slots=True, frozen=True)
+_CYLINDER_SLOTS = _setters(Cylinder, 'radius', 'length', 'source', 'extras')
+
+
+@dataclass(slots=True, frozen=True, init=False)
 class Sphere:
     """A sphere centred on its frame."""
 
@@ -123,13 +158,20 @@ class Sphere:
     source: SourceLocation | None = field(default=None, compare=False, repr=False)
     extras: Preserved | None = field(default=None, compare=False, repr=False)
 
-    def __post_init__(self) -> None:
-        """Check that the radius is positive."""
-        object.__setattr__(self, 'radius', checks.positive('sphere', 'radius', self.radius))
+    def __init__(self, radius: float, *, source: SourceLocation | None = None,
+                 extras: Preserved | None = None) -> None:
+        (radius,) = _positive('sphere', ('radius',), radius)
+        set_radius, set_source, set_extras = _SPHERE_SLOTS
+        set_radius(self, radius)
+        set_source(self, source)
+        set_extras(self, extras)
 
     def half_height(self) -> float:
         """Return the distance from the centre to the lowest point."""
         return self.radius
+
+
+_SPHERE_SLOTS = _setters(Sphere, 'radius', 'source', 'extras')
 
 
 @dataclass(slots=True, frozen=True)

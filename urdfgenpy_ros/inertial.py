@@ -20,7 +20,8 @@ from dataclasses import dataclass, field, KW_ONLY
 
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import SourceLocation
-from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, IDENTITY, Mesh, Origin, Sphere
+from urdfgenpy_ros.geometry import (
+    _positive, Box, Cylinder, Geometry, IDENTITY, Mesh, Origin, Sphere)
 from urdfgenpy_ros.preserved import Preserved
 
 INERTIA_ATTRS = ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz')
@@ -66,9 +67,12 @@ class Inertial:
 
     def __post_init__(self) -> None:
         """Check the mass and coerce the tensor to floats."""
+        tensor = (self.ixx, self.ixy, self.ixz, self.iyy, self.iyz, self.izz)
+        if checks.are_finite_floats(self.mass, *tensor) and self.mass >= 0.0:
+            return
         self.mass = checks.non_negative('inertial', 'mass', self.mass, 'kg')
-        for attr in INERTIA_ATTRS:
-            setattr(self, attr, checks.finite('inertial', attr, getattr(self, attr)))
+        (self.ixx, self.ixy, self.ixz, self.iyy, self.iyz, self.izz) = checks.numbers(
+            'inertial', INERTIA_ATTRS, tensor)
 
     @property
     def tensor(self) -> tuple[tuple[float, float, float], ...]:
@@ -87,7 +91,8 @@ class Inertial:
     @classmethod
     def _of_solid(cls, kind: str, mass: float, dims: tuple[float, ...],
                   origin: Origin | None) -> Inertial:
-        mass = checks.non_negative(f'Inertial.from_{kind}', 'mass', mass, 'kg')
+        if not (checks.are_finite_floats(mass) and mass >= 0.0):
+            mass = checks.non_negative(f'Inertial.from_{kind}', 'mass', mass, 'kg')
         inertial = cls(mass, *_SOLID_TENSORS[kind](mass, *dims), origin=origin or IDENTITY)
         inertial.solid = (kind, mass, *dims)
         return inertial
@@ -96,21 +101,22 @@ class Inertial:
     def from_box(cls, mass: float, length: float, w: float, h: float, *,
                  origin: Origin | None = None) -> Inertial:
         """Return the inertial of a solid box of sizes ``length`` x ``w`` x ``h``."""
-        size = Box(length, w, h).size
+        size = _positive('Inertial.from_box', ('length', 'w', 'h'), length, w, h)
         return cls._of_solid('box', mass, size, origin)
 
     @classmethod
     def from_cylinder(cls, mass: float, radius: float, length: float, *,
                       origin: Origin | None = None) -> Inertial:
         """Return the inertial of a solid cylinder along z."""
-        cylinder = Cylinder(radius, length)
-        return cls._of_solid('cylinder', mass, (cylinder.radius, cylinder.length), origin)
+        dims = _positive('Inertial.from_cylinder', ('radius', 'length'), radius, length)
+        return cls._of_solid('cylinder', mass, dims, origin)
 
     @classmethod
     def from_sphere(cls, mass: float, radius: float, *,
                     origin: Origin | None = None) -> Inertial:
         """Return the inertial of a solid sphere."""
-        return cls._of_solid('sphere', mass, (Sphere(radius).radius,), origin)
+        dims = _positive('Inertial.from_sphere', ('radius',), radius)
+        return cls._of_solid('sphere', mass, dims, origin)
 
     @classmethod
     def from_geometry(cls, mass: float, geometry: Geometry, *,

@@ -56,6 +56,8 @@ class JointType(str, Enum):
 
 
 _ONE_DOF = frozenset((JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC))
+_TYPES: dict[object, JointType] = {**{t.value: t for t in JointType}, **{t: t for t in JointType}}
+_LIMIT_FIELDS = ('lower', 'upper', 'effort', 'velocity')
 _TYPE_NAMES = ', '.join(t.value for t in JointType)
 
 
@@ -78,11 +80,19 @@ class JointLimit:
 
     def __post_init__(self) -> None:
         """Coerce to floats; reject negative effort or velocity."""
-        self.lower = checks.finite('limit', 'lower', self.lower)
-        self.upper = checks.finite('limit', 'upper', self.upper)
-        self.effort = checks.non_negative('limit', 'effort', self.effort, '(N m or N)')
-        self.velocity = checks.non_negative('limit', 'velocity', self.velocity,
-                                            '(rad/s or m/s)')
+        try:
+            self.lower, self.upper = float(self.lower), float(self.upper)
+            self.effort, self.velocity = float(self.effort), float(self.velocity)
+        except (TypeError, ValueError):
+            pass
+        if (checks.are_finite_floats(self.lower, self.upper, self.effort, self.velocity)
+                and self.effort >= 0.0 and self.velocity >= 0.0):
+            return
+        self.lower, self.upper, self.effort, self.velocity = checks.numbers(
+            'limit', _LIMIT_FIELDS, (self.lower, self.upper, self.effort, self.velocity))
+        if not (self.effort >= 0.0 and self.velocity >= 0.0):
+            checks.non_negative('limit', 'effort', self.effort, '(N m or N)')
+            checks.non_negative('limit', 'velocity', self.velocity, '(rad/s or m/s)')
 
 
 @dataclass(slots=True)
@@ -183,19 +193,20 @@ class Joint:
     def __post_init__(self) -> None:
         """Check the name and type; coerce the axis."""
         checks.name('joint', self.name)
-        try:
-            self.type = JointType(self.type)
-        except ValueError:
+        kind = _TYPES.get(self.type)
+        if kind is None:
             raise ValueError(f'joint {self.name!r}: unknown type {self.type!r} '
-                             f'(use one of {_TYPE_NAMES})') from None
-        owner = f'joint {self.name!r}'
-        checks.name(f'{owner} parent', self.parent)
-        checks.name(f'{owner} child', self.child)
+                             f'(use one of {_TYPE_NAMES})')
+        self.type = kind
+        if not (type(self.parent) is str and self.parent and type(self.child) is str
+                and self.child):
+            checks.name(f'joint {self.name!r} parent', self.parent)
+            checks.name(f'joint {self.name!r} child', self.child)
         if self.axis is not None:
-            self.axis = checks.vec3(owner, 'axis', self.axis)
-            if checks.enabled() and self.axis == (0.0, 0.0, 0.0) and self.type.is_movable:
-                raise ValueError(f'{owner}: axis must not be zero for a {self.type} joint '
-                                 '(give the direction of motion, e.g. (0, 0, 1))')
+            self.axis = checks.vec3(f'joint {self.name!r}', 'axis', self.axis)
+            if self.axis == (0.0, 0.0, 0.0) and kind in _ONE_DOF and checks.enabled():
+                raise ValueError(f'joint {self.name!r}: axis must not be zero for a {kind} '
+                                 'joint (give the direction of motion, e.g. (0, 0, 1))')
 
     @property
     def is_movable(self) -> bool:

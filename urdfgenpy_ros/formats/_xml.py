@@ -44,9 +44,18 @@ def fmt(value: float) -> str:
     return text
 
 
+_VECTORS: dict[tuple, str] = {}
+
+
 def fmt_vec(values: Any) -> str:
-    """Return numbers separated by single spaces."""
-    return ' '.join([fmt(v) for v in values])
+    """Return numbers separated by single spaces (cached: vectors repeat a lot)."""
+    text = _VECTORS.get(values)
+    if text is None:
+        text = ' '.join([fmt(v) for v in values])
+        if len(_VECTORS) > 4096:
+            _VECTORS.clear()
+        _VECTORS[tuple(values)] = text
+    return text
 
 
 def esc(text: str) -> str:

@@ -12,7 +12,13 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""URDF writer: deterministic, diff-friendly text that reads back as the same model."""
+"""
+URDF writer: deterministic, diff-friendly text that reads back as the same model.
+
+Every element has a fast path (an f-string) for what was built in Python and a general
+path, :func:`~urdfgenpy_ros.formats._xml.element`, for elements a reader preserved
+something of (original number text, unknown attributes or children).
+"""
 
 from __future__ import annotations
 
@@ -20,8 +26,9 @@ from os import PathLike
 from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.formats._xml import (
-    Attr, element, fmt, fmt_vec, fragment, INDENT, write_text)
-from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Mesh, Origin, Sphere
+    Attr, element, esc, fmt, fmt_vec, fragment, INDENT, write_text)
+from urdfgenpy_ros.geometry import (
+    Box, Cylinder, Geometry, Mesh, Origin, set_origin_text, Sphere)
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import Joint
 from urdfgenpy_ros.link import Collision, Link, Visual
@@ -37,6 +44,13 @@ _ONE3 = (1.0, 1.0, 1.0)
 
 def _sub(extras: Preserved | None, tag: str) -> Preserved | None:
     return extras.nested.get(tag) if extras is not None else None
+
+
+def _wrap(pad: str, open_tag: str, close_tag: str, children: list[str]) -> str:
+    if not children:
+        return f'{pad}<{open_tag}/>'
+    inside = '\n'.join(children)
+    return f'{pad}<{open_tag}>\n{inside}\n{pad}</{close_tag}>'
 
 
 class UrdfWriter:
@@ -64,13 +78,26 @@ class UrdfWriter:
     def write_inertial(self, inertial: Inertial, pad: str, link: Link) -> str:
         """Return the ``<inertial>`` element."""
         inner = pad + INDENT
-        children = []
-        if inertial.origin.source is not None or not inertial.origin.is_identity:
-            children.append(self.write_origin(inertial.origin, inner))
+        origin = self._optional_origin(inertial.origin, inner)
+        extras = inertial.extras
+        if extras is None:
+            return (f'{pad}<inertial>\n{origin}{inner}<mass value="{fmt(inertial.mass)}"/>\n'
+                    f'{inner}<inertia ixx="{fmt(inertial.ixx)}" ixy="{fmt(inertial.ixy)}" '
+                    f'ixz="{fmt(inertial.ixz)}" iyy="{fmt(inertial.iyy)}" '
+                    f'iyz="{fmt(inertial.iyz)}" izz="{fmt(inertial.izz)}"/>\n{pad}</inertial>')
+        children = [origin[:-1]] if origin else []
         mass = [('value', inertial.mass, fmt(inertial.mass), None)]
-        children.append(element(inner, 'mass', mass, _sub(inertial.extras, 'mass'), []))
-        children.append(self.write_inertia(inertial, inner))
-        return element(pad, 'inertial', [], inertial.extras, children)
+        children.append(element(inner, 'mass', mass, _sub(extras, 'mass'), []))
+        tensor: list[Attr] = [(name, getattr(inertial, name), fmt(getattr(inertial, name)),
+                               None) for name in ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz')]
+        children.append(element(inner, 'inertia', tensor, _sub(extras, 'inertia'), []))
+        return element(pad, 'inertial', [], extras, children)
+
+    def _optional_origin(self, origin: Origin, pad: str) -> str:
+        """Return the origin line with its newline, or '' for an identity nobody wrote."""
+        if origin.source is None and origin.xyz == _ZERO3 and origin.rpy == _ZERO3:
+            return ''
+        return self.write_origin(origin, pad) + '\n'
 
     # ---- elements -------------------------------------------------------------------
 
@@ -96,16 +123,16 @@ class UrdfWriter:
     def write_material(self, material: Material, pad: str) -> str:
         """Return a ``<material>`` definition or reference."""
         inner = pad + INDENT
+        extras = material.extras
         children = []
         if material.rgba is not None:
             rgba = [('rgba', material.rgba, fmt_vec(material.rgba), None)]
-            children.append(element(inner, 'color', rgba, _sub(material.extras, 'color'), []))
+            children.append(element(inner, 'color', rgba, _sub(extras, 'color'), []))
         if material.texture is not None:
             texture = [('filename', material.texture, material.texture, None)]
-            children.append(element(inner, 'texture', texture,
-                                    _sub(material.extras, 'texture'), []))
+            children.append(element(inner, 'texture', texture, _sub(extras, 'texture'), []))
         return element(pad, 'material', [('name', material.name, material.name, None)],
-                       material.extras, children)
+                       extras, children)
 
     def write_link(self, link: Link, pad: str) -> str:
         """Return a ``<link>`` element."""
@@ -113,121 +140,146 @@ class UrdfWriter:
         children = []
         if link.inertial is not None:
             children.append(self.write_inertial(link.inertial, inner, link))
-        children.extend(self.write_visual(visual, inner) for visual in link.visuals)
-        children.extend(self.write_collision(collision, inner)
-                        for collision in link.collisions)
+        for visual in link.visuals:
+            children.append(self.write_visual(visual, inner))
+        for collision in link.collisions:
+            children.append(self.write_collision(collision, inner))
+        if link.extras is None:
+            return _wrap(pad, f'link name="{esc(link.name)}"', 'link', children)
         return element(pad, 'link', [('name', link.name, link.name, None)], link.extras,
                        children)
 
     def write_origin(self, origin: Origin, pad: str) -> str:
         """Return an ``<origin>`` element."""
-        if origin.extras is None:
-            return f'{pad}<origin xyz="{fmt_vec(origin.xyz)}" rpy="{fmt_vec(origin.rpy)}"/>'
-        return element(pad, 'origin', [('xyz', origin.xyz, fmt_vec(origin.xyz), _ZERO3),
-                                       ('rpy', origin.rpy, fmt_vec(origin.rpy), _ZERO3)],
-                       origin.extras, [])
+        if origin.extras is not None:
+            return element(pad, 'origin', [('xyz', origin.xyz, fmt_vec(origin.xyz), _ZERO3),
+                                           ('rpy', origin.rpy, fmt_vec(origin.rpy), _ZERO3)],
+                           origin.extras, [])
+        text = origin.text
+        if text is None:
+            text = f'xyz="{fmt_vec(origin.xyz)}" rpy="{fmt_vec(origin.rpy)}"'
+            set_origin_text(origin, text)
+        return f'{pad}<origin {text}/>'
 
-    def write_inertia(self, inertial: Inertial, pad: str) -> str:
-        """Return the ``<inertia>`` element."""
-        attrs = [(name, getattr(inertial, name), fmt(getattr(inertial, name)), None)
-                 for name in ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz')]
-        extras = _sub(inertial.extras, 'inertia')
-        return element(pad, 'inertia', attrs, extras, [])
-
-    def _placed(self, tag: str, shape: Visual | Collision, pad: str,
-                extra: list[str]) -> str:
+    def _placed(self, tag: str, shape: Visual | Collision, pad: str, extra: str) -> str:
         inner = pad + INDENT
-        children = []
-        if shape.origin.source is not None or not shape.origin.is_identity:
-            children.append(self.write_origin(shape.origin, inner))
-        children.append(self.write_geometry(shape.geometry, inner))
-        children.extend(extra)
-        attrs = [] if shape.name is None else [('name', shape.name, shape.name, None)]
+        origin = self._optional_origin(shape.origin, inner)
+        geometry = self.write_geometry(shape.geometry, inner)
+        if shape.extras is None:
+            name = '' if shape.name is None else f' name="{esc(shape.name)}"'
+            return f'{pad}<{tag}{name}>\n{origin}{geometry}\n{extra}{pad}</{tag}>'
+        children = [origin[:-1]] if origin else []
+        children.append(geometry)
+        if extra:
+            children.append(extra[:-1])
+        attrs: list[Attr] = [] if shape.name is None else [('name', shape.name, shape.name,
+                                                            None)]
         return element(pad, tag, attrs, shape.extras, children)
 
     def write_visual(self, visual: Visual, pad: str) -> str:
         """Return a ``<visual>`` element."""
-        extra = []
+        extra = ''
         material = visual.material
         if material is not None:
             defined = self.robot._materials.get(material.name)
             if defined is not None and (material.is_reference or defined == material):
                 material = Material(material.name, source=material.source,
                                     extras=material.extras)
-            extra.append(self.write_material(material, pad + INDENT))
+            extra = self.write_material(material, pad + INDENT) + '\n'
         return self._placed('visual', visual, pad, extra)
 
     def write_collision(self, collision: Collision, pad: str) -> str:
         """Return a ``<collision>`` element."""
-        return self._placed('collision', collision, pad, [])
+        return self._placed('collision', collision, pad, '')
 
     def write_geometry(self, geometry: Geometry, pad: str) -> str:
         """Return a ``<geometry>`` element holding one shape."""
         inner = pad + INDENT
+        if geometry.extras is None and type(geometry) is Box:
+            return (f'{pad}<geometry>\n{inner}<box size="{fmt_vec(geometry.size)}"/>\n'
+                    f'{pad}</geometry>')
+        attrs: list[Attr]
         if isinstance(geometry, Box):
-            attrs = [('size', geometry.size, fmt_vec(geometry.size), None)]
-            shape = element(inner, 'box', attrs, geometry.extras, [])
+            tag, attrs = 'box', [('size', geometry.size, fmt_vec(geometry.size), None)]
         elif isinstance(geometry, Cylinder):
-            attrs = [('radius', geometry.radius, fmt(geometry.radius), None),
-                     ('length', geometry.length, fmt(geometry.length), None)]
-            shape = element(inner, 'cylinder', attrs, geometry.extras, [])
+            tag, attrs = 'cylinder', [('radius', geometry.radius, fmt(geometry.radius), None),
+                                      ('length', geometry.length, fmt(geometry.length), None)]
         elif isinstance(geometry, Sphere):
-            attrs = [('radius', geometry.radius, fmt(geometry.radius), None)]
-            shape = element(inner, 'sphere', attrs, geometry.extras, [])
+            tag, attrs = 'sphere', [('radius', geometry.radius, fmt(geometry.radius), None)]
         elif isinstance(geometry, Mesh):
-            attrs = [('filename', geometry.filename, geometry.filename, None)]
+            tag, attrs = 'mesh', [('filename', geometry.filename, geometry.filename, None)]
             if geometry.scale is not None:
                 attrs.append(('scale', geometry.scale, fmt_vec(geometry.scale), _ONE3))
-            shape = element(inner, 'mesh', attrs, geometry.extras, [])
         else:
             raise TypeError(f'cannot write geometry of type {type(geometry).__name__}')
-        outer = _sub(geometry.extras, 'geometry')
-        return element(pad, 'geometry', [], outer, [shape])
+        shape = element(inner, tag, attrs, geometry.extras, [])
+        return element(pad, 'geometry', [], _sub(geometry.extras, 'geometry'), [shape])
 
     def write_joint(self, joint: Joint, pad: str) -> str:
         """Return a ``<joint>`` element."""
         inner = pad + INDENT
-        children = []
-        if joint.origin.source is not None or not joint.origin.is_identity:
-            children.append(self.write_origin(joint.origin, inner))
+        origin = self._optional_origin(joint.origin, inner)
+        if joint.extras is None:
+            axis = '' if joint.axis is None else f'{inner}<axis xyz="{fmt_vec(joint.axis)}"/>\n'
+            limit = joint.limit
+            if (limit is not None and limit.extras is None and joint.calibration is None
+                    and joint.dynamics is None):
+                rest = (f'{inner}<limit lower="{fmt(limit.lower)}" upper="{fmt(limit.upper)}" '
+                        f'effort="{fmt(limit.effort)}" velocity="{fmt(limit.velocity)}"/>\n')
+                if joint.mimic is not None or joint.safety_controller is not None:
+                    rest += ''.join(line + '\n' for line in self._joint_parts(joint, inner,
+                                                                              after_limit=True))
+            else:
+                rest = ''.join(line + '\n' for line in self._joint_parts(joint, inner))
+            return (f'{pad}<joint name="{esc(joint.name)}" type="{joint.type.value}">\n'
+                    f'{origin}{inner}<parent link="{esc(joint.parent)}"/>\n'
+                    f'{inner}<child link="{esc(joint.child)}"/>\n{axis}{rest}{pad}</joint>')
         extras = joint.extras
-        children.append(element(inner, 'parent', [('link', joint.parent, joint.parent, None)],
-                                _sub(extras, 'parent'), []))
-        children.append(element(inner, 'child', [('link', joint.child, joint.child, None)],
-                                _sub(extras, 'child'), []))
+        children = [origin[:-1]] if origin else []
+        for tag, link in (('parent', joint.parent), ('child', joint.child)):
+            children.append(element(inner, tag, [('link', link, link, None)],
+                                    _sub(extras, tag), []))
         if joint.axis is not None:
-            children.append(element(inner, 'axis', [('xyz', joint.axis, fmt_vec(joint.axis),
-                                                     None)], _sub(extras, 'axis'), []))
-        if joint.calibration is not None:
-            calibration = joint.calibration
+            axis_attrs: list[Attr] = [('xyz', joint.axis, fmt_vec(joint.axis), None)]
+            children.append(element(inner, 'axis', axis_attrs, _sub(extras, 'axis'), []))
+        children.extend(self._joint_parts(joint, inner))
+        return element(pad, 'joint', [('name', joint.name, joint.name, None),
+                                      ('type', joint.type, joint.type.value, None)],
+                       extras, children)
+
+    def _joint_parts(self, joint: Joint, pad: str, after_limit: bool = False) -> list[str]:
+        """Return calibration, dynamics, limit, mimic and safety_controller, as present."""
+        parts = []
+        calibration = joint.calibration
+        if calibration is not None and not after_limit:
             attrs = [(name, value, fmt(value), None)
                      for name, value in (('rising', calibration.rising),
                                          ('falling', calibration.falling))
                      if value is not None]
-            children.append(element(inner, 'calibration', attrs, calibration.extras, []))
-        if joint.dynamics is not None:
-            dynamics = joint.dynamics
-            children.append(element(inner, 'dynamics', [
+            parts.append(element(pad, 'calibration', attrs, calibration.extras, []))
+        dynamics = joint.dynamics
+        if dynamics is not None and not after_limit:
+            parts.append(element(pad, 'dynamics', [
                 ('damping', dynamics.damping, fmt(dynamics.damping), 0.0),
                 ('friction', dynamics.friction, fmt(dynamics.friction), 0.0)],
                 dynamics.extras, []))
-        if joint.limit is not None:
-            limit = joint.limit
-            children.append(element(inner, 'limit', [
+        limit = joint.limit
+        if limit is not None and not after_limit:
+            parts.append(element(pad, 'limit', [
                 ('lower', limit.lower, fmt(limit.lower), 0.0),
                 ('upper', limit.upper, fmt(limit.upper), 0.0),
                 ('effort', limit.effort, fmt(limit.effort), None),
                 ('velocity', limit.velocity, fmt(limit.velocity), None)],
                 limit.extras, []))
-        if joint.mimic is not None:
-            mimic = joint.mimic
-            children.append(element(inner, 'mimic', [
+        mimic = joint.mimic
+        if mimic is not None:
+            parts.append(element(pad, 'mimic', [
                 ('joint', mimic.joint, mimic.joint, None),
                 ('multiplier', mimic.multiplier, fmt(mimic.multiplier), 1.0),
                 ('offset', mimic.offset, fmt(mimic.offset), 0.0)], mimic.extras, []))
-        if joint.safety_controller is not None:
-            safety = joint.safety_controller
-            children.append(element(inner, 'safety_controller', [
+        safety = joint.safety_controller
+        if safety is not None:
+            parts.append(element(pad, 'safety_controller', [
                 ('soft_lower_limit', safety.soft_lower_limit,
                  fmt(safety.soft_lower_limit), 0.0),
                 ('soft_upper_limit', safety.soft_upper_limit,
@@ -235,9 +287,7 @@ class UrdfWriter:
                 ('k_position', safety.k_position, fmt(safety.k_position), 0.0),
                 ('k_velocity', safety.k_velocity, fmt(safety.k_velocity), None)],
                 safety.extras, []))
-        return element(pad, 'joint', [('name', joint.name, joint.name, None),
-                                      ('type', joint.type, joint.type.value, None)],
-                       joint.extras, children)
+        return parts
 
 
 def write_urdf(robot: Robot, path: str | PathLike[str] | None = None) -> str:

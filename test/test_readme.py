@@ -1,0 +1,39 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Every Python example in README.md runs as written."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+import re
+
+import pytest
+
+from helpers import assert_check_urdf_accepts, REPO
+
+BLOCKS = re.findall(r'```python\n(.*?)```', (REPO / 'README.md').read_text(), re.S)
+
+
+@pytest.mark.parametrize('code', BLOCKS)
+def test_readme_example_runs(code: str, tmp_path: Path) -> None:
+    cwd = os.getcwd()
+    os.chdir(tmp_path)
+    try:
+        exec(compile(code, 'README.md', 'exec'), {})
+    finally:
+        os.chdir(cwd)
+    for urdf in tmp_path.glob('*.urdf'):
+        assert_check_urdf_accepts(urdf)
