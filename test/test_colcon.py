@@ -21,7 +21,7 @@ import shutil
 import subprocess
 import sys
 
-from helpers import assert_check_urdf_accepts, REPO
+from helpers import assert_check_urdf_accepts, REPO, require_module
 import pytest
 
 _SKIP = shutil.ignore_patterns('.git', '.venv', 'build', 'install', 'log', '__pycache__',
@@ -29,8 +29,8 @@ _SKIP = shutil.ignore_patterns('.git', '.venv', 'build', 'install', 'log', '__py
 
 
 def _colcon() -> str:
-    pytest.importorskip('colcon_core')
-    pytest.importorskip('ament_index_python')
+    require_module('colcon_core')
+    require_module('ament_index_python')
     return str(Path(sys.executable).with_name('colcon'))
 
 

@@ -16,11 +16,12 @@
 
 from __future__ import annotations
 
+from helpers import require_module
 import pytest
 
 from urdfgenpy_ros import Box, Cylinder, Inertial, Mesh, Sphere
 
-trimesh = pytest.importorskip('trimesh')
+trimesh = require_module('trimesh')
 
 
 def _integrated(mesh, mass: float) -> list[list[float]]:

@@ -18,15 +18,15 @@ from __future__ import annotations
 
 import re
 
-from helpers import REPO
+from helpers import REPO, require_module
 import pytest
 
 
 @pytest.mark.linter
 @pytest.mark.flake8
 def test_flake8() -> None:
-    main = pytest.importorskip('ament_flake8.main').main_with_errors
-    pytest.importorskip('flake8_quotes')
+    main = require_module('ament_flake8.main').main_with_errors
+    require_module('flake8_quotes')
     rc, errors = main(argv=[str(REPO / 'urdfgenpy_ros'), str(REPO / 'test'),
                             str(REPO / 'bench'), str(REPO / 'setup.py')])
     assert rc == 0, f'Found {len(errors)} code style errors / warnings:\n' + '\n'.join(errors)
@@ -35,8 +35,8 @@ def test_flake8() -> None:
 @pytest.mark.linter
 @pytest.mark.pep257
 def test_pep257() -> None:
-    main = pytest.importorskip('ament_pep257.main').main
-    pytest.importorskip('pydocstyle')
+    main = require_module('ament_pep257.main').main
+    require_module('pydocstyle')
     rc = main(argv=[str(REPO / 'urdfgenpy_ros'), str(REPO / 'test'), str(REPO / 'bench')])
     assert rc == 0, 'Found code style errors / warnings'
 

@@ -20,9 +20,8 @@ import os
 from pathlib import Path
 import re
 
-import pytest
-
 from helpers import assert_check_urdf_accepts, REPO
+import pytest
 
 BLOCKS = re.findall(r'```python\n(.*?)```', (REPO / 'README.md').read_text(), re.S)
 
