@@ -16,15 +16,14 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from typing import NamedTuple
 
 
 class UrdfgenpyError(Exception):
     """Base class of every error this package raises on purpose."""
 
 
-@dataclass(frozen=True, slots=True)
-class SourceLocation:
+class SourceLocation(NamedTuple):
     """Where an element was read from: file, line, column and element path."""
 
     file: str | None = None
@@ -51,6 +50,18 @@ class ParseError(UrdfgenpyError):
         self.message = message
         prefix = f'{location}: ' if location is not None else ''
         super().__init__(f'{prefix}error {code} {message}')
+
+
+class ReadWarning(NamedTuple):
+    """Something a reader accepted but a strict parser would not (one line)."""
+
+    location: SourceLocation
+    code: str
+    message: str
+
+    def __str__(self) -> str:
+        """Return ``file:line:col: warning CODE message``."""
+        return f'{self.location}: warning {self.code} {self.message}'
 
 
 class MissingDependencyError(UrdfgenpyError):

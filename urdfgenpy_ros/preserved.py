@@ -16,31 +16,75 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from typing import Any
 
+from lxml import etree
 
-@dataclass(slots=True)
+
 class Preserved:
     """
-    Unconsumed parts of one element, in document order.
+    The source element of a model element, and what of it the model does not hold.
 
-    ``attributes`` holds unknown attributes; ``children`` holds unknown child elements
-    and comments as ``(anchor, element)``, where ``anchor`` is the number of known
-    children written before it; ``texts`` holds the original text of known attributes,
-    so that a value nobody changed is written back exactly as it was read; ``nested``
-    holds the same for plain children such as ``<mass>`` or ``<parent>``.
+    Everything is derived from ``node`` (an lxml element) when a writer asks: ``texts``
+    are the original attribute texts (a value nobody changed is written back as it was
+    read), ``attributes`` the attributes the model does not know, ``children`` the
+    unknown child elements and comments with their anchor (how many known children came
+    before). ``nested`` holds the same for plain children that have no model object of
+    their own (``<mass>``, ``<parent>``, ``<geometry>``); ``order`` the document order of
+    the robot's top-level items; ``outside`` the comments before and after the root.
     """
 
-    attributes: dict[str, str] = field(default_factory=dict)
-    children: list[tuple[int, Any]] = field(default_factory=list)
-    texts: dict[str, str] = field(default_factory=dict)
-    nested: dict[str, Preserved] = field(default_factory=dict)
+    __slots__ = ('node', 'known_attributes', 'known_children', 'nested', 'order', 'outside')
+
+    def __init__(self, node: Any, known_attributes: frozenset[str] = frozenset(),
+                 known_children: frozenset[str] = frozenset(),
+                 nested: dict[str, Preserved] | None = None) -> None:
+        self.node = node
+        self.known_attributes = known_attributes
+        self.known_children = known_children
+        self.nested = nested or {}
+        self.order: list[Any] | None = None
+        self.outside: tuple[list[Any], list[Any]] = ([], [])
+
+    @property
+    def texts(self) -> Any:
+        """Return the original attributes (a mapping of name to text)."""
+        return self.node.attrib
+
+    @property
+    def attributes(self) -> dict[str, str]:
+        """Return the attributes the model does not know, with prefixed names."""
+        unknown = {}
+        for name, value in self.node.attrib.items():
+            if name not in self.known_attributes:
+                unknown[_prefixed(self.node, name)] = value
+        return unknown
+
+    @property
+    def children(self) -> list[tuple[int, Any]]:
+        """Return ``(anchor, node)`` for every unknown child element or comment."""
+        kept, known = [], 0
+        for child in self.node:
+            if isinstance(child.tag, str) and child.tag in self.known_children:
+                known += 1
+            else:
+                kept.append((known, child))
+        return kept
 
     def sub(self, tag: str) -> Preserved | None:
-        """Return what was kept of the child ``tag`` that has no model object of its own."""
+        """Return what was kept of the plain child ``tag``."""
         return self.nested.get(tag)
 
-    def __bool__(self) -> bool:
-        """Return whether anything is preserved."""
-        return bool(self.attributes or self.children or self.texts or self.nested)
+    def __repr__(self) -> str:
+        """Return the source tag and line."""
+        return f'Preserved(<{self.node.tag}> line {self.node.sourceline})'
+
+
+def _prefixed(node: Any, name: str) -> str:
+    if name[0] != '{':
+        return name
+    qname = etree.QName(name)
+    for prefix, uri in node.nsmap.items():
+        if uri == qname.namespace and prefix:
+            return f'{prefix}:{qname.localname}'
+    return qname.localname

@@ -22,7 +22,7 @@ from os import PathLike
 from typing import Any
 
 from urdfgenpy_ros import checks
-from urdfgenpy_ros.errors import SourceLocation
+from urdfgenpy_ros.errors import ReadWarning, SourceLocation
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.joint import Joint, JointMimic
 from urdfgenpy_ros.link import Link
@@ -51,6 +51,7 @@ class Robot:
         self.extensions: list[Extension] = []
         self.source: SourceLocation | None = None
         self.extras: Preserved | None = None
+        self.read_warnings: list[ReadWarning] = []
 
     def __repr__(self) -> str:
         """Return a one-line summary."""
@@ -348,6 +349,25 @@ class Robot:
                     element.set('reference', new)
                 if element.tag == 'joint' and element.get('name') == old:
                     element.set('name', new)
+
+    # ---- input ---------------------------------------------------------------------
+
+    @classmethod
+    def from_urdf(cls, path: str | PathLike[str]) -> Robot:
+        """
+        Read a URDF file, keeping whatever the model does not hold for writing back.
+
+        :raises ParseError: when the file is not a readable URDF (one line, located).
+        """
+        from urdfgenpy_ros.formats.urdf_read import read_urdf
+        return read_urdf(path)
+
+    @classmethod
+    def from_urdf_string(cls, xml: str | bytes, file: str | None = None) -> Robot:
+        """Read URDF text; ``file`` names it in messages."""
+        from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
+        data = xml.encode('utf-8') if isinstance(xml, str) else xml
+        return read_urdf_bytes(data, file)
 
     # ---- output --------------------------------------------------------------------
 

@@ -19,6 +19,7 @@ from __future__ import annotations
 import copy
 from os import PathLike
 from pathlib import Path
+import re
 from typing import Any
 
 from lxml import etree
@@ -78,13 +79,28 @@ def _reads_as(text: str, value: Any) -> bool:
     return text == value
 
 
-def fragment(element: Any, pad: str) -> str:
-    """Serialise an lxml element (or comment) indented by ``pad``."""
+_DECLARATION = re.compile(r' xmlns(?::([\w.-]+))?="([^"]*)"')
+
+
+def fragment(element: Any, pad: str, declared: dict[str, str] | None = None) -> str:
+    """
+    Serialise an lxml element (or comment) indented by ``pad``.
+
+    Namespace declarations that the enclosing root already makes (``declared``, prefix to
+    URI) are left out of the fragment's opening tag.
+    """
     element = copy.deepcopy(element)
     element.tail = None
     if len(element):
         etree.indent(element, space=INDENT, level=len(pad) // len(INDENT))
-    return pad + etree.tostring(element, encoding='unicode', with_tail=False)
+    text = etree.tostring(element, encoding='unicode', with_tail=False)
+    if declared and ' xmlns' in text:
+        end = text.find('>')
+        head = _DECLARATION.sub(
+            lambda m: '' if declared.get(m.group(1) or '') == m.group(2) else m.group(0),
+            text[:end])
+        text = head + text[end:]
+    return pad + text
 
 
 Attr = tuple[str, Any, str, Any]
@@ -92,29 +108,43 @@ Attr = tuple[str, Any, str, Any]
 
 
 def element(pad: str, tag: str, attrs: list[Attr], extras: Preserved | None,
-            children: list[str]) -> str:
+            children: list[str], tags: list[str] | None = None,
+            restore_children: bool = True) -> str:
     """
     Return one element with its children, restoring what a reader preserved.
 
-    For an element read from a file (``extras`` set), an attribute the file did not
-    have stays out while it still holds its default; original number text is kept while
-    it still reads as the value; unknown attributes and children go back where they were.
+    For an element read from a file (``extras`` set): attributes and known children
+    (``tags`` names each child's tag) come in the file's order; an attribute the file did
+    not have stays out while it still holds its default; original number text is kept
+    while it still reads as the value; unknown attributes and children go back where
+    they were.
     """
     parts = [pad, '<', tag]
-    texts = extras.texts if extras is not None else None
-    for name, value, text, default in attrs:
-        if texts is not None:
+    if extras is None:
+        for name, _, text, _ in attrs:
+            parts.append(f' {name}="{esc(text)}"')
+    else:
+        texts = extras.texts
+        rank = {name: number for number, name in enumerate(texts)}
+        placed = []
+        for name, value, text, default in attrs:
             original = texts.get(name)
             if original is not None:
                 if _reads_as(original, value):
                     text = original
             elif default is not None and value == default:
                 continue
-        parts.append(f' {name}="{esc(text)}"')
-    if extras is not None:
-        for name, text in extras.attributes.items():
-            parts.append(f' {name}="{esc(text)}"')
-        if extras.children:
+            placed.append((rank.get(name, len(rank)), f' {name}="{esc(text)}"'))
+        unknown = extras.attributes
+        if unknown:
+            ranks = [number for number, name in enumerate(texts)
+                     if name not in extras.known_attributes]
+            placed.extend((number, f' {name}="{esc(text)}"')
+                          for number, (name, text) in zip(ranks, unknown.items()))
+        parts.extend(text for _, text in sorted(placed, key=lambda item: item[0]))
+        if tags is not None:
+            children = _in_source_order(extras.node, children, tags)
+        if restore_children and len(extras.node):
             children = list(children)
             inner = pad + INDENT
             for offset, (anchor, node) in enumerate(extras.children):
@@ -126,6 +156,19 @@ def element(pad: str, tag: str, attrs: list[Attr], extras: Preserved | None,
     parts.append('\n'.join(children))
     parts.append(f'\n{pad}</{tag}>')
     return ''.join(parts)
+
+
+def _in_source_order(node: Any, children: list[str], tags: list[str]) -> list[str]:
+    """Order ``children`` as their tags appear in ``node``; new ones go last."""
+    waiting = list(zip(tags, children))
+    ordered = []
+    for child in node:
+        for index, (tag, text) in enumerate(waiting):
+            if tag == child.tag:
+                ordered.append(text)
+                del waiting[index]
+                break
+    return ordered + [text for _, text in waiting]
 
 
 def write_text(path: str | PathLike[str], text: str) -> None:

@@ -25,6 +25,7 @@ from __future__ import annotations
 from os import PathLike
 from typing import TYPE_CHECKING
 
+from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._xml import (
     Attr, element, esc, fmt, fmt_vec, fragment, INDENT, write_text)
 from urdfgenpy_ros.geometry import (
@@ -60,10 +61,17 @@ class UrdfWriter:
 
     def __init__(self, robot: Robot) -> None:
         self.robot = robot
+        extras = robot.extras
+        self.declared = {prefix or '': uri for prefix, uri in extras.node.nsmap.items()
+                         } if extras is not None else {}
 
     def document(self) -> str:
-        """Return the whole file."""
-        return f'{self.declaration}\n{self.write_robot()}\n'
+        """Return the whole file, with the comments a read file had around its root."""
+        extras = self.robot.extras
+        if extras is None or not any(extras.outside):
+            return f'{self.declaration}\n{self.write_robot()}\n'
+        before, after = ([fragment(node, '') for node in nodes] for nodes in extras.outside)
+        return '\n'.join([self.declaration, *before, self.write_robot(), *after]) + '\n'
 
     # ---- hooks ----------------------------------------------------------------------
 
@@ -91,7 +99,8 @@ class UrdfWriter:
         tensor: list[Attr] = [(name, getattr(inertial, name), fmt(getattr(inertial, name)),
                                None) for name in ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz')]
         children.append(element(inner, 'inertia', tensor, _sub(extras, 'inertia'), []))
-        return element(pad, 'inertial', [], extras, children)
+        tags = ['origin', 'mass', 'inertia'] if origin else ['mass', 'inertia']
+        return element(pad, 'inertial', [], extras, children, tags)
 
     def _optional_origin(self, origin: Origin, pad: str) -> str:
         """Return the origin line with its newline, or '' for an identity nobody wrote."""
@@ -102,37 +111,88 @@ class UrdfWriter:
     # ---- elements -------------------------------------------------------------------
 
     def write_robot(self) -> str:
-        """Return the ``<robot>`` element."""
+        """Return the ``<robot>`` element, in the document order it was read in if any."""
         robot = self.robot
         pad = INDENT
+        order = robot.extras.order if robot.extras is not None else None
         children = self.prologue()
-        children.extend(self.write_material(material, pad) for material in robot.materials)
-        for link in robot.links:
+        materials, links, joints = robot.materials, robot.links, robot.joints
+        if order is not None:
+            written = set()
+            present = {id(item) for item in [*materials, *links, *joints,
+                                             *self._all_extensions()]}
+            for item in order:
+                if id(item) in present:
+                    written.add(id(item))
+                    children.append(self._write_item(item, pad))
+                elif not isinstance(item, (Material, Link, Joint, Extension)):
+                    children.append(fragment(item, pad, self.declared))
+            materials = [item for item in materials if id(item) not in written]
+            links = [item for item in links if id(item) not in written]
+            joints = [item for item in joints if id(item) not in written]
+        else:
+            written = set()
+        children.extend(self.write_material(material, pad) for material in materials)
+        for link in links:
             children.append(self.write_link(link, pad))
-            children.extend(fragment(block.with_reference(link.name), pad)
-                            for block in link.extensions)
-        for joint in robot.joints:
+        for owner in (*robot.links, *robot.joints):
+            children.extend(self._write_item(block, pad, owner)
+                            for block in owner.extensions if id(block) not in written)
+        for joint in joints:
             children.append(self.write_joint(joint, pad))
-            children.extend(
-                fragment(block.with_reference(joint.name) if block.tag == 'gazebo'
-                         else block.element, pad)
-                for block in joint.extensions)
-        children.extend(fragment(block.element, pad) for block in robot.extensions)
-        return element('', 'robot', self.robot_attrs(), robot.extras, children)
+        children.extend(self._write_item(block, pad) for block in robot.extensions
+                        if id(block) not in written)
+        attrs = self.robot_attrs()
+        if robot.extras is not None:
+            declared = {name for name, *_ in attrs}
+            for prefix, uri in robot.extras.node.nsmap.items():
+                name = f'xmlns:{prefix}' if prefix else 'xmlns'
+                if name not in declared and prefix:
+                    attrs.append((name, uri, uri, None))
+        return element('', 'robot', attrs, robot.extras, children, restore_children=False)
+
+    def _all_extensions(self) -> list[Extension]:
+        robot = self.robot
+        blocks = list(robot.extensions)
+        for owner in (*robot.links, *robot.joints):
+            blocks.extend(owner.extensions)
+        return blocks
+
+    def _write_item(self, item: object, pad: str, owner: Link | Joint | None = None) -> str:
+        if isinstance(item, Link):
+            return self.write_link(item, pad)
+        if isinstance(item, Joint):
+            return self.write_joint(item, pad)
+        if isinstance(item, Material):
+            return self.write_material(item, pad)
+        assert isinstance(item, Extension)
+        if owner is None:
+            owner = self._owner(item)
+        if owner is not None and (item.tag == 'gazebo' or isinstance(owner, Link)):
+            return fragment(item.with_reference(owner.name), pad, self.declared)
+        return fragment(item.element, pad, self.declared)
+
+    def _owner(self, block: Extension) -> Link | Joint | None:
+        for owner in (*self.robot.links, *self.robot.joints):
+            if any(candidate is block for candidate in owner.extensions):
+                return owner
+        return None
 
     def write_material(self, material: Material, pad: str) -> str:
         """Return a ``<material>`` definition or reference."""
         inner = pad + INDENT
         extras = material.extras
-        children = []
+        children, tags = [], []
         if material.rgba is not None:
             rgba = [('rgba', material.rgba, fmt_vec(material.rgba), None)]
             children.append(element(inner, 'color', rgba, _sub(extras, 'color'), []))
+            tags.append('color')
         if material.texture is not None:
             texture = [('filename', material.texture, material.texture, None)]
             children.append(element(inner, 'texture', texture, _sub(extras, 'texture'), []))
+            tags.append('texture')
         return element(pad, 'material', [('name', material.name, material.name, None)],
-                       extras, children)
+                       extras, children, tags)
 
     def write_link(self, link: Link, pad: str) -> str:
         """Return a ``<link>`` element."""
@@ -146,8 +206,10 @@ class UrdfWriter:
             children.append(self.write_collision(collision, inner))
         if link.extras is None:
             return _wrap(pad, f'link name="{esc(link.name)}"', 'link', children)
+        tags = ['inertial'] if link.inertial is not None else []
+        tags += ['visual'] * len(link.visuals) + ['collision'] * len(link.collisions)
         return element(pad, 'link', [('name', link.name, link.name, None)], link.extras,
-                       children)
+                       children, tags)
 
     def write_origin(self, origin: Origin, pad: str) -> str:
         """Return an ``<origin>`` element."""
@@ -172,9 +234,10 @@ class UrdfWriter:
         children.append(geometry)
         if extra:
             children.append(extra[:-1])
+        tags = (['origin'] if origin else []) + ['geometry'] + (['material'] if extra else [])
         attrs: list[Attr] = [] if shape.name is None else [('name', shape.name, shape.name,
                                                             None)]
-        return element(pad, tag, attrs, shape.extras, children)
+        return element(pad, tag, attrs, shape.extras, children, tags)
 
     def write_visual(self, visual: Visual, pad: str) -> str:
         """Return a ``<visual>`` element."""
@@ -242,10 +305,14 @@ class UrdfWriter:
         if joint.axis is not None:
             axis_attrs: list[Attr] = [('xyz', joint.axis, fmt_vec(joint.axis), None)]
             children.append(element(inner, 'axis', axis_attrs, _sub(extras, 'axis'), []))
-        children.extend(self._joint_parts(joint, inner))
+        tags = (['origin'] if origin else []) + ['parent', 'child']
+        tags += ['axis'] if joint.axis is not None else []
+        parts = self._joint_parts(joint, inner)
+        children.extend(parts)
+        tags += [part.split(None, 1)[0].lstrip('<') for part in parts]
         return element(pad, 'joint', [('name', joint.name, joint.name, None),
                                       ('type', joint.type, joint.type.value, None)],
-                       extras, children)
+                       extras, children, tags)
 
     def _joint_parts(self, joint: Joint, pad: str, after_limit: bool = False) -> list[str]:
         """Return calibration, dynamics, limit, mimic and safety_controller, as present."""
