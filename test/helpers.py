@@ -182,3 +182,43 @@ def canonical_blocks(urdf_text: str, tags=('gazebo', 'transmission', 'ros2_contr
                 node.tail = None
             blocks.append(etree.tostring(element, method='c14n'))
     return blocks
+
+
+# Corpus packages and the folders that hold them (see the corpus README).
+CORPUS_PACKAGES = {
+    'urdf_tutorial': 'urdf_tutorial', 'ur_description': 'ur_description',
+    'turtlebot3_description': 'turtlebot3/turtlebot3_description',
+    'husky_description': 'husky/husky_description', 'husky_control': 'husky/husky_control',
+    'kortex_description': 'kortex/kortex_description',
+}
+
+
+def ament_index(root: Path) -> dict[str, str]:
+    """
+    Make a real ament index of the corpus packages under ``root``.
+
+    Return the environment that makes ament_index_python (and so plain xacro) find them.
+    """
+    share = root / 'share'
+    markers = share / 'ament_index' / 'resource_index' / 'packages'
+    markers.mkdir(parents=True, exist_ok=True)
+    for name, folder in CORPUS_PACKAGES.items():
+        (markers / name).write_text('')
+        link = share / name
+        if not link.exists():
+            link.symlink_to(CORPUS / folder, target_is_directory=True)
+    return {'AMENT_PREFIX_PATH': str(root)}
+
+
+def canonical(xml: str | bytes) -> bytes:
+    """Return the C14N form of a document's root, whitespace between elements removed."""
+    from lxml import etree
+    data = xml.encode() if isinstance(xml, str) else xml
+    parser = etree.XMLParser(remove_blank_text=True)
+    root = etree.fromstring(data, parser)
+    for node in root.iter():
+        if node.tail is not None and not node.tail.strip():
+            node.tail = None
+        if node.text is not None and isinstance(node.tag, str):
+            node.text = node.text.strip() or None
+    return etree.tostring(root, method='c14n')

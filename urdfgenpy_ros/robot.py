@@ -52,6 +52,7 @@ class Robot:
         self.source: SourceLocation | None = None
         self.extras: Preserved | None = None
         self.read_warnings: list[ReadWarning] = []
+        self.included_files: list[str] = []
 
     def __repr__(self) -> str:
         """Return a one-line summary."""
@@ -368,6 +369,20 @@ class Robot:
         from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
         data = xml.encode('utf-8') if isinstance(xml, str) else xml
         return read_urdf_bytes(data, file)
+
+    @classmethod
+    def from_xacro(cls, path: str | PathLike[str], mappings: dict[str, str] | None = None,
+                   *, search_paths: list[str | PathLike[str]] | tuple = (),
+                   packages: dict[str, str | PathLike[str]] | None = None) -> Robot:
+        """
+        Expand a Xacro file with the real ``xacro`` and read the result.
+
+        ``mappings`` are xacro arguments (``{'dof': '7'}``); ``$(find pkg)`` resolves
+        through ``packages`` (name to folder), ``search_paths``, the ament index and
+        ``ROS_PACKAGE_PATH``.
+        """
+        from urdfgenpy_ros.formats.xacro_read import read_xacro
+        return read_xacro(path, mappings, search_paths, packages)
 
     # ---- output --------------------------------------------------------------------
 

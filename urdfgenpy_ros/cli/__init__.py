@@ -21,7 +21,9 @@ import traceback
 
 import click
 
+from urdfgenpy_ros.cli.convert import convert
 from urdfgenpy_ros.cli.example import example
+from urdfgenpy_ros.cli.tree import tree
 from urdfgenpy_ros.errors import UrdfgenpyError
 
 EXIT_UNREADABLE = 2
@@ -52,4 +54,5 @@ def main(ctx: click.Context, verbose: bool) -> None:
     ctx.obj = {'verbose': verbose}
 
 
-main.add_command(example)
+for command in (example, tree, convert):
+    main.add_command(command)

@@ -16,6 +16,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Mapping
 from os import PathLike
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -35,6 +36,20 @@ def format_of(path: str | PathLike[str]) -> str:
         known = ', '.join(WRITERS)
         raise ValueError(f'{path}: unknown suffix {suffix!r} (use one of {known}, '
                          'or .urdf.xacro)') from None
+
+
+def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
+         search_paths: Iterable[str | PathLike[str]] = ()) -> Robot:
+    """
+    Read a robot from ``path`` in the format its suffix names.
+
+    ``mappings`` are Xacro arguments; ``search_paths`` folders holding ROS packages.
+    """
+    from urdfgenpy_ros.robot import Robot
+    kind = format_of(path)
+    if kind == 'urdf':
+        return Robot.from_urdf(path)
+    return Robot.from_xacro(path, dict(mappings or {}), search_paths=list(search_paths))
 
 
 def save(robot: Robot, path: str | PathLike[str]) -> None:

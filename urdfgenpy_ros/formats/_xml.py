@@ -67,6 +67,11 @@ def esc(text: str) -> str:
     return text
 
 
+def escape_text(text: str) -> str:
+    """Escape text content."""
+    return text.replace('&', '&amp;').replace('<', '&lt;').replace('>', '&gt;')
+
+
 def _reads_as(text: str, value: Any) -> bool:
     """Return whether the original attribute ``text`` still denotes ``value``."""
     try:
@@ -149,6 +154,9 @@ def element(pad: str, tag: str, attrs: list[Attr], extras: Preserved | None,
             inner = pad + INDENT
             for offset, (anchor, node) in enumerate(extras.children):
                 children.insert(min(anchor + offset, len(children)), fragment(node, inner))
+        text = extras.node.text
+        if text is not None and not text.isspace():
+            children = [f'{pad}{INDENT}{escape_text(text.strip())}', *children]
     if not children:
         parts.append('/>')
         return ''.join(parts)

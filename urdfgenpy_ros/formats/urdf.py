@@ -245,9 +245,11 @@ class UrdfWriter:
         material = visual.material
         if material is not None:
             defined = self.robot._materials.get(material.name)
-            if defined is not None and (material.is_reference or defined == material):
-                material = Material(material.name, source=material.source,
-                                    extras=material.extras)
+            if defined is not None and material is not defined and not material.is_reference:
+                if material.source is None and material == defined:
+                    material = defined  # built in Python as a copy: refer to it
+            if material is defined:
+                material = Material(material.name)
             extra = self.write_material(material, pad + INDENT) + '\n'
         return self._placed('visual', visual, pad, extra)
 

@@ -162,7 +162,9 @@ class _Reader:
         """Return what must be kept of ``node``, or None when the writer reproduces it."""
         attributes, children = KNOWN[tag]
         if self.plain and not nested:
-            if len(node) and not _in_written_order(node, tag, children):
+            if node.text is not None and not node.text.isspace():
+                self.plain = False
+            elif len(node) and not _in_written_order(node, tag, children):
                 self.plain = False
             elif not _attributes_in_written_order(node, tag):
                 self.plain = False
@@ -412,6 +414,7 @@ class _Reader:
                 order.append(node)
         for joint in joints:
             robot.add_joint(joint)
+        _share_materials(robot)
         self.plain = True
         robot.extras = Preserved(root, *KNOWN['robot'])
         robot.extras.order = order
@@ -450,6 +453,15 @@ class _Reader:
                                          'inner <robot> (remove the wrapper: urdfdom '
                                          'refuses it)'))
         return inner
+
+
+def _share_materials(robot: Robot) -> None:
+    """Point plain references (``<material name="x"/>``) at the robot-level material."""
+    for link in robot.links:
+        for visual in link.visuals:
+            material = visual.material
+            if material is not None and material.is_reference and material.extras is None:
+                visual.material = robot._materials.get(material.name, material)
 
 
 def _attributes_in_written_order(node: Any, tag: str) -> bool:

@@ -1,0 +1,55 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Options and arguments several commands share: the input file and its Xacro args."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import click
+
+from urdfgenpy_ros.formats import load
+from urdfgenpy_ros.robot import Robot
+
+
+def parse_mappings(arguments: tuple[str, ...]) -> dict[str, str]:
+    """Turn ``name:=value`` arguments into a dict, as xacro's command line does."""
+    mappings = {}
+    for argument in arguments:
+        name, separator, value = argument.partition(':=')
+        if not separator or not name:
+            raise click.BadParameter(f'{argument!r} is not name:=value', param_hint='ARGS')
+        mappings[name] = value
+    return mappings
+
+
+def input_options(function: Callable[..., Any]) -> Callable[..., Any]:
+    """Add ``--package-path`` (repeatable) to a command reading a description."""
+    return click.option(
+        '--package-path', '-p', 'package_paths', multiple=True,
+        type=click.Path(exists=True, file_okay=False, path_type=Path),
+        help='A folder holding ROS packages, for $(find pkg) and package:// (repeatable).'
+    )(function)
+
+
+def read_robot(path: Path, arguments: tuple[str, ...], package_paths: tuple[Path, ...]
+               ) -> Robot:
+    """Read ``path`` with its Xacro arguments; print the reader's warnings on stderr."""
+    robot = load(path, parse_mappings(arguments), package_paths)
+    for warning in robot.read_warnings:
+        click.echo(str(warning), err=True)
+    return robot

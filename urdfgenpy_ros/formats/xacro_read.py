@@ -1,0 +1,85 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Xacro reading: the real ``xacro`` expands the file, then the URDF reader reads it."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator, Mapping
+from contextlib import contextmanager
+from os import PathLike
+from pathlib import Path
+from typing import Any
+
+from urdfgenpy_ros.errors import MissingDependencyError, ParseError, SourceLocation
+from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
+from urdfgenpy_ros.resources import PackageResolver
+from urdfgenpy_ros.robot import Robot
+
+
+def _xacro() -> Any:
+    try:
+        import xacro
+    except ImportError:
+        raise MissingDependencyError('xacro', 'xacro', 'Reading Xacro') from None
+    return xacro
+
+
+@contextmanager
+def _finding_with(resolver: PackageResolver) -> Iterator[None]:
+    """Answer xacro's ``$(find pkg)`` from ``resolver`` first, then as xacro would."""
+    from xacro import substitution_args
+    original = substitution_args._eval_find
+
+    def find(package: str) -> str:
+        found = resolver.find(package)
+        return str(found) if found is not None else original(package)
+
+    substitution_args._eval_find = find
+    try:
+        yield
+    finally:
+        substitution_args._eval_find = original
+
+
+def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
+                 resolver: PackageResolver | None = None) -> tuple[str, list[str]]:
+    """
+    Return the URDF text ``xacro`` makes of ``path`` and every file it included.
+
+    :raises ParseError: with xacro's message, when expansion fails (code X001).
+    """
+    xacro = _xacro()
+    resolver = resolver or PackageResolver()
+    where = SourceLocation(str(path))
+    try:
+        with _finding_with(resolver):
+            document = xacro.process_file(str(path), mappings=dict(mappings or {}))
+    except Exception as error:  # noqa: B902 - xacro raises many types; all are one line
+        message = ' '.join(str(error).split()) or type(error).__name__
+        if 'ament_index_python' in message or 'PackageNotFound' in type(error).__name__:
+            message += ' (pass the package folders in search_paths)'
+        raise ParseError(f'xacro: {message}', where, 'X001') from None
+    included = [str(Path(name).resolve()) for name in getattr(xacro, 'all_includes', [])]
+    return document.toprettyxml(indent='  '), included
+
+
+def read_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
+               search_paths: Iterable[str | PathLike[str]] = (),
+               packages: Mapping[str, str | PathLike[str]] | None = None) -> Robot:
+    """Expand the Xacro file ``path`` with ``mappings`` (``name: value``) and read it."""
+    text, included = expand_xacro(path, mappings, PackageResolver(search_paths, packages))
+    robot = read_urdf_bytes(text.encode('utf-8'), f'{path} (expanded)')
+    robot.included_files = [str(Path(path).resolve()), *included]
+    return robot

@@ -1,0 +1,136 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Find ROS packages and the files ``package://`` and ``file://`` URIs name."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+import os
+from os import PathLike
+from pathlib import Path
+from urllib.parse import unquote, urlparse
+
+from lxml import etree
+
+from urdfgenpy_ros.errors import UrdfgenpyError
+
+
+class ResourceError(UrdfgenpyError):
+    """A package or file a description names cannot be found."""
+
+
+def _package_name(directory: Path) -> str | None:
+    manifest = directory / 'package.xml'
+    if not manifest.is_file():
+        return None
+    try:
+        name = etree.parse(str(manifest)).findtext('name')
+    except (OSError, etree.XMLSyntaxError):
+        return None
+    return name.strip() if name else None
+
+
+class PackageResolver:
+    """
+    Find a ROS package's directory by name.
+
+    Looked up in order: ``packages`` (name to directory), ``search_paths`` (directories
+    holding packages, found by folder name or package.xml up to three levels down), the
+    ament index of a sourced ROS 2 install, then ``ROS_PACKAGE_PATH``.
+    """
+
+    def __init__(self, search_paths: Iterable[str | PathLike[str]] = (),
+                 packages: Mapping[str, str | PathLike[str]] | None = None) -> None:
+        self.packages = {name: Path(path) for name, path in (packages or {}).items()}
+        self.search_paths = [Path(path) for path in search_paths]
+        self._found: dict[str, Path | None] = {}
+
+    def find(self, name: str) -> Path | None:
+        """Return the package directory of ``name``, or None."""
+        if name not in self._found:
+            self._found[name] = self._find(name)
+        return self._found[name]
+
+    def _find(self, name: str) -> Path | None:
+        if name in self.packages:
+            return self.packages[name]
+        for root in self.search_paths:
+            found = _search(root, name, depth=3)
+            if found is not None:
+                return found
+        try:
+            from ament_index_python.packages import (
+                get_package_share_directory, PackageNotFoundError)
+        except ImportError:
+            pass
+        else:
+            try:
+                return Path(get_package_share_directory(name))
+            except (PackageNotFoundError, ValueError, LookupError, OSError):
+                pass
+        for entry in os.environ.get('ROS_PACKAGE_PATH', '').split(os.pathsep):
+            if entry:
+                found = _search(Path(entry), name, depth=3)
+                if found is not None:
+                    return found
+        return None
+
+    def resolve(self, uri: str, relative_to: str | PathLike[str] | None = None) -> Path:
+        """
+        Return the file ``uri`` names (``package://``, ``file://`` or a path).
+
+        :raises ResourceError: when the package or the file does not exist.
+        """
+        parsed = urlparse(uri)
+        if parsed.scheme == 'package':
+            directory = self.find(parsed.netloc)
+            if directory is None:
+                raise ResourceError(f'package {parsed.netloc!r} of {uri!r} not found (source '
+                                    'its workspace, or pass its folder in search_paths)')
+            path = directory / unquote(parsed.path).lstrip('/')
+        elif parsed.scheme == 'file':
+            path = Path(unquote(parsed.path))
+        elif parsed.scheme in ('', ) or len(parsed.scheme) == 1:  # a path (or C:\\)
+            path = Path(uri)
+            if not path.is_absolute() and relative_to is not None:
+                path = Path(relative_to) / path
+        else:
+            raise ResourceError(f'{uri!r}: unsupported URI scheme {parsed.scheme!r} (use '
+                                'package://, file:// or a path)')
+        if not path.exists():
+            raise ResourceError(f'{uri!r} resolves to {path}, which does not exist')
+        return path
+
+
+def _search(root: Path, name: str, depth: int) -> Path | None:
+    if not root.is_dir():
+        return None
+    if root.name == name or _package_name(root) == name:
+        return root
+    if depth == 0:
+        return None
+    try:
+        children = sorted(child for child in root.iterdir() if child.is_dir()
+                          and not child.name.startswith('.'))
+    except OSError:
+        return None
+    for child in children:
+        if child.name == name:
+            return child
+    for child in children:
+        found = _search(child, name, depth - 1)
+        if found is not None:
+            return found
+    return None
