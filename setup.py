@@ -29,7 +29,7 @@ setup(
     python_requires='>=3.10',
     install_requires=['setuptools', 'lxml>=4.5', 'click>=8.0'],
     extras_require={
-        'xacro': ['xacro>=2.0'],
+        'xacro': ['xacro>=2.0', 'ros-jazzy-ament-index-python'],
         'ros': [
             'ros-jazzy-rclpy[fastrtps]', 'ros-jazzy-std-msgs', 'ros-jazzy-sensor-msgs',
             'ros-jazzy-std-srvs', 'ros-jazzy-ament-index-python',

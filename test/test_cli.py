@@ -42,3 +42,43 @@ def test_unwritable_output_is_one_line_and_exit_2(tmp_path: Path) -> None:
     assert result.stdout == ''
     assert result.stderr.count('\n') == 1 and result.stderr.startswith('urdfgenpy: ')
     assert 'file/sub: Not a directory' in result.stderr
+
+
+def test_tree_of_a_xacro_with_arguments_and_package_path() -> None:
+    from helpers import CORPUS
+    gen3 = CORPUS / 'kortex/kortex_description/robots/gen3.xacro'
+    result = CliRunner().invoke(main, ['tree', str(gen3), 'dof:=6', '--package-path',
+                                       str(CORPUS)])
+    assert result.exit_code == 0, result.output
+    assert result.stdout.startswith('robot gen3: 10 links, 9 joints')
+
+
+def test_broken_file_is_one_line_exit_2_and_verbose_shows_the_traceback() -> None:
+    from helpers import CORPUS
+    path = CORPUS / 'urdf/urdf/test/fail_pr2_desc_bracket.urdf'
+    result = CliRunner().invoke(main, ['tree', str(path)])
+    assert result.exit_code == 2
+    assert result.stderr == (f"urdfgenpy: {path}:9:15: error P003 <origin>: rpy '0 0 1 }}' "
+                             'must be 3 numbers separated by spaces\n')
+    verbose = CliRunner().invoke(main, ['--verbose', 'tree', str(path)])
+    assert verbose.exit_code == 2 and 'Traceback' in verbose.stderr
+
+
+def test_convert_urdf_to_xacro_and_back_keeps_the_model(tmp_path: Path) -> None:
+    from helpers import CORPUS
+    source = CORPUS / 'urdf_tutorial/urdf/07-physics.urdf'
+    xacro, back = tmp_path / 'r2d2.urdf.xacro', tmp_path / 'r2d2.urdf'
+    assert CliRunner().invoke(main, ['convert', str(source), str(xacro)]).exit_code == 0
+    result = CliRunner().invoke(main, ['convert', str(xacro), str(back)])
+    assert result.exit_code == 0, result.output
+    assert snapshot(load_yourdfpy(back)) == snapshot(load_yourdfpy(source))
+    refused = CliRunner().invoke(main, ['convert', str(source), str(back)])
+    assert refused.exit_code == 2 and 'pass --force' in refused.stderr
+    assert snapshot(load_yourdfpy(back)) == snapshot(load_yourdfpy(source))
+
+
+def test_warnings_go_to_stderr() -> None:
+    from helpers import CORPUS
+    result = CliRunner().invoke(main, ['tree', str(CORPUS / 'urdf/urdf/test/one_link.urdf')])
+    assert result.exit_code == 0
+    assert 'warning P102' in result.stderr and 'warning' not in result.stdout
