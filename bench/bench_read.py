@@ -119,7 +119,7 @@ def main() -> None:
             print(f'left out {path.relative_to(args.corpus)}: {", ".join(failing)} failed')
         else:
             usable.append(path)
-    totals = {name: 0.0 for name in readers}
+    totals = dict.fromkeys(readers, 0.0)
     rows = []
     for path in usable:
         figures = {name: median_time(lambda: function(data[path]), args.repeat)
