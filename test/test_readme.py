@@ -28,6 +28,17 @@ BLOCKS = re.findall(r'```python\n(.*?)```', (REPO / 'README.md').read_text(), re
 
 @pytest.mark.parametrize('code', BLOCKS)
 def test_readme_example_runs(code: str, tmp_path: Path) -> None:
+    # The files the reading example opens.
+    from urdfgenpy_ros.examples import pan_tilt_unit
+    robot = pan_tilt_unit()
+    robot.rename_link('base_plate', 'base_link')
+    robot.save(tmp_path / 'robot.urdf')
+    (tmp_path / 'robot.urdf.xacro').write_text(
+        '<robot name="arm" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+        '<xacro:arg name="dof" default="6"/><link name="base_link"/>'
+        '<xacro:property name="n" value="$(arg dof)"/><link name="link_${n}"/>'
+        '<joint name="j" type="fixed"><parent link="base_link"/><child link="link_${n}"/>'
+        '</joint></robot>')
     cwd = os.getcwd()
     os.chdir(tmp_path)
     try:

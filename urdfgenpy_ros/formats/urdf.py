@@ -61,6 +61,7 @@ class UrdfWriter:
 
     def __init__(self, robot: Robot) -> None:
         self.robot = robot
+        self._owners: dict[int, Link | Joint] | None = None
         extras = robot.extras
         self.declared = {prefix or '': uri for prefix, uri in extras.node.nsmap.items()
                          } if extras is not None else {}
@@ -173,10 +174,11 @@ class UrdfWriter:
         return fragment(item.element, pad, self.declared)
 
     def _owner(self, block: Extension) -> Link | Joint | None:
-        for owner in (*self.robot.links, *self.robot.joints):
-            if any(candidate is block for candidate in owner.extensions):
-                return owner
-        return None
+        if self._owners is None:
+            self._owners = {id(candidate): owner
+                            for owner in (*self.robot.links, *self.robot.joints)
+                            for candidate in owner.extensions}
+        return self._owners.get(id(block))
 
     def write_material(self, material: Material, pad: str) -> str:
         """Return a ``<material>`` definition or reference."""
