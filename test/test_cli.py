@@ -82,3 +82,40 @@ def test_warnings_go_to_stderr() -> None:
     result = CliRunner().invoke(main, ['tree', str(CORPUS / 'urdf/urdf/test/one_link.urdf')])
     assert result.exit_code == 0
     assert 'warning P102' in result.stderr and 'warning' not in result.stdout
+
+
+def test_check_exit_codes_and_summary(tmp_path: Path) -> None:
+    from helpers import CORPUS
+    from validation_fixtures import broken, VALID
+    valid, bad = tmp_path / 'valid.urdf', tmp_path / 'bad.urdf'
+    valid.write_text(VALID)
+    bad.write_text(broken('J104'))
+    clean = CliRunner().invoke(main, ['check', str(valid)])
+    assert (clean.exit_code, clean.stdout) == (0, '')
+    failed = CliRunner().invoke(main, ['check', str(valid), str(bad)])
+    assert failed.exit_code == 1
+    assert failed.stdout.count('\n') == 1 and ' error J104 ' in failed.stdout
+    assert failed.stderr == '2 file(s): 1 error(s), 0 warning(s), 0 unreadable\n'
+    unreadable = CliRunner().invoke(main, ['check', str(valid), str(CORPUS / 'urdf/urdf/test/'
+                                                                    'fail_pr2_desc_bracket.urdf')])
+    assert unreadable.exit_code == 2 and 'error P003' in unreadable.stdout
+
+
+def test_check_strict_and_json(tmp_path: Path) -> None:
+    import json
+    from validation_fixtures import broken
+    warned = tmp_path / 'warned.urdf'
+    warned.write_text(broken('J102'))
+    assert CliRunner().invoke(main, ['check', str(warned)]).exit_code == 0
+    assert CliRunner().invoke(main, ['check', '--strict', str(warned)]).exit_code == 1
+    result = CliRunner().invoke(main, ['check', '--format', 'json', str(warned)])
+    report = json.loads(result.stdout)
+    assert report['warnings'] == 1 and report['files'][0]['findings'][0]['code'] == 'J102'
+
+
+def test_check_xacro_with_arguments() -> None:
+    from helpers import CORPUS
+    result = CliRunner().invoke(main, ['check', '--no-meshes', str(
+        CORPUS / 'ur_description/urdf/ur.urdf.xacro'), 'name:=ur', 'ur_type:=ur5e', '-p',
+        str(CORPUS)])
+    assert result.exit_code == 0, result.output

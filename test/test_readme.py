@@ -30,8 +30,9 @@ BLOCKS = re.findall(r'```python\n(.*?)```', (REPO / 'README.md').read_text(), re
 def test_readme_example_runs(code: str, tmp_path: Path) -> None:
     # The files the reading example opens.
     from urdfgenpy_ros.examples import pan_tilt_unit
+    from urdfgenpy_ros import Inertial
     robot = pan_tilt_unit()
-    robot.rename_link('base_plate', 'base_link')
+    robot.get_link('base_link').set_inertial(Inertial.from_sphere(1.0, 0.1))
     robot.save(tmp_path / 'robot.urdf')
     (tmp_path / 'robot.urdf.xacro').write_text(
         '<robot name="arm" xmlns:xacro="http://www.ros.org/wiki/xacro">'

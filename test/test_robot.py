@@ -102,13 +102,15 @@ def test_wrong_object_types_are_refused() -> None:
 
 
 def test_navigation_from_root_through_parents_and_children(ptu: Robot) -> None:
-    assert ptu.root.name == 'base_plate'
+    assert ptu.root.name == 'base_link'
     assert ptu.parent_joint('tilt_link').name == 'tilt_joint'
     assert ptu.parent_link('tilt_link').name == 'pan_link'
-    assert ptu.parent_link('base_plate') is None
+    assert ptu.parent_link('base_link') is None
     assert [link.name for link in ptu.child_links('base_plate')] == ['pan_link']
-    assert [joint.name for joint in ptu.chain('tilt_link')] == ['pan_joint', 'tilt_joint']
-    assert [link.name for _, link in ptu.walk()] == ['base_plate', 'pan_link', 'tilt_link']
+    assert [joint.name for joint in ptu.chain('tilt_link', 'base_plate')] == [
+        'pan_joint', 'tilt_joint']
+    assert [link.name for _, link in ptu.walk()] == ['base_link', 'base_plate', 'pan_link',
+                                                     'tilt_link']
     with pytest.raises(KeyError, match="did you mean 'pan_link'"):
         ptu.get_link('pan_lnk')
 

@@ -19,7 +19,8 @@ Build, read, check and publish robot descriptions for ROS 2.
 >>> robot = Robot('demo').add_link(Link('base_link'))
 """
 
-from urdfgenpy_ros.errors import ParseError, SourceLocation, UrdfgenpyError
+from urdfgenpy_ros.errors import (
+    ParseError, Severity, SourceLocation, UrdfgenpyError, ValidationError)
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Mesh, Origin, Sphere
 from urdfgenpy_ros.inertial import Inertial
@@ -36,5 +37,5 @@ __all__ = [
     'Box', 'Collision', 'Cylinder', 'Extension', 'Geometry', 'Inertial', 'Joint',
     'JointCalibration', 'JointDynamics', 'JointLimit', 'JointMimic', 'JointType', 'Link',
     'Material', 'Mesh', 'Origin', 'ParseError', 'Robot', 'SafetyController', 'SourceLocation',
-    'Sphere', 'UrdfgenpyError', 'Visual', '__version__',
+    'Severity', 'Sphere', 'UrdfgenpyError', 'ValidationError', 'Visual', '__version__',
 ]

@@ -16,6 +16,7 @@
 
 from __future__ import annotations
 
+from enum import Enum
 from typing import NamedTuple
 
 
@@ -62,6 +63,44 @@ class ReadWarning(NamedTuple):
     def __str__(self) -> str:
         """Return ``file:line:col: warning CODE message``."""
         return f'{self.location}: warning {self.code} {self.message}'
+
+
+class Severity(str, Enum):
+    """How bad a finding is: errors break consumers, warnings are likely mistakes."""
+
+    ERROR = 'error'
+    WARNING = 'warning'
+
+    def __str__(self) -> str:
+        """Return the lower-case name."""
+        return self.value
+
+
+class ValidationError(UrdfgenpyError):
+    """
+    One finding of ``Robot.validate()``: a stable code, a severity and where it is.
+
+    ``element`` names the element (``joint 'elbow'``), ``location`` gives file and line
+    for a model read from a file or the element path for one built in Python, and
+    ``hint`` says how to fix it. ``str()`` is one flake8-shaped line.
+    """
+
+    def __init__(self, code: str, severity: Severity, element: str,
+                 location: SourceLocation, message: str, hint: str) -> None:
+        self.code = code
+        self.severity = Severity(severity)
+        self.element = element
+        self.location = location
+        self.message = message
+        self.hint = hint
+        super().__init__(f'{location}: {self.severity} {code} {element}: {message} ({hint})')
+
+    def as_dict(self) -> dict[str, object]:
+        """Return the finding as plain data (for JSON output)."""
+        return {'code': self.code, 'severity': str(self.severity), 'element': self.element,
+                'file': self.location.file, 'line': self.location.line,
+                'column': self.location.column, 'path': self.location.path,
+                'message': self.message, 'hint': self.hint}
 
 
 class MissingDependencyError(UrdfgenpyError):

@@ -41,7 +41,9 @@ def pan_tilt_unit() -> Robot:
     head = Box(0.09, 0.05, 0.05)
     robot = Robot('ptu')
     robot.add_material(charcoal).add_material(amber)
+    robot.add_link(Link('base_link'))  # massless root: KDL ignores a root's inertia
     robot.add_link(part('base_plate', plate, Origin.above(plate), charcoal, 0.8))
+    robot.add_joint(Joint('base_plate_joint', 'fixed', 'base_link', 'base_plate'))
     robot.add_link(part('pan_link', neck, Origin.above(neck), charcoal, 0.18))
     robot.add_link(part('tilt_link', head, Origin(xyz=(0.045, 0, 0)), amber, 0.12))
     robot.add_joint(Joint('pan_joint', 'revolute', 'base_plate', 'pan_link',

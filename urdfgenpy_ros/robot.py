@@ -22,7 +22,7 @@ from os import PathLike
 from typing import Any
 
 from urdfgenpy_ros import checks
-from urdfgenpy_ros.errors import ReadWarning, SourceLocation
+from urdfgenpy_ros.errors import ReadWarning, SourceLocation, ValidationError
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.joint import Joint, JointMimic
 from urdfgenpy_ros.link import Link
@@ -350,6 +350,18 @@ class Robot:
                     element.set('reference', new)
                 if element.tag == 'joint' and element.get('name') == old:
                     element.set('name', new)
+
+    # ---- checking ------------------------------------------------------------------
+
+    def validate(self, strict: bool = False, **options: object) -> list[ValidationError]:
+        """
+        Return the findings of every check (``urdfgenpy_ros.validation.validate``).
+
+        With ``strict=True``, raise the first error instead. ``search_paths`` and
+        ``check_meshes`` go to the mesh check.
+        """
+        from urdfgenpy_ros.validation import validate
+        return validate(self, strict, **options)  # type: ignore[arg-type]
 
     # ---- input ---------------------------------------------------------------------
 

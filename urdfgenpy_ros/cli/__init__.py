@@ -21,6 +21,7 @@ import traceback
 
 import click
 
+from urdfgenpy_ros.cli.check import check
 from urdfgenpy_ros.cli.convert import convert
 from urdfgenpy_ros.cli.example import example
 from urdfgenpy_ros.cli.tree import tree
@@ -54,5 +55,5 @@ def main(ctx: click.Context, verbose: bool) -> None:
     ctx.obj = {'verbose': verbose}
 
 
-for command in (example, tree, convert):
+for command in (example, tree, convert, check):
     main.add_command(command)

@@ -1,0 +1,156 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""robot.validate(): one fixture per check, and the real consumers' verdicts on each."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+import subprocess
+
+from helpers import check_urdf, CORPUS, require_module, require_tool
+import pytest
+
+from urdfgenpy_ros import Joint, Link, Robot, Severity, ValidationError
+from urdfgenpy_ros.examples import pan_tilt_unit
+from urdfgenpy_ros.validation import CODES
+from validation_fixtures import broken, defect_line, DEFECTS, VALID
+
+
+def _write(tmp_path: Path, name: str, text: str) -> Path:
+    path = tmp_path / f'{name}.urdf'
+    path.write_text(text)
+    return path
+
+
+def check_urdf_accepts(path: Path) -> bool:
+    """Return check_urdf's verdict (it hangs on some loops: a timeout is a refusal)."""
+    require_tool('check_urdf')
+    try:
+        return check_urdf(path).returncode == 0
+    except subprocess.TimeoutExpired:
+        return False
+
+
+def mujoco_accepts(path: Path) -> bool:
+    """Return whether MuJoCo compiles the URDF."""
+    mujoco = require_module('mujoco')
+    try:
+        mujoco.MjModel.from_xml_path(str(path))
+    except Exception:  # noqa: B902 - any compile error is a refusal
+        return False
+    return True
+
+
+def test_valid_fixture_has_no_finding_and_consumers_accept_it(tmp_path: Path) -> None:
+    path = _write(tmp_path, 'valid', VALID)
+    assert Robot.from_urdf(path).validate() == []
+    assert check_urdf_accepts(path) and mujoco_accepts(path)
+
+
+def test_examples_and_seed_robot_are_clean() -> None:
+    assert pan_tilt_unit().validate() == []
+
+
+@pytest.mark.parametrize('key', DEFECTS)
+def test_each_defect_is_flagged_with_its_code_at_its_line(key: str, tmp_path: Path) -> None:
+    text = broken(key)
+    path = _write(tmp_path, key, text)
+    findings = Robot.from_urdf(path).validate()
+    expected, _ = DEFECTS[key]
+    assert {finding.code for finding in findings} == expected
+    code = key[:4]
+    (finding,) = [finding for finding in findings if finding.code == code]
+    assert finding.severity is CODES[code][0]
+    assert (finding.location.file, finding.location.line) == (str(path), defect_line(text))
+    line = text.splitlines()[finding.location.line - 1]
+    assert line[finding.location.column - 1] == '<'
+    assert finding.location.path.startswith('/robot')
+    message = str(finding)
+    assert message.startswith(f'{path}:{defect_line(text)}:{finding.location.column}: '
+                              f'{finding.severity} {code} ')
+    assert '\n' not in message and finding.hint in message
+
+
+# What each real consumer does with each defect: (check_urdf accepts, MuJoCo accepts).
+VERDICTS = {
+    'S003': (False, False), 'S002': (False, True), 'S004': (False, False),
+    'S005': (False, False), 'S006': (False, False), 'S007': (True, False),
+    'S008': (False, True), 'J101': (True, False), 'J103': (False, True),
+    'I201': (True, False), 'I201b': (True, False), 'I202': (True, False),
+    'I203': (True, False), 'R302': (True, False), 'R303': (True, False),
+    'R305': (False, True),
+    # Errors both accept silently: the check is the only thing that catches them.
+    'J104': (True, True), 'J105': (True, True), 'J107': (True, True), 'J108': (True, True),
+    'J109': (True, True), 'R304': (True, True),
+}
+
+
+@pytest.mark.parametrize('key', VERDICTS)
+def test_consumers_agree_or_accept_silently(key: str, tmp_path: Path) -> None:
+    path = _write(tmp_path, key, broken(key))
+    assert (check_urdf_accepts(path), mujoco_accepts(path)) == VERDICTS[key]
+
+
+def test_every_error_code_has_a_consumer_verdict() -> None:
+    errors = {key for key in DEFECTS if CODES[key[:4]][0] is Severity.ERROR}
+    assert errors <= set(VERDICTS)
+
+
+def test_corpus_files_both_consumers_accept_have_no_error() -> None:
+    clean = 0
+    for path in sorted(CORPUS.rglob('*.urdf')):
+        if not (check_urdf_accepts(path) and mujoco_accepts(path)):
+            continue
+        findings = Robot.from_urdf(path).validate(search_paths=[CORPUS])
+        assert [str(f) for f in findings if f.severity is Severity.ERROR] == [], path
+        clean += 1
+    assert clean >= 20
+
+
+def test_models_built_in_python_name_the_element_path() -> None:
+    robot = Robot('r').add_link(Link('base_link')).add_link(Link('arm'))
+    robot.add_joint(Joint('j', 'revolute', 'base_link', 'arm', axis=(0, 0, 1)))
+    codes = {finding.code: finding for finding in robot.validate()}
+    assert set(codes) == {'J103', 'I201'}
+    assert str(codes['J103']).startswith("/robot/joint[@name='j']: error J103 joint 'j': ")
+    assert codes['I201'].location.line is None
+
+
+def test_strict_raises_the_first_error_only() -> None:
+    robot = pan_tilt_unit()
+    assert robot.validate(strict=True) == []
+    robot.get_joint('pan_joint').limit.lower = 4.0
+    with pytest.raises(ValidationError, match='J104'):
+        robot.validate(strict=True)
+    warned = pan_tilt_unit()
+    warned.rename_link('base_link', 'root')
+    assert [f.code for f in warned.validate(strict=True)] == ['C401']
+
+
+def test_non_finite_values_are_found_anywhere() -> None:
+    robot = pan_tilt_unit()
+    robot.get_link('pan_link').inertial.ixx = math.inf
+    assert 'R305' in {finding.code for finding in robot.validate()}
+
+
+def test_findings_serialise_to_json() -> None:
+    robot = pan_tilt_unit()
+    robot.get_joint('tilt_joint').limit.velocity = 0.0
+    (finding,) = robot.validate()
+    data = json.loads(json.dumps(finding.as_dict()))
+    assert data['code'] == 'J106' and data['severity'] == 'warning'
+    assert data['path'] == "/robot/joint[@name='tilt_joint']/limit"

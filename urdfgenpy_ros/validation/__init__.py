@@ -1,0 +1,63 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""``robot.validate()``: everything that breaks RViz, Gazebo or controllers, found early."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from os import PathLike
+from pathlib import Path
+
+from urdfgenpy_ros.errors import Severity, ValidationError
+from urdfgenpy_ros.resources import PackageResolver
+from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.validation.codes import CODES
+from urdfgenpy_ros.validation.findings import Findings
+from urdfgenpy_ros.validation.inertia import check_inertia
+from urdfgenpy_ros.validation.joints import check_joints
+from urdfgenpy_ros.validation.references import check_references
+from urdfgenpy_ros.validation.topology import check_topology
+
+__all__ = ['CODES', 'validate', 'ValidationError']
+
+
+def validate(robot: Robot, strict: bool = False, *, check_meshes: bool = True,
+             search_paths: Iterable[str | PathLike[str]] = ()) -> list[ValidationError]:
+    """
+    Return every finding about ``robot``; with ``strict``, raise the first error instead.
+
+    Mesh files are resolved through ``search_paths``, the ament index and
+    ``ROS_PACKAGE_PATH`` (relative paths from the file the robot was read from); pass
+    ``check_meshes=False`` to skip them. Reader warnings come first.
+
+    :raises ValidationError: with ``strict=True``, the first finding of severity error.
+    """
+    findings = Findings(robot)
+    for warning in robot.read_warnings:
+        findings.items.append(ValidationError(warning.code, Severity.WARNING,
+                                              f'robot {robot.name!r}', warning.location,
+                                              warning.message, 'see the message'))
+    check_topology(robot, findings)
+    check_joints(robot, findings)
+    check_inertia(robot, findings)
+    resolver = PackageResolver(search_paths) if check_meshes else None
+    source = robot.source.file if robot.source is not None else None
+    base = Path(source).parent if source and Path(source).is_file() else None
+    check_references(robot, findings, resolver, base)
+    if strict:
+        for finding in findings.items:
+            if finding.severity is Severity.ERROR:
+                raise finding
+    return findings.items

@@ -1,0 +1,76 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Every finding code, its severity and title, in one table. Codes never change meaning.
+
+P and X codes are the readers' (errors raise ParseError; warnings come with the robot).
+"""
+
+from __future__ import annotations
+
+from urdfgenpy_ros.errors import Severity
+
+E, W = Severity.ERROR, Severity.WARNING
+
+CODES: dict[str, tuple[Severity, str]] = {
+    # reading (see formats/_parse.py and formats/urdf_read.py)
+    'P101': (W, '<robot> wrapped in another root element'),
+    'P102': (W, 'malformed or misplaced XML declaration'),
+    'P103': (W, 'NUL bytes after the document'),
+    'P104': (W, 'default namespace on <robot>'),
+    # structure
+    'S001': (E, 'no root link'),
+    'S002': (E, 'more than one root link'),
+    'S003': (E, 'kinematic loop'),
+    'S004': (E, 'joint names a parent link that does not exist'),
+    'S005': (E, 'joint names a child link that does not exist'),
+    'S006': (E, 'joint connects a link to itself'),
+    'S007': (E, 'link has more than one parent joint'),
+    'S008': (E, 'empty name'),
+    'S009': (W, 'name is not a valid ROS frame name'),
+    # joints
+    'J101': (E, 'zero axis on a movable joint'),
+    'J102': (W, 'axis is not a unit vector'),
+    'J103': (E, 'revolute or prismatic joint without <limit>'),
+    'J104': (E, 'lower limit above upper limit'),
+    'J105': (E, 'negative effort or velocity limit'),
+    'J106': (W, 'zero effort or velocity limit on a movable joint'),
+    'J107': (E, 'mimic names a joint that does not exist'),
+    'J108': (E, 'mimic follows a joint that cannot move'),
+    'J109': (E, 'mimic cycle'),
+    'J110': (W, 'safety controller soft limits outside the hard limits'),
+    'J111': (W, 'mimic on a fixed joint has no effect'),
+    # inertia
+    'I201': (E, 'moving link without positive mass'),
+    'I202': (E, 'inertia tensor not positive-definite'),
+    'I203': (E, 'inertia violates the triangle inequality'),
+    'I204': (W, 'inertia implausible for the link geometry'),
+    'I205': (W, 'inertia on the root link'),
+    'I206': (W, 'link without inertial above moving links'),
+    # references and values
+    'R301': (W, 'material not defined'),
+    'R302': (E, 'collision mesh file not found'),
+    'R303': (W, 'mesh package not found, file not checked'),
+    'R304': (E, 'non-positive size or zero scale'),
+    'R305': (E, 'not a finite number'),
+    'R306': (W, 'visual mesh file not found'),
+    # conventions
+    'C401': (W, "no link called 'base_link'"),
+}
+
+
+def severity_of(code: str) -> Severity:
+    """Return the severity of ``code``."""
+    return CODES[code][0]

@@ -1,0 +1,131 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Inertia: positive mass where it moves, physical tensors, plausible magnitudes."""
+
+from __future__ import annotations
+
+import math
+
+from urdfgenpy_ros.geometry import Box, Cylinder, Sphere
+from urdfgenpy_ros.inertial import box_tensor, cylinder_tensor, Inertial, sphere_tensor
+from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.link import Link
+from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.transforms import symmetric_eigenvalues
+from urdfgenpy_ros.validation.findings import Findings, link_path
+
+TOLERANCE = 1e-9  # relative, for positive-definiteness and the triangle inequality
+IMPLAUSIBLE = 100.0  # a tensor this many times off the geometry's is a unit slip
+
+
+def check_inertia(robot: Robot, findings: Findings) -> None:
+    """Check masses, tensors, the root's inertia and links Gazebo would drop."""
+    parent_joint = {joint.child: joint for joint in robot.joints}
+    roots = {link.name for link in robot.roots}
+    below, moving_below = _subtrees(robot)
+    for link in robot.links:
+        joint = parent_joint.get(link.name)
+        moves = joint is not None and joint.type is not JointType.FIXED
+        inertial = link.inertial
+        where, element = link_path(link.name) + '/inertial', f'link {link.name!r}'
+        if inertial is None:
+            count = below.get(link.name, 0)
+            dropped = "Gazebo's URDF conversion drops it with its joint" + (
+                f' and the {count} link(s) below it' if count else '')
+            if moves:
+                findings.add('I201', link, element, link_path(link.name),
+                             f'moves ({joint.type} joint {joint.name!r}) but has no '
+                             '<inertial>', f'{dropped}, and MuJoCo refuses it: give it a '
+                             'mass and inertia (Inertial.from_geometry)')
+            elif joint is not None and moving_below.get(link.name, False):
+                findings.add('I206', link, element, link_path(link.name),
+                             'has no <inertial>', f'{dropped}: give it a mass and inertia')
+            continue
+        if link.name in roots and inertial.mass > 0.0 and len(robot.links) > 1:
+            findings.add('I205', inertial, element, where, 'the root link has an inertia',
+                         'KDL ignores it (and warns): add a massless root link, e.g. '
+                         'base_footprint, joined by a fixed joint', 'inertial')
+        if not inertial.mass > 0.0:
+            if moves:
+                findings.add('I201', inertial, element, where + '/mass',
+                             f'mass is {inertial.mass:g} on a link that moves',
+                             'give it a positive mass (kg)', 'mass')
+            continue
+        if _check_tensor(inertial, element, where, findings):
+            _check_plausible(link, inertial, element, where, findings)
+
+
+def _subtrees(robot: Robot) -> tuple[dict[str, int], dict[str, bool]]:
+    """Return, per link, how many links hang below it and whether any joint below moves."""
+    count: dict[str, int] = {}
+    moving: dict[str, bool] = {}
+    for root in robot.roots:
+        order = list(robot.walk(root))
+        for joint, link in reversed(order):  # children before parents
+            count.setdefault(link.name, 0)
+            moving.setdefault(link.name, False)
+            if joint is not None:
+                count[joint.parent] = count.get(joint.parent, 0) + count[link.name] + 1
+                moving[joint.parent] = (moving.get(joint.parent, False) or moving[link.name]
+                                        or joint.type is not JointType.FIXED)
+    return count, moving
+
+
+def _check_tensor(inertial: Inertial, element: str, where: str,
+                  findings: Findings) -> bool:
+    values = (inertial.ixx, inertial.ixy, inertial.ixz, inertial.iyy, inertial.iyz,
+              inertial.izz)
+    if not all(math.isfinite(value) for value in values):
+        return False  # reported as R305
+    moments = symmetric_eigenvalues(inertial.tensor)
+    scale = max(abs(moment) for moment in moments) or 1.0
+    if moments[0] <= TOLERANCE * scale:
+        findings.add('I202', inertial, element, where + '/inertia',
+                     'principal moments ' + ', '.join(f'{m:.4g}' for m in moments)
+                     + ' are not all positive',
+                     'every body has positive moments: compute the tensor from the '
+                     'geometry (Inertial.from_geometry) or from CAD', 'inertia')
+        return False
+    small, middle, large = moments
+    if small + middle < large * (1.0 - TOLERANCE):
+        findings.add('I203', inertial, element, where + '/inertia',
+                     f'principal moments {small:.4g} + {middle:.4g} < {large:.4g}',
+                     'no rigid body has that: check the tensor (MuJoCo refuses it)',
+                     'inertia')
+        return False
+    return True
+
+
+def _check_plausible(link: Link, inertial: Inertial, element: str, where: str,
+                     findings: Findings) -> None:
+    shape = next((item.geometry for item in (*link.collisions, *link.visuals)
+                  if isinstance(item.geometry, (Box, Cylinder, Sphere))), None)
+    if shape is None:
+        return
+    if isinstance(shape, Box):
+        expected = box_tensor(inertial.mass, *shape.size)
+    elif isinstance(shape, Cylinder):
+        expected = cylinder_tensor(inertial.mass, shape.radius, shape.length)
+    else:
+        expected = sphere_tensor(inertial.mass, shape.radius)
+    trace = inertial.ixx + inertial.iyy + inertial.izz
+    expected_trace = expected[0] + expected[3] + expected[5]
+    ratio = trace / expected_trace
+    if ratio > IMPLAUSIBLE or ratio < 1.0 / IMPLAUSIBLE:
+        findings.add('I204', inertial, element, where + '/inertia',
+                     f'inertia is {ratio:.3g} times that of its {type(shape).__name__.lower()}'
+                     f' of mass {inertial.mass:g}',
+                     'millimetres for metres, or grams for kilograms? '
+                     'Inertial.from_geometry gives the solid value', 'inertia')

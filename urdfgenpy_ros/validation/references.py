@@ -1,0 +1,124 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""References and values: materials, mesh files, sizes, and numbers that are not finite."""
+
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+from typing import Any
+
+from urdfgenpy_ros.geometry import Box, Cylinder, Mesh, Sphere
+from urdfgenpy_ros.resources import PackageResolver, ResourceError
+from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
+
+
+def check_references(robot: Robot, findings: Findings, resolver: PackageResolver | None,
+                     base: Path | None) -> None:
+    """Check materials, meshes (when a resolver is given), sizes and non-finite numbers."""
+    for link in robot.links:
+        for kind, shapes in (('visual', link.visuals), ('collision', link.collisions)):
+            for number, shape in enumerate(shapes, start=1):
+                where = f'{link_path(link.name)}/{kind}[{number}]'
+                element = f'link {link.name!r}'
+                _check_geometry(shape.geometry, element, where, findings)
+                if isinstance(shape.geometry, Mesh) and resolver is not None:
+                    missing = 'R302' if kind == 'collision' else 'R306'
+                    _check_mesh(shape.geometry, element, where, findings, resolver, base,
+                                missing)
+                material = getattr(shape, 'material', None)
+                if (material is not None and material.is_reference
+                        and not robot._materials.get(material.name)):
+                    findings.add('R301', material, element, where + '/material',
+                                 f'material {material.name!r} is not defined',
+                                 f'add <material name="{material.name}"><color rgba=.../>'
+                                 '</material> to the robot', 'material')
+    _check_finite(robot, findings)
+
+
+def _check_geometry(geometry: Any, element: str, where: str, findings: Findings) -> None:
+    sizes = {Box: ('length', 'width', 'height'), Cylinder: ('radius', 'length'),
+             Sphere: ('radius',)}.get(type(geometry), ())
+    for name in sizes:
+        value = getattr(geometry, name)
+        if math.isfinite(value) and value <= 0.0:
+            findings.add('R304', geometry, element, f'{where}/geometry',
+                         f'{type(geometry).__name__.lower()} {name} is {value:g}',
+                         'sizes are positive lengths in metres')
+    if isinstance(geometry, Mesh) and geometry.scale is not None and 0.0 in geometry.scale:
+        findings.add('R304', geometry, element, f'{where}/geometry',
+                     f'mesh scale {geometry.scale} has a zero',
+                     'a zero scale flattens the mesh: use 1 (or 0.001 for millimetres)',
+                     'mesh')
+
+
+def _check_mesh(mesh: Mesh, element: str, where: str, findings: Findings,
+                resolver: PackageResolver, base: Path | None, missing: str) -> None:
+    try:
+        path = resolver.resolve(mesh.filename, base)
+    except ResourceError as error:
+        message = str(error).split(' (', 1)[0]
+        if 'not found' in message:
+            code, hint = 'R303', ('source the workspace that holds it, or pass its folder to '
+                                  'validate(search_paths=...) or --package-path')
+        else:
+            code, hint = missing, 'fix the file name or add the file'
+        findings.add(code, mesh, element, f'{where}/geometry/mesh', message, hint, 'mesh')
+        return
+    if not os.access(path, os.R_OK) or not path.is_file():
+        findings.add(missing, mesh, element, f'{where}/geometry/mesh',
+                     f'{mesh.filename!r} resolves to {path}, which is not a readable file',
+                     'check the path and its permissions', 'mesh')
+
+
+def _check_finite(robot: Robot, findings: Findings) -> None:
+    for link in robot.links:
+        parts: list[tuple[str, Any]] = []
+        if link.inertial is not None:
+            parts.append(('inertial', link.inertial))
+        parts += [(f'visual[{n}]', v) for n, v in enumerate(link.visuals, start=1)]
+        parts += [(f'collision[{n}]', c) for n, c in enumerate(link.collisions, start=1)]
+        for name, part in parts:
+            _report_non_finite(part, f'link {link.name!r}', f'{link_path(link.name)}/{name}',
+                               findings)
+    for joint in robot.joints:
+        _report_non_finite(joint, f'joint {joint.name!r}', joint_path(joint.name), findings)
+
+
+def _numbers(item: Any, prefix: str = '') -> list[tuple[str, float]]:
+    """Return ``(field path, value)`` for every number inside a model element."""
+    found = []
+    for name in getattr(item, '__dataclass_fields__', {}):
+        if name in ('source', 'extras', 'text', 'solid', 'extensions'):
+            continue
+        value = getattr(item, name)
+        if isinstance(value, float):
+            found.append((f'{prefix}{name}', value))
+        elif isinstance(value, tuple) and value and isinstance(value[0], float):
+            found += [(f'{prefix}{name}', number) for number in value]
+        elif hasattr(value, '__dataclass_fields__'):
+            found += _numbers(value, f'{prefix}{name}.')
+    return found
+
+
+def _report_non_finite(item: Any, element: str, where: str, findings: Findings) -> None:
+    for field, value in _numbers(item):
+        if not math.isfinite(value):
+            part = field.split('.', 1)[0] if '.' in field else None
+            findings.add('R305', item, element, f'{where}/{part}' if part else where,
+                         f'{field} is {value}', 'write a finite number', part)
+            return
