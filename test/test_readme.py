@@ -21,13 +21,11 @@ from pathlib import Path
 import re
 
 from helpers import assert_check_urdf_accepts, REPO
-import pytest
 
 BLOCKS = re.findall(r'```python\n(.*?)```', (REPO / 'README.md').read_text(), re.S)
 
 
-@pytest.mark.parametrize('code', BLOCKS)
-def test_readme_example_runs(code: str, tmp_path: Path) -> None:
+def test_readme_examples_run_in_order(tmp_path: Path) -> None:
     # The files the reading example opens.
     from urdfgenpy_ros.examples import pan_tilt_unit
     from urdfgenpy_ros import Inertial
@@ -42,8 +40,10 @@ def test_readme_example_runs(code: str, tmp_path: Path) -> None:
         '</joint></robot>')
     cwd = os.getcwd()
     os.chdir(tmp_path)
+    namespace: dict = {}
     try:
-        exec(compile(code, 'README.md', 'exec'), {})
+        for code in BLOCKS:
+            exec(compile(code, 'README.md', 'exec'), namespace)
     finally:
         os.chdir(cwd)
     for urdf in tmp_path.glob('*.urdf'):
