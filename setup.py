@@ -52,6 +52,7 @@ setup(
     entry_points={
         'console_scripts': [
             'urdfgenpy = urdfgenpy_ros.cli:main',
+            'publisher = urdfgenpy_ros.publisher.node:console_main',
         ],
     },
 )

@@ -12,13 +12,16 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""Shared fixtures: the corpus, the example robots, a scratch directory."""
+"""Shared fixtures: the corpus, example robots, a colcon workspace, a ROS graph."""
 
 from __future__ import annotations
 
 from pathlib import Path
+import shutil
+import subprocess
+import sys
 
-from helpers import CORPUS, full_robot
+from helpers import CORPUS, full_robot, REPO, require_module
 import pytest
 
 from urdfgenpy_ros.examples import pan_tilt_unit
@@ -43,3 +46,30 @@ def ptu() -> Robot:
 def every_element() -> Robot:
     """Return a robot using every element and attribute of the model."""
     return full_robot()
+
+
+_SKIP = shutil.ignore_patterns('.git', '.venv', 'build', 'install', 'log', '__pycache__',
+                               '.pytest_cache', '.hypothesis', '*.egg-info')
+
+
+@pytest.fixture(scope='session')
+def colcon_workspace(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """Return a workspace in which colcon has built this repository (once per session)."""
+    require_module('colcon_core')
+    require_module('ament_index_python')
+    root = tmp_path_factory.mktemp('ws')
+    shutil.copytree(REPO, root / 'src' / 'urdfgenpy_ros', ignore=_SKIP)
+    colcon = str(Path(sys.executable).with_name('colcon'))
+    result = subprocess.run([colcon, 'build', '--event-handlers', 'console_cohesion-'],
+                            cwd=root, capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stdout + result.stderr
+    return root
+
+
+@pytest.fixture
+def graph():
+    """Return an isolated ROS graph with a listener node; stop everything afterwards."""
+    from ros_helpers import Graph
+    ros = Graph()
+    yield ros
+    ros.close()

@@ -17,33 +17,10 @@
 from __future__ import annotations
 
 from pathlib import Path
-import shutil
 import subprocess
 import sys
 
-from helpers import assert_check_urdf_accepts, REPO, require_module
-import pytest
-
-_SKIP = shutil.ignore_patterns('.git', '.venv', 'build', 'install', 'log', '__pycache__',
-                               '.pytest_cache', '.hypothesis', '*.egg-info')
-
-
-def _colcon() -> str:
-    require_module('colcon_core')
-    require_module('ament_index_python')
-    return str(Path(sys.executable).with_name('colcon'))
-
-
-@pytest.fixture(scope='module')
-def workspace(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """Return a workspace in which colcon has built this repository."""
-    colcon = _colcon()
-    root = tmp_path_factory.mktemp('ws')
-    shutil.copytree(REPO, root / 'src' / 'urdfgenpy_ros', ignore=_SKIP)
-    result = subprocess.run([colcon, 'build', '--event-handlers', 'console_cohesion-'],
-                            cwd=root, capture_output=True, text=True, timeout=600)
-    assert result.returncode == 0, result.stdout + result.stderr
-    return root
+from helpers import assert_check_urdf_accepts
 
 
 def _sourced(workspace: Path, command: str) -> subprocess.CompletedProcess:
@@ -52,15 +29,18 @@ def _sourced(workspace: Path, command: str) -> subprocess.CompletedProcess:
                           text=True, timeout=120)
 
 
-def test_install_tree_has_the_ros_layout(workspace: Path) -> None:
+def test_install_tree_has_the_ros_layout(colcon_workspace: Path) -> None:
+    workspace = colcon_workspace
     share = workspace / 'install' / 'urdfgenpy_ros' / 'share'
     assert (share / 'ament_index' / 'resource_index' / 'packages' / 'urdfgenpy_ros').is_file()
     assert (share / 'urdfgenpy_ros' / 'package.xml').is_file()
-    assert (workspace / 'install' / 'urdfgenpy_ros' / 'lib' / 'urdfgenpy_ros' /
-            'urdfgenpy').is_file()
+    for executable in ('urdfgenpy', 'publisher'):
+        assert (workspace / 'install' / 'urdfgenpy_ros' / 'lib' / 'urdfgenpy_ros' /
+                executable).is_file()
 
 
-def test_ament_index_finds_urdfgenpy_and_it_runs(workspace: Path) -> None:
+def test_ament_index_finds_urdfgenpy_and_it_runs(colcon_workspace: Path) -> None:
+    workspace = colcon_workspace
     # What `ros2 run urdfgenpy_ros urdfgenpy` does: the package prefix from the ament
     # index, then lib/<package>/<executable>.
     locate = ('python3 -c "from ament_index_python.packages import get_package_prefix; '

@@ -90,7 +90,7 @@ VERDICTS = {
     'S003': (False, False), 'S002': (False, True), 'S004': (False, False),
     'S005': (False, False), 'S006': (False, False), 'S007': (True, False),
     'S008': (False, True), 'J101': (True, False), 'J103': (False, True),
-    'I201': (True, False), 'I201b': (True, False), 'I202': (True, False),
+    'I201': (True, False), 'I207': (True, False), 'I202': (True, False),
     'I203': (True, False), 'R302': (True, False), 'R303': (True, False),
     'R305': (False, True),
     # Errors both accept silently: the check is the only thing that catches them.
@@ -125,9 +125,9 @@ def test_models_built_in_python_name_the_element_path() -> None:
     robot = Robot('r').add_link(Link('base_link')).add_link(Link('arm'))
     robot.add_joint(Joint('j', 'revolute', 'base_link', 'arm', axis=(0, 0, 1)))
     codes = {finding.code: finding for finding in robot.validate()}
-    assert set(codes) == {'J103', 'I201'}
+    assert set(codes) == {'J103', 'I207'}
     assert str(codes['J103']).startswith("/robot/joint[@name='j']: error J103 joint 'j': ")
-    assert codes['I201'].location.line is None
+    assert codes['I207'].location.line is None
 
 
 def test_strict_raises_the_first_error_only() -> None:

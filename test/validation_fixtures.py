@@ -133,9 +133,9 @@ DEFECTS: dict[str, tuple[set[str], list[tuple[str, str]]]] = {
                         ('<parent link="base_link"/>', '<parent link="mount"/>'),
                         (_END, '<joint name="fix" type="fixed"><parent link="base_link"/>'
                                '<child link="mount"/></joint>\n' + _END)]),
-    'I201b': ({'I201'}, [('<link name="hand">', '<link name="hand"/><!--D--><unused>'),
-                         ('</collision>\n  </link>\n  <joint name="shoulder"',
-                          '</collision>\n  </unused>\n  <joint name="shoulder"')]),
+    'I207': ({'I207'}, [('<link name="hand">', '<link name="hand"/><!--D--><unused>'),
+                        ('</collision>\n  </link>\n  <joint name="shoulder"',
+                         '</collision>\n  </unused>\n  <joint name="shoulder"')]),
     'R301': ({'R301'}, [('<material name="grey"/>', '<material name="blue"/><!--D-->')]),
     'R302': ({'R302'}, [('<geometry><sphere radius="0.03"/></geometry>',
                          '<geometry><mesh filename="missing.stl"/><!--D--></geometry>')]),

@@ -59,6 +59,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'I204': (W, 'inertia implausible for the link geometry'),
     'I205': (W, 'inertia on the root link'),
     'I206': (W, 'link without inertial above moving links'),
+    'I207': (W, 'moving link without inertial (fine for RViz, not for simulation)'),
     # references and values
     'R301': (W, 'material not defined'),
     'R302': (E, 'collision mesh file not found'),

@@ -45,10 +45,11 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
             dropped = "Gazebo's URDF conversion drops it with its joint" + (
                 f' and the {count} link(s) below it' if count else '')
             if moves:
-                findings.add('I201', link, element, link_path(link.name),
+                findings.add('I207', link, element, link_path(link.name),
                              f'moves ({joint.type} joint {joint.name!r}) but has no '
-                             '<inertial>', f'{dropped}, and MuJoCo refuses it: give it a '
-                             'mass and inertia (Inertial.from_geometry)')
+                             '<inertial>', f'RViz does not mind; {dropped}, and MuJoCo '
+                             'refuses it: give it a mass and inertia (Inertial.from_geometry)'
+                             )
             elif joint is not None and moving_below.get(link.name, False):
                 findings.add('I206', link, element, link_path(link.name),
                              'has no <inertial>', f'{dropped}: give it a mass and inertia')

@@ -1,0 +1,258 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+``ros2 run urdfgenpy_ros publisher``: load or build a robot, validate it, publish it.
+
+Publishes ``robot_description`` (std_msgs/String, reliable, transient local, depth 1:
+late subscribers get it) and ``joint_states`` (sensor_msgs/JointState) at ``rate`` Hz,
+with joint_state_publisher's parameters; serves ``~/reload`` (std_srvs/Trigger) and,
+with ``watch``, reloads when the model or a file it includes changes.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from typing import Any
+
+import rclpy
+from rcl_interfaces.msg import ParameterDescriptor, ParameterType, SetParametersResult
+from rclpy.executors import ExternalShutdownException
+from rclpy.node import Node
+from rclpy.parameter import Parameter
+from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+from sensor_msgs.msg import JointState
+from std_msgs.msg import String
+from std_srvs.srv import Trigger
+
+from urdfgenpy_ros.errors import Severity, UrdfgenpyError
+from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
+from urdfgenpy_ros.publisher.model_source import load_model
+from urdfgenpy_ros.robot import Robot
+
+_STRINGS = ParameterType.PARAMETER_STRING_ARRAY
+_PARAMETERS: dict[str, tuple[Any, int | None, str]] = {
+    'model': ('', ParameterType.PARAMETER_STRING,
+              '.urdf, .xacro, package.module:function, or empty for the example robot'),
+    'xacro_args': ([], _STRINGS, 'xacro arguments as name:=value'),
+    'package_paths': ([], _STRINGS, 'folders holding ROS packages, for $(find) and meshes'),
+    'rate': (10, None, 'joint_states per second (integer or double)'),
+    'source_list': ([], _STRINGS, 'JointState topics whose values are merged'),
+    'publish_default_positions': (True, ParameterType.PARAMETER_BOOL, ''),
+    'publish_default_velocities': (False, ParameterType.PARAMETER_BOOL, ''),
+    'publish_default_efforts': (False, ParameterType.PARAMETER_BOOL, ''),
+    'use_mimic_tags': (True, ParameterType.PARAMETER_BOOL, ''),
+    'use_smallest_joint_limits': (True, ParameterType.PARAMETER_BOOL, ''),
+    'delta': (0.0, ParameterType.PARAMETER_DOUBLE, 'move every joint by this each tick'),
+    'publish_description': (True, ParameterType.PARAMETER_BOOL,
+                            'false: leave robot_description to robot_state_publisher'),
+    'watch': (False, ParameterType.PARAMETER_BOOL, 'reload when the model files change'),
+}
+
+
+class PublisherNode(Node):
+    """Publish a validated robot description and its joint states."""
+
+    def __init__(self, **kwargs: Any) -> None:
+        super().__init__('urdfgenpy_publisher',
+                         automatically_declare_parameters_from_overrides=True, **kwargs)
+        for name, (default, kind, description) in _PARAMETERS.items():
+            descriptor = ParameterDescriptor(description=description)
+            if kind is None:
+                descriptor.dynamic_typing = True
+            else:
+                descriptor.type = kind
+            if not self.has_parameter(name):
+                self.declare_parameter(name, default, descriptor)
+        self.values = {name: self.get_parameter(name).value for name in _PARAMETERS}
+        rate = self.values['rate']
+        if isinstance(rate, bool) or not isinstance(rate, (int, float)) or not rate > 0:
+            raise UrdfgenpyError(f"parameter 'rate': {rate!r} is not a positive number of Hz")
+        self.robot, self.watched = self._load()
+        self.description = self.robot.to_urdf()
+        self.states = self._joint_states(self.robot)
+        self._updating_description = False
+        self.declare_parameter('robot_description', self.description, ParameterDescriptor(
+            description='the published URDF (read-only: change the model and call ~/reload)'))
+        self.add_on_set_parameters_callback(self._refuse_description_edits)
+        latched = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE,
+                             durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        self.description_publisher = None
+        if self.values['publish_description']:
+            self.description_publisher = self.create_publisher(String, 'robot_description',
+                                                               latched)
+            self.description_publisher.publish(String(data=self.description))
+        self.joint_publisher = self.create_publisher(JointState, 'joint_states', 10)
+        self.message = JointState()
+        for topic in self.values['source_list']:
+            self.create_subscription(JointState, topic, self._merge, 10)
+        self.create_service(Trigger, '~/reload', self._reload_service)
+        self.create_timer(1.0 / float(rate), self._publish_joint_states)
+        self._stamps = self._modification_times()
+        if self.values['watch']:
+            self.create_timer(0.5, self._watch)
+        self._warned: set[str] = set()
+        self.get_logger().info(
+            f'publishing {self.robot.name!r}: {len(self.robot.links)} links, '
+            f'{len(self.states.names)} joint states at {rate} Hz'
+            + ('' if self.description_publisher else ' (robot_description left to '
+               'robot_state_publisher)'))
+
+    # ---- model ------------------------------------------------------------------------
+
+    def _load(self) -> tuple[Robot, list[str]]:
+        robot, watched = load_model(self.values['model'], self.values['xacro_args'],
+                                    self.values['package_paths'])
+        findings = robot.validate(search_paths=self.values['package_paths'])
+        errors = [finding for finding in findings if finding.severity is Severity.ERROR]
+        for finding in findings:
+            if finding.severity is Severity.ERROR:
+                self.get_logger().error(str(finding))
+            else:
+                self.get_logger().warning(str(finding))
+        if errors:
+            raise UrdfgenpyError(f'{len(errors)} validation error(s) in the model: fix them '
+                                 '(listed above) before publishing')
+        return robot, watched
+
+    def _joint_states(self, robot: Robot) -> JointStates:
+        zeros = {name: parameter.value
+                 for name, parameter in self.get_parameters_by_prefix('zeros').items()}
+        options = JointStateOptions(
+            zeros=zeros, use_mimic_tags=self.values['use_mimic_tags'],
+            use_smallest_joint_limits=self.values['use_smallest_joint_limits'],
+            publish_default_positions=self.values['publish_default_positions'],
+            publish_default_velocities=self.values['publish_default_velocities'],
+            publish_default_efforts=self.values['publish_default_efforts'])
+        return JointStates(robot, options)
+
+    def reload(self) -> tuple[bool, str]:
+        """Load the model again; publish it if valid and changed, else keep the last one."""
+        try:
+            robot, watched = self._load()
+            states = self._joint_states(robot)
+        except UrdfgenpyError as error:
+            self.get_logger().error(f'reload failed, still publishing the last good model: '
+                                    f'{error}')
+            return False, str(error)
+        previous = dict(self.states.free)
+        for name, joint in states.free.items():
+            if name in previous:
+                joint.position = states.clamp(name, previous[name].position)
+        self.robot, self.watched, self.states = robot, watched, states
+        self._stamps = self._modification_times()
+        description = robot.to_urdf()
+        if description == self.description:
+            return True, 'model unchanged'
+        self.description = description
+        self._updating_description = True
+        try:
+            self.set_parameters([Parameter('robot_description', value=description)])
+        finally:
+            self._updating_description = False
+        if self.description_publisher is not None:
+            self.description_publisher.publish(String(data=description))
+        self.get_logger().info(f'published the reloaded model {robot.name!r}')
+        return True, 'published the reloaded model'
+
+    def _refuse_description_edits(self, parameters: list[Parameter]) -> SetParametersResult:
+        if any(p.name == 'robot_description' for p in parameters) and \
+                not self._updating_description:
+            return SetParametersResult(successful=False, reason='robot_description is '
+                                       'read-only: change the model and call ~/reload')
+        return SetParametersResult(successful=True)
+
+    def _reload_service(self, request: Trigger.Request,
+                        response: Trigger.Response) -> Trigger.Response:
+        response.success, response.message = self.reload()
+        return response
+
+    def _modification_times(self) -> dict[str, float]:
+        stamps = {}
+        for file in self.watched:
+            try:
+                stamps[file] = os.stat(file).st_mtime_ns
+            except OSError:
+                stamps[file] = -1
+        return stamps
+
+    def _watch(self) -> None:
+        if self._modification_times() != self._stamps:
+            self._stamps = self._modification_times()
+            self.get_logger().info('model files changed: reloading')
+            self.reload()
+
+    # ---- joint states -----------------------------------------------------------------
+
+    def _merge(self, message: JointState) -> None:
+        try:
+            unknown = self.states.merge(message.name, message.position, message.velocity,
+                                        message.effort)
+        except ValueError as error:  # throttled per kind: each kind is its own call site
+            if 'NaN' in str(error):
+                self.get_logger().warning(f'ignored a JointState: {error}',
+                                          throttle_duration_sec=5.0)
+            else:
+                self.get_logger().warning(f'ignored a JointState: {error}',
+                                          throttle_duration_sec=5.0)
+            return
+        fresh = [name for name in unknown if name not in self._warned]
+        if fresh:
+            self._warned.update(fresh)
+            self.get_logger().warning('ignored unknown joint(s): ' + ', '.join(fresh))
+
+    def _publish_joint_states(self) -> None:
+        if self.values['delta'] > 0.0:
+            self.states.step(self.values['delta'])
+        names, positions, velocities, efforts = self.states.message_arrays()
+        if not names:
+            return
+        message = self.message
+        message.header.stamp = self.get_clock().now().to_msg()
+        message.name, message.position = names, positions
+        message.velocity, message.effort = velocities, efforts
+        self.joint_publisher.publish(message)
+
+
+def main(args: list[str] | None = None) -> int:
+    """Run the node until Ctrl-C; return 1 (one log line) when it cannot start."""
+    rclpy.init(args=args)
+    node = None
+    try:
+        node = PublisherNode()
+        rclpy.spin(node)
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass
+    except UrdfgenpyError as error:
+        rclpy.logging.get_logger('urdfgenpy_publisher').error(str(error))
+        return 1
+    except rclpy.exceptions.InvalidParameterTypeException as error:
+        rclpy.logging.get_logger('urdfgenpy_publisher').error(
+            f"bad parameter: {error} (see the README for each parameter's type)")
+        return 1
+    finally:
+        if node is not None:
+            node.destroy_node()
+        rclpy.try_shutdown()
+    return 0
+
+
+def console_main() -> None:
+    """Entry point of the ``publisher`` executable: exit with main()'s status."""
+    sys.exit(main())
+
+
+if __name__ == '__main__':
+    console_main()
