@@ -74,6 +74,7 @@ class JointStates:
                 continue
             self.free[joint.name] = self._free_joint(joint)
         self._resolved = {name: self._resolve(name) for name in self.mimics}
+        self.version = 0  # changes whenever a value does, so callers can cache a message
 
     def _free_joint(self, joint) -> _Free:
         continuous = joint.type is JointType.CONTINUOUS
@@ -132,6 +133,7 @@ class JointStates:
             if any(math.isnan(value) for value in values):
                 raise ValueError(f'{label} holds NaN')
         unknown = []
+        self.version += 1
         for index, name in enumerate(names):
             joint = self.free.get(name)
             if joint is None:
@@ -148,6 +150,7 @@ class JointStates:
 
     def step(self, delta: float) -> None:
         """Move every free joint by ``delta``, bouncing at limits (the ``delta`` option)."""
+        self.version += 1
         for joint in self.free.values():
             if joint.forward:
                 joint.position += delta

@@ -96,6 +96,9 @@ class PublisherNode(Node):
             self.description_publisher.publish(String(data=self.description))
         self.joint_publisher = self.create_publisher(JointState, 'joint_states', 10)
         self.message = JointState()
+        self._message_states: JointStates | None = None
+        self._message_version = -1
+        self._delta = float(self.values['delta'])
         for topic in self.values['source_list']:
             self.create_subscription(JointState, topic, self._merge, 10)
         self.create_service(Trigger, '~/reload', self._reload_service)
@@ -214,16 +217,17 @@ class PublisherNode(Node):
             self.get_logger().warning('ignored unknown joint(s): ' + ', '.join(fresh))
 
     def _publish_joint_states(self) -> None:
-        if self.values['delta'] > 0.0:
-            self.states.step(self.values['delta'])
-        names, positions, velocities, efforts = self.states.message_arrays()
-        if not names:
-            return
+        states = self.states
+        if self._delta > 0.0:
+            states.step(self._delta)
         message = self.message
-        message.header.stamp = self.get_clock().now().to_msg()
-        message.name, message.position = names, positions
-        message.velocity, message.effort = velocities, efforts
-        self.joint_publisher.publish(message)
+        if states is not self._message_states or states.version != self._message_version:
+            self._message_states, self._message_version = states, states.version
+            message.name, message.position, message.velocity, message.effort = \
+                states.message_arrays()  # refilled only when a value changed
+        if message.name:
+            message.header.stamp = self.get_clock().now().to_msg()
+            self.joint_publisher.publish(message)
 
 
 def main(args: list[str] | None = None) -> int:
