@@ -44,7 +44,7 @@ import sys
 import tempfile
 import time
 
-_FLOOR = '''
+_FLOOR = """
 import sys, rclpy
 from rclpy.node import Node
 from sensor_msgs.msg import JointState
@@ -61,7 +61,7 @@ try:
     rclpy.spin(node)
 except KeyboardInterrupt:
     pass
-'''
+"""
 
 
 def humanoid(path: Path) -> list[str]:
@@ -172,11 +172,10 @@ def main() -> None:
     args = parser.parse_args()
     corpus = Path(__file__).resolve().parents[2] / 'shared' / 'corpus'
     folder = Path(tempfile.mkdtemp())
-    robots = {'64-joint (jsp test)': (corpus / 'joint_state_publisher/test/64_joint_robot.urdf',
-                                      [f'joint{n}' for n in range(1, 65)]),
-              'humanoid (30 joints)': (folder / 'humanoid.urdf', None)}
-    robots['humanoid (30 joints)'] = (folder / 'humanoid.urdf', humanoid(folder /
-                                                                        'humanoid.urdf'))
+    jsp_robot = corpus / 'joint_state_publisher/test/64_joint_robot.urdf'
+    robots = {'64-joint (jsp test)': (jsp_robot, [f'joint{n}' for n in range(1, 65)]),
+              'humanoid (30 joints)': (folder / 'humanoid.urdf',
+                                       humanoid(folder / 'humanoid.urdf'))}
     jsp = (f'import sys; sys.path.insert(0, {str(args.jsp)!r}); '
            'from joint_state_publisher.joint_state_publisher import main; main()')
     print('| robot | Hz | contender | start-up to joint_states s | to robot_description s |'
