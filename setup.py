@@ -27,7 +27,7 @@ setup(
         ('share/' + PACKAGE, ['package.xml']),
     ] + _tree('templates'),
     python_requires='>=3.10',
-    install_requires=['setuptools', 'lxml>=4.5', 'click>=8.0'],
+    install_requires=['setuptools', 'lxml>=4.5', 'click>=8.0', 'PyYAML'],
     extras_require={
         'xacro': ['xacro>=2.0', 'ros-jazzy-ament-index-python'],
         'ros': [

@@ -12,13 +12,77 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""Small linear-algebra helpers that need no numpy: symmetric 3x3 eigenvalues."""
+"""Small linear-algebra helpers that need no numpy: 4x4 transforms, rpy, eigenvalues."""
 
 from __future__ import annotations
 
 import math
 
 Matrix3 = tuple[tuple[float, float, float], ...]
+Matrix4 = list[list[float]]
+
+IDENTITY4: Matrix4 = [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0],
+                      [0.0, 0.0, 0.0, 1.0]]
+
+
+def multiply(*matrices: Matrix4) -> Matrix4:
+    """Return the product of 4x4 homogeneous transforms, left to right."""
+    result = [row[:] for row in IDENTITY4]
+    for matrix in matrices:
+        result = [[sum(result[i][k] * matrix[k][j] for k in range(4)) for j in range(4)]
+                  for i in range(4)]
+    return result
+
+
+def rotation_x(angle: float) -> Matrix4:
+    """Return a rotation about x."""
+    c, s = math.cos(angle), math.sin(angle)
+    return [[1.0, 0.0, 0.0, 0.0], [0.0, c, -s, 0.0], [0.0, s, c, 0.0], [0.0, 0.0, 0.0, 1.0]]
+
+
+def rotation_y(angle: float) -> Matrix4:
+    """Return a rotation about y."""
+    c, s = math.cos(angle), math.sin(angle)
+    return [[c, 0.0, s, 0.0], [0.0, 1.0, 0.0, 0.0], [-s, 0.0, c, 0.0], [0.0, 0.0, 0.0, 1.0]]
+
+
+def rotation_z(angle: float) -> Matrix4:
+    """Return a rotation about z."""
+    c, s = math.cos(angle), math.sin(angle)
+    return [[c, -s, 0.0, 0.0], [s, c, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]]
+
+
+def translation(x: float = 0.0, y: float = 0.0, z: float = 0.0) -> Matrix4:
+    """Return a translation."""
+    return [[1.0, 0.0, 0.0, x], [0.0, 1.0, 0.0, y], [0.0, 0.0, 1.0, z], [0.0, 0.0, 0.0, 1.0]]
+
+
+def from_xyz_rpy(xyz: tuple[float, float, float],
+                 rpy: tuple[float, float, float]) -> Matrix4:
+    """Return the transform of a URDF origin: translate, then Rz(yaw) Ry(pitch) Rx(roll)."""
+    return multiply(translation(*xyz), rotation_z(rpy[2]), rotation_y(rpy[1]),
+                    rotation_x(rpy[0]))
+
+
+def to_xyz_rpy(matrix: Matrix4, snap: float = 1e-15) -> tuple[tuple[float, float, float],
+                                                              tuple[float, float, float]]:
+    """
+    Return the URDF ``xyz`` and fixed-axis ``rpy`` of a homogeneous transform.
+
+    At the pitch = +-pi/2 singularity, roll is 0 and yaw carries the whole rotation about
+    z. Values within ``snap`` of 0 are written as 0 (cos(pi/2) is 6e-17 in floating point).
+    """
+    def clean(value: float) -> float:
+        return 0.0 if abs(value) < snap else value
+
+    (r00, r01, r02, x), (r10, r11, r12, y), (r20, r21, r22, z) = matrix[:3]
+    cosine = math.hypot(r00, r10)
+    if cosine > 1e-12:
+        roll, pitch, yaw = math.atan2(r21, r22), math.atan2(-r20, cosine), math.atan2(r10, r00)
+    else:  # gimbal lock: pitch = +-pi/2
+        pitch = math.copysign(math.pi / 2.0, -r20)
+        roll, yaw = 0.0, math.atan2(-r01, r11)
+    return ((clean(x), clean(y), clean(z)), (clean(roll), clean(pitch), clean(yaw)))
 
 
 def symmetric_eigenvalues(matrix: Matrix3) -> tuple[float, float, float]:

@@ -25,6 +25,7 @@ if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
 
 WRITERS = {'.urdf': 'urdf', '.xacro': 'xacro'}
+DH_SUFFIXES = ('.yaml', '.yml', '.csv')
 
 
 def format_of(path: str | PathLike[str]) -> str:
@@ -43,9 +44,13 @@ def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
     """
     Read a robot from ``path`` in the format its suffix names.
 
-    ``mappings`` are Xacro arguments; ``search_paths`` folders holding ROS packages.
+    ``mappings`` are Xacro arguments; ``search_paths`` folders holding ROS packages. A DH
+    table (.yaml, .yml, .csv) gives its skeleton.
     """
     from urdfgenpy_ros.robot import Robot
+    if Path(path).suffix.lower() in DH_SUFFIXES:
+        from urdfgenpy_ros.dh import DHTable
+        return DHTable.from_file(path).to_robot(Path(path).name.split('.')[0])
     kind = format_of(path)
     if kind == 'urdf':
         return Robot.from_urdf(path)

@@ -36,6 +36,7 @@ if TYPE_CHECKING:
 
 XACRO_NS = 'http://www.ros.org/wiki/xacro'
 _EXPR = '\x00'  # stands for '$' in expressions we mean; every other '$' is escaped
+ZERO = "'0 0 0'"  # a Python string literal inside an xacro expression
 
 _MACROS = {
     'box': ('mass x y z', ('mass * (y * y + z * z) / 12.0', 'mass * (x * x + z * z) / 12.0',
@@ -55,9 +56,10 @@ def _macro(kind: str, pad: str) -> str:
     e = _EXPR
     return '\n'.join([
         f'{pad}<xacro:macro name="{kind}_inertial" params="{params} '
-        "xyz:='0 0 0' rpy:='0 0 0'\">",
+        "xyz:='' rpy:=''\">",
         f'{inner}<inertial>',
-        f'{body}<origin xyz="{e}{{xyz}}" rpy="{e}{{rpy}}"/>',
+        f'{body}<xacro:if value="{e}{{bool(xyz or rpy)}}">'
+        f'<origin xyz="{e}{{xyz or {ZERO}}}" rpy="{e}{{rpy or {ZERO}}}"/></xacro:if>',
         f'{body}<mass value="{e}{{mass}}"/>',
         f'{body}<inertia ixx="{e}{{{ixx}}}" ixy="0" ixz="0" iyy="{e}{{{iyy}}}" iyz="0" '
         f'izz="{e}{{{izz}}}"/>',

@@ -41,9 +41,9 @@ def load_model(model: str, xacro_args: Sequence[str] = (),
     """
     Return the robot ``model`` names and the files to watch for changes.
 
-    ``model`` is a .urdf, a .xacro/.urdf.xacro (with ``xacro_args``), a
-    ``package.module:function`` returning a Robot or URDF text, or '' for the built-in
-    example robot.
+    ``model`` is a .urdf, a .xacro/.urdf.xacro (with ``xacro_args``), a DH table (.yaml,
+    .yml, .csv), a ``package.module:function`` returning a Robot or URDF text, or '' for
+    the built-in example robot.
 
     :raises UrdfgenpyError: with one line that says what is wrong and how to fix it.
     """
@@ -61,6 +61,11 @@ def load_model(model: str, xacro_args: Sequence[str] = (),
         robot = Robot.from_xacro(path, parse_xacro_args(xacro_args),
                                  search_paths=list(package_paths))
         return robot, robot.included_files
+    if name.endswith(('.yaml', '.yml', '.csv')):
+        if not path.is_file():
+            raise UrdfgenpyError(f"parameter 'model': {model} does not exist")
+        from urdfgenpy_ros.dh import DHTable
+        return DHTable.from_file(path).to_robot(path.name.split('.')[0]), [str(path.resolve())]
     if ':' in model and '/' not in model:
         return _from_function(model), []
     raise UrdfgenpyError(f"parameter 'model': {model!r} is neither a .urdf/.xacro file nor "

@@ -1,0 +1,239 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Denavit-Hartenberg tables to URDF skeletons.
+
+Two conventions, each row's transform:
+
+* ``STANDARD`` (Denavit-Hartenberg's, "distal"): ``Rz(theta) Tz(d) Tx(a) Rx(alpha)``;
+  joint i turns about z of frame i-1.
+* ``MODIFIED`` (Craig's, "proximal"): ``Rx(alpha) Tx(a) Rz(theta) Tz(d)``, where the row
+  of joint i holds a_{i-1} and alpha_{i-1}; joint i turns about z of frame i.
+
+A revolute row's variable is theta (``theta_offset`` is added); a prismatic row's is d
+(``d`` is the offset and ``theta_offset`` is fixed). See docs/dh_guide.md.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field, KW_ONLY
+from enum import Enum
+import math
+from os import PathLike
+
+from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Origin, Sphere
+from urdfgenpy_ros.inertial import Inertial
+from urdfgenpy_ros.joint import Joint, JointLimit, JointType
+from urdfgenpy_ros.link import Collision, Link, Visual
+from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.transforms import (
+    from_xyz_rpy, IDENTITY4, Matrix4, multiply, rotation_x, rotation_z, to_xyz_rpy,
+    translation)
+
+
+class DHConvention(str, Enum):
+    """Which Denavit-Hartenberg convention a table uses."""
+
+    STANDARD = 'standard'
+    MODIFIED = 'modified'
+
+
+@dataclass(slots=True)
+class DHRow:
+    """
+    One joint: ``DHRow(joint, a, alpha, d, theta_offset, joint_type)``.
+
+    ``joint`` is a number or a name; lengths in metres, angles in radians. Limits are
+    optional (revolute: -pi..pi; prismatic: 0..1 m by default).
+    """
+
+    joint: int | str
+    a: float = 0.0
+    alpha: float = 0.0
+    d: float = 0.0
+    theta_offset: float = 0.0
+    joint_type: str = 'revolute'
+    _: KW_ONLY
+    lower: float | None = None
+    upper: float | None = None
+    effort: float = 100.0
+    velocity: float = 2.0
+
+    def __post_init__(self) -> None:
+        """Check the joint type and coerce numbers."""
+        if self.joint_type not in ('revolute', 'prismatic'):
+            raise ValueError(f'DH row {self.joint!r}: joint_type must be revolute or '
+                             f'prismatic, got {self.joint_type!r}')
+        for name in ('a', 'alpha', 'd', 'theta_offset'):
+            value = float(getattr(self, name))
+            if not math.isfinite(value):
+                raise ValueError(f'DH row {self.joint!r}: {name} must be finite')
+            setattr(self, name, value)
+
+    @property
+    def name(self) -> str:
+        """Return the joint name: ``joint_<n>`` for a number, else the name itself."""
+        return f'joint_{self.joint}' if isinstance(self.joint, int) else str(self.joint)
+
+
+@dataclass(slots=True)
+class DHTable:
+    """A DH table: convention, rows, and optional base and tool transforms."""
+
+    convention: DHConvention
+    rows: list[DHRow] = field(default_factory=list)
+    _: KW_ONLY
+    base: Origin = field(default_factory=Origin)
+    tool: Origin = field(default_factory=Origin)
+
+    def __post_init__(self) -> None:
+        """Coerce the convention."""
+        self.convention = DHConvention(self.convention)
+
+    # ---- kinematics -------------------------------------------------------------------
+
+    def _split(self, row: DHRow, q: float) -> tuple[float, float]:
+        """Return (theta, d) of ``row`` at joint value ``q``."""
+        if row.joint_type == 'revolute':
+            return row.theta_offset + q, row.d
+        return row.theta_offset, row.d + q
+
+    def row_transform(self, row: DHRow, q: float) -> Matrix4:
+        """Return the homogeneous transform of one row at joint value ``q``."""
+        theta, d = self._split(row, q)
+        if self.convention is DHConvention.STANDARD:
+            return multiply(rotation_z(theta), translation(z=d), translation(x=row.a),
+                            rotation_x(row.alpha))
+        return multiply(rotation_x(row.alpha), translation(x=row.a), rotation_z(theta),
+                        translation(z=d))
+
+    def frames(self, q: Sequence[float]) -> list[Matrix4]:
+        """Return DH frames 0..n in the base frame (frame 0 is the base transform)."""
+        frames = [from_xyz_rpy(self.base.xyz, self.base.rpy)]
+        for row, value in zip(self.rows, q, strict=True):
+            frames.append(multiply(frames[-1], self.row_transform(row, value)))
+        return frames
+
+    def flange(self, q: Sequence[float]) -> Matrix4:
+        """Return the tool frame: DH frame n times the tool transform."""
+        return multiply(self.frames(q)[-1], from_xyz_rpy(self.tool.xyz, self.tool.rpy))
+
+    def link_frames(self, q: Sequence[float]) -> list[Matrix4]:
+        """
+        Return the pose of ``link_1``..``link_n`` of the skeleton ``to_robot`` builds.
+
+        Modified: link i is DH frame i. Standard: link i is the frame of joint i's motion,
+        DH frame i-1 turned and moved by joint i (``Rz(theta_i) Tz(d_i)``); DH frame n is
+        the flange before the tool transform.
+        """
+        frames = self.frames(q)
+        if self.convention is DHConvention.MODIFIED:
+            return frames[1:]
+        links = []
+        for index, (row, value) in enumerate(zip(self.rows, q, strict=True)):
+            theta, d = self._split(row, value)
+            links.append(multiply(frames[index], rotation_z(theta), translation(z=d)))
+        return links
+
+    # ---- URDF -------------------------------------------------------------------------
+
+    def _joint_origins(self) -> tuple[list[Matrix4], Matrix4]:
+        """Return each joint's origin (in its parent link) and the flange joint's origin."""
+        base = from_xyz_rpy(self.base.xyz, self.base.rpy)
+        tool = from_xyz_rpy(self.tool.xyz, self.tool.rpy)
+        origins = []
+        carried = base  # the fixed part that lies between the last link and the next joint
+        for row in self.rows:
+            # theta and d at joint value 0: the joint then adds its motion along/about z
+            fixed_screw = multiply(rotation_z(row.theta_offset), translation(z=row.d))
+            if self.convention is DHConvention.MODIFIED:
+                origins.append(multiply(carried, rotation_x(row.alpha), translation(x=row.a),
+                                        fixed_screw))
+                carried = IDENTITY4
+            else:
+                origins.append(multiply(carried, fixed_screw))
+                carried = multiply(translation(x=row.a), rotation_x(row.alpha))
+        return origins, multiply(carried, tool)
+
+    def to_robot(self, name: str, link_mass: float = 1.0, link_geometry: str = 'cylinder',
+                 *, link_radius: float = 0.04) -> Robot:
+        """
+        Return the skeleton of the table as a Robot.
+
+        Its links are ``base_link``, ``link_1``..``link_n`` joined by the rows' joints (named
+        ``joint_<n>`` or by the row's name), and a ``flange`` on a fixed joint. Each link gets a placeholder ``link_geometry`` (cylinder, box or sphere) of radius
+        ``link_radius`` reaching to the next joint, and the inertia of that solid with the
+        uniform ``link_mass``.
+        """
+        if link_geometry not in ('cylinder', 'box', 'sphere'):
+            raise ValueError(f"link_geometry must be 'cylinder', 'box' or 'sphere', got "
+                             f'{link_geometry!r}')
+        origins, flange = self._joint_origins()
+        robot = Robot(name)
+        robot.add_link(Link('base_link'))
+        parent = 'base_link'
+        for number, (row, origin) in enumerate(zip(self.rows, origins), start=1):
+            link_name = f'link_{number}'
+            reach = origins[number] if number < len(origins) else flange
+            robot.add_link(_placeholder(link_name, reach, link_geometry, link_radius,
+                                        link_mass))
+            xyz, rpy = to_xyz_rpy(origin)
+            kind = JointType(row.joint_type)
+            default = (-math.pi, math.pi) if kind is JointType.REVOLUTE else (0.0, 1.0)
+            limit = JointLimit(default[0] if row.lower is None else row.lower,
+                               default[1] if row.upper is None else row.upper,
+                               effort=row.effort, velocity=row.velocity)
+            robot.add_joint(Joint(row.name, kind, parent, link_name, origin=Origin(xyz, rpy),
+                                  axis=(0.0, 0.0, 1.0), limit=limit))
+            parent = link_name
+        xyz, rpy = to_xyz_rpy(flange)
+        robot.add_link(Link('flange'))
+        robot.add_joint(Joint('flange_joint', 'fixed', parent, 'flange',
+                              origin=Origin(xyz, rpy)))
+        return robot
+
+    # ---- files ------------------------------------------------------------------------
+
+    @classmethod
+    def from_file(cls, path: str | PathLike[str]) -> DHTable:
+        """Read a table from a .yaml/.yml or .csv file (see docs/dh_guide.md)."""
+        from urdfgenpy_ros.formats.dh_table import read_table
+        return read_table(path)
+
+    def save(self, path: str | PathLike[str], degrees: bool = False) -> None:
+        """Write the table to a .yaml/.yml or .csv file, angles in degrees if asked."""
+        from urdfgenpy_ros.formats.dh_table import write_table
+        write_table(self, path, degrees)
+
+
+def _placeholder(name: str, reach: Matrix4, kind: str, radius: float, mass: float) -> Link:
+    """Return a link whose shape spans from its origin to the next joint's origin."""
+    x, y, z = reach[0][3], reach[1][3], reach[2][3]
+    length = math.sqrt(x * x + y * y + z * z)
+    if kind == 'sphere' or length < 2.0 * radius:
+        shape: Geometry = Sphere(radius)
+        origin = Origin((x / 2.0, y / 2.0, z / 2.0))
+    else:
+        shape = (Cylinder(radius, length) if kind == 'cylinder'
+                 else Box(2.0 * radius, 2.0 * radius, length))
+        # turn z onto the segment: pitch towards it, then yaw about the parent z
+        pitch = math.acos(max(-1.0, min(1.0, z / length)))
+        yaw = math.atan2(y, x) if math.hypot(x, y) > 1e-12 else 0.0
+        origin = Origin((x / 2.0, y / 2.0, z / 2.0), (0.0, pitch, yaw))
+    link = Link(name)
+    link.add_visual(Visual(shape, origin=origin))
+    link.add_collision(Collision(shape, origin=origin))
+    return link.set_inertial(Inertial.from_geometry(mass, shape, origin=origin))
