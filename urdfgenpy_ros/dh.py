@@ -174,7 +174,8 @@ class DHTable:
         Return the skeleton of the table as a Robot.
 
         Its links are ``base_link``, ``link_1``..``link_n`` joined by the rows' joints (named
-        ``joint_<n>`` or by the row's name), and a ``flange`` on a fixed joint. Each link gets a placeholder ``link_geometry`` (cylinder, box or sphere) of radius
+        ``joint_<n>`` or by the row's name), and a ``flange`` on a fixed joint. Each link
+        gets a placeholder ``link_geometry`` (cylinder, box or sphere) of radius
         ``link_radius`` reaching to the next joint, and the inertia of that solid with the
         uniform ``link_mass``.
         """
