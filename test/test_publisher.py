@@ -223,3 +223,17 @@ def test_publish_description_false_leaves_the_topic_to_robot_state_publisher(
     assert graph.spin_until(lambda: states, 15)
     graph.spin_for(0.5)
     assert graph.node.count_publishers('robot_description') == 0
+
+
+def test_publish_tf_without_tf2_msgs_says_so_in_one_line(graph: Graph) -> None:
+    try:
+        import tf2_msgs  # noqa: F401
+    except ImportError:
+        pass
+    else:
+        pytest.skip('tf2_msgs is installed: the TF topics themselves are available')
+    process = graph.start('publish_tf:=true')
+    output, _ = process.communicate(timeout=10)
+    assert process.returncode == 1 and 'Traceback' not in output
+    errors = [line for line in output.splitlines() if '[ERROR]' in line]
+    assert len(errors) == 1 and 'needs the tf2_msgs package' in errors[0]

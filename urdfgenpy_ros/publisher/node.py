@@ -59,6 +59,9 @@ _PARAMETERS: dict[str, tuple[Any, int | None, str]] = {
     'publish_description': (True, ParameterType.PARAMETER_BOOL,
                             'false: leave robot_description to robot_state_publisher'),
     'watch': (False, ParameterType.PARAMETER_BOOL, 'reload when the model files change'),
+    'publish_tf': (False, ParameterType.PARAMETER_BOOL,
+                   '/tf for movable joints, /tf_static for fixed ones (needs tf2_msgs)'),
+    'frame_prefix': ('', ParameterType.PARAMETER_STRING, 'prefix of every TF frame id'),
 }
 
 
@@ -102,6 +105,7 @@ class PublisherNode(Node):
         for topic in self.values['source_list']:
             self.create_subscription(JointState, topic, self._merge, 10)
         self.create_service(Trigger, '~/reload', self._reload_service)
+        self.tf = _TfPublisher(self) if self.values['publish_tf'] else None
         self.create_timer(1.0 / float(rate), self._publish_joint_states)
         self._stamps = self._modification_times()
         if self.values['watch']:
@@ -156,6 +160,8 @@ class PublisherNode(Node):
                 joint.position = states.clamp(name, previous[name].position)
         self.robot, self.watched, self.states = robot, watched, states
         self._stamps = self._modification_times()
+        if self.tf is not None:
+            self.tf.configure(robot)
         description = robot.to_urdf()
         if description == self.description:
             return True, 'model unchanged'
@@ -228,6 +234,54 @@ class PublisherNode(Node):
         if message.name:
             message.header.stamp = self.get_clock().now().to_msg()
             self.joint_publisher.publish(message)
+            if self.tf is not None:
+                self.tf.publish(message)
+
+
+class _TfPublisher:
+    """/tf and /tf_static from our own joint transforms, as robot_state_publisher does."""
+
+    def __init__(self, node: PublisherNode) -> None:
+        try:
+            from geometry_msgs.msg import TransformStamped
+            from tf2_msgs.msg import TFMessage
+        except ImportError:
+            raise UrdfgenpyError("parameter 'publish_tf' needs the tf2_msgs package: source "
+                                 'a ROS 2 install (or run robot_state_publisher instead)'
+                                 ) from None
+        self.node, self.message_type, self.transform_type = node, TFMessage, TransformStamped
+        self.prefix = node.values['frame_prefix']
+        self.dynamic = node.create_publisher(TFMessage, '/tf', 100)
+        self.static = node.create_publisher(TFMessage, '/tf_static', QoSProfile(
+            depth=1, reliability=ReliabilityPolicy.RELIABLE,
+            durability=DurabilityPolicy.TRANSIENT_LOCAL))
+        self.configure(node.robot)
+
+    def configure(self, robot: Robot) -> None:
+        """Take a (new) robot: publish its fixed joints on /tf_static."""
+        from urdfgenpy_ros.kinematics import JointTransforms
+        self.transforms = JointTransforms(robot)
+        stamp = self.node.get_clock().now().to_msg()
+        self.static.publish(self.message_type(transforms=[
+            self._stamped(entry, stamp) for entry in self.transforms.static]))
+
+    def _stamped(self, entry: tuple, stamp: Any) -> Any:
+        parent, child, xyz, rotation = entry
+        stamped = self.transform_type()
+        stamped.header.stamp = stamp
+        stamped.header.frame_id = self.prefix + parent
+        stamped.child_frame_id = self.prefix + child
+        translation, turn = stamped.transform.translation, stamped.transform.rotation
+        translation.x, translation.y, translation.z = xyz
+        turn.x, turn.y, turn.z, turn.w = rotation
+        return stamped
+
+    def publish(self, message: JointState) -> None:
+        """Publish the moving joints' transforms for the joint state ``message``."""
+        positions = dict(zip(message.name, message.position))
+        self.dynamic.publish(self.message_type(transforms=[
+            self._stamped(entry, message.header.stamp)
+            for entry in self.transforms.moving(positions)]))
 
 
 def main(args: list[str] | None = None) -> int:
