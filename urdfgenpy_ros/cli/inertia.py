@@ -1,0 +1,57 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""``urdfgenpy inertia``: an ``<inertial>`` block for a mesh, or for MeshLab's figures."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.formats.urdf import UrdfWriter
+from urdfgenpy_ros.inertial import Inertial
+from urdfgenpy_ros.link import Link
+from urdfgenpy_ros.robot import Robot
+
+
+@click.command()
+@click.argument('mesh', required=False, type=click.Path(exists=True, dir_okay=False,
+                                                         path_type=Path))
+@click.option('--mass', type=float, help='Total mass in kg.')
+@click.option('--density', type=float, help='Uniform density in kg/m^3 (instead of --mass).')
+@click.option('--scale', type=float, default=1.0, show_default=True,
+              help='Vertex scale (0.001 for a mesh in millimetres).')
+@click.option('--meshlab', is_flag=True,
+              help="Convert MeshLab's Compute Geometric Measures output instead of a mesh.")
+@click.option('--volume', type=float, help='MeshLab: "Mesh Volume is" (mm^3).')
+@click.option('--tensor', help='MeshLab: the 9 numbers of "Inertia Tensor is", row by row.')
+def inertia(mesh: Path | None, mass: float | None, density: float | None, scale: float,
+            meshlab: bool, volume: float | None, tensor: str | None) -> None:
+    """Print the <inertial> of MESH (STL, OBJ, DAE), or of MeshLab's figures (--meshlab)."""
+    if meshlab:
+        numbers = [float(value) for value in (tensor or '').replace(',', ' ').split()]
+        if mass is None or volume is None or len(numbers) != 9:
+            raise UrdfgenpyError('--meshlab needs --mass, --volume and --tensor with 9 '
+                                 'numbers (row by row, as MeshLab prints them)')
+        inertial = Inertial.from_meshlab(mass, volume, [numbers[0:3], numbers[3:6],
+                                                        numbers[6:9]])
+    else:
+        if mesh is None:
+            raise UrdfgenpyError('give a MESH file, or --meshlab with its figures')
+        inertial = Inertial.from_mesh(str(mesh), density=density, mass=mass,
+                                      scale=(scale, scale, scale))
+    link = Link('part').set_inertial(inertial)
+    click.echo(UrdfWriter(Robot('part')).write_inertial(inertial, '', link))
