@@ -56,6 +56,28 @@ def require_module(name: str):
         pytest.skip(message)
 
 
+def pybullet_python() -> str:
+    """Return a Python that has PyBullet (``.venv-pybullet``, made by scripts/setup)."""
+    candidate = os.environ.get('URDFGENPY_PYBULLET_PYTHON') or str(
+        REPO / '.venv-pybullet' / 'bin' / 'python')
+    if Path(candidate).is_file():
+        return candidate
+    if shutil.which('python3.11') and os.environ.get('URDFGENPY_REQUIRE_TOOLS'):
+        pytest.fail('PyBullet environment missing: run scripts/setup')
+    pytest.skip('no Python 3.11 for PyBullet (it has no wheel for newer Pythons)')
+
+
+def pybullet_load(path: Path) -> tuple[int, int]:
+    """Load a URDF in PyBullet (in its own process); return (body id, joint count)."""
+    script = ('import sys, pybullet as p; p.connect(p.DIRECT); '
+              'body = p.loadURDF(sys.argv[1]); print("\\nRESULT", body, p.getNumJoints(body))')
+    result = subprocess.run([pybullet_python(), '-c', script, str(path)],
+                            capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, result.stdout + result.stderr
+    body, joints = result.stdout.split('RESULT')[-1].split()
+    return int(body), int(joints)
+
+
 def check_urdf(path: Path) -> subprocess.CompletedProcess:
     """Run Debian's check_urdf on a file (with a timeout: it hangs on loops)."""
     return subprocess.run([require_tool('check_urdf'), str(path)], capture_output=True,

@@ -134,7 +134,6 @@ class Inertial:
         raise TypeError(f'Inertial.from_geometry(): expected Box, Cylinder, Sphere or Mesh, '
                         f'got {type(geometry).__name__}')
 
-
     @classmethod
     def from_mesh(cls, filename: str, density: float | None = None, mass: float | None = None,
                   scale: tuple[float, float, float] | None = None) -> Inertial:

@@ -28,6 +28,7 @@ from urdfgenpy_ros.preserved import Preserved
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.extensions import Extension
+    from urdfgenpy_ros.sensors import Sensor
 
 
 class JointType(str, Enum):
@@ -187,6 +188,7 @@ class Joint:
     safety_controller: SafetyController | None = None
     calibration: JointCalibration | None = None
     extensions: list[Extension] = field(default_factory=list)
+    sensors: list[Sensor] = field(default_factory=list)
     source: SourceLocation | None = _hidden()
     extras: Preserved | None = _hidden()
 
@@ -217,6 +219,11 @@ class Joint:
     def effective_axis(self) -> Vec3:
         """Return the axis URDF consumers use: the given one or (1, 0, 0)."""
         return self.axis if self.axis is not None else (1.0, 0.0, 0.0)
+
+    def add_sensor(self, sensor: Sensor) -> Joint:
+        """Attach a sensor that lives in a joint (ForceTorque) and return the joint."""
+        self.sensors.append(sensor)
+        return self
 
     def add_extension(self, extension: Extension) -> Joint:
         """Attach a block that belongs to this joint; return the joint."""

@@ -28,6 +28,7 @@ from urdfgenpy_ros.preserved import Preserved
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.extensions import Extension
+    from urdfgenpy_ros.sensors import Sensor
 
 
 @dataclass(slots=True)
@@ -70,12 +71,19 @@ class Link:
     collisions: list[Collision] = field(default_factory=list)
     inertial: Inertial | None = None
     extensions: list[Extension] = field(default_factory=list)
+    sensors: list[Sensor] = field(default_factory=list)
     source: SourceLocation | None = field(default=None, compare=False, repr=False)
     extras: Preserved | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         """Check the name."""
         checks.name('link', self.name)
+
+    def add_sensor(self, sensor: Sensor) -> Link:
+        """Attach a simulated sensor (Camera, Lidar, Imu) and return the link."""
+        sensor.frame = sensor.frame or self.name
+        self.sensors.append(sensor)
+        return self
 
     def add_visual(self, visual: Visual) -> Link:
         """Append a visual and return the link, for chaining."""

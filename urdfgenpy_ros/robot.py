@@ -408,8 +408,18 @@ class Robot:
         from urdfgenpy_ros.formats import xacro
         return xacro.write_xacro(self, path)
 
+    def to_sdf(self, path: str | PathLike[str] | None = None, lump_fixed: bool = False) -> str:
+        """
+        Return an SDF 1.9 model; also write it to ``path`` when given.
+
+        With ``lump_fixed``, links joined by fixed joints are merged (combined inertia), as
+        SDFormat's own URDF conversion does.
+        """
+        from urdfgenpy_ros.formats import sdf
+        return sdf.write_sdf(self, path, lump_fixed)
+
     def save(self, path: str | PathLike[str]) -> None:
-        """Write the robot in the format its suffix names (.urdf, .xacro, .urdf.xacro)."""
+        """Write the robot in the format its suffix names (.urdf, .xacro, .sdf)."""
         from urdfgenpy_ros.formats import save
         save(self, path)
 

@@ -28,8 +28,8 @@ from urdfgenpy_ros.robot import Robot
 
 
 @click.command()
-@click.argument('mesh', required=False, type=click.Path(exists=True, dir_okay=False,
-                                                         path_type=Path))
+@click.argument('mesh', required=False,
+                type=click.Path(exists=True, dir_okay=False, path_type=Path))
 @click.option('--mass', type=float, help='Total mass in kg.')
 @click.option('--density', type=float, help='Uniform density in kg/m^3 (instead of --mass).')
 @click.option('--scale', type=float, default=1.0, show_default=True,

@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
 
-WRITERS = {'.urdf': 'urdf', '.xacro': 'xacro'}
+WRITERS = {'.urdf': 'urdf', '.xacro': 'xacro', '.sdf': 'sdf'}
 DH_SUFFIXES = ('.yaml', '.yml', '.csv')
 
 
@@ -52,6 +52,8 @@ def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
         from urdfgenpy_ros.dh import DHTable
         return DHTable.from_file(path).to_robot(Path(path).name.split('.')[0])
     kind = format_of(path)
+    if kind == 'sdf':
+        raise ValueError(f'{path}: reading SDF is not supported (convert from URDF or Xacro)')
     if kind == 'urdf':
         return Robot.from_urdf(path)
     return Robot.from_xacro(path, dict(mappings or {}), search_paths=list(search_paths))
@@ -62,5 +64,7 @@ def save(robot: Robot, path: str | PathLike[str]) -> None:
     kind = format_of(path)
     if kind == 'urdf':
         robot.to_urdf(path)
-    else:
+    elif kind == 'xacro':
         robot.to_xacro(path)
+    else:
+        robot.to_sdf(path)

@@ -23,7 +23,7 @@ something of (original number text, unknown attributes or children).
 from __future__ import annotations
 
 from os import PathLike
-from typing import TYPE_CHECKING
+from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._xml import (
@@ -52,6 +52,14 @@ def _wrap(pad: str, open_tag: str, close_tag: str, children: list[str]) -> str:
         return f'{pad}<{open_tag}/>'
     inside = '\n'.join(children)
     return f'{pad}<{open_tag}>\n{inside}\n{pad}</{close_tag}>'
+
+
+def _sensor_block(sensor: Any, reference: str, pad: str) -> str:
+    """Return the ``<gazebo reference=...>`` block that carries a sensor in URDF."""
+    block = Extension('<gazebo/>')
+    block.reference = reference
+    block.element.append(sensor.to_sdf())
+    return fragment(block.element, pad)
 
 
 class UrdfWriter:
@@ -139,6 +147,7 @@ class UrdfWriter:
         for owner in (*robot.links, *robot.joints):
             children.extend(self._write_item(block, pad, owner)
                             for block in owner.extensions if id(block) not in written)
+            children.extend(_sensor_block(sensor, owner.name, pad) for sensor in owner.sensors)
         for joint in joints:
             children.append(self.write_joint(joint, pad))
         children.extend(self._write_item(block, pad) for block in robot.extensions

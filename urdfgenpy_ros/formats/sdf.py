@@ -1,0 +1,200 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+SDF 1.9 writer: a ``<model>`` that Gazebo and the SDFormat parser load as they would the URDF.
+
+Frames follow SDFormat's own URDF conversion: each joint's pose is given relative to its
+parent link, and each child link sits at its joint, so the axis is expressed in the joint
+frame exactly as in URDF. Floating joints become free links posed at their origin.
+Sensors on links are written natively; ``<gazebo>`` plugins go into the model. A joint
+named like a link (URDF allows it, SDF does not) gets ``_joint`` appended.
+"""
+
+from __future__ import annotations
+
+import copy
+from os import PathLike
+from typing import Any, TYPE_CHECKING
+
+from lxml import etree
+
+from urdfgenpy_ros.formats._xml import fmt, fmt_vec, write_text
+from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Mesh, Origin, Sphere
+from urdfgenpy_ros.joint import Joint, JointType
+from urdfgenpy_ros.link import Link
+from urdfgenpy_ros.material import Material
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
+
+SDF_VERSION = '1.9'
+_TYPES = {JointType.REVOLUTE: 'revolute', JointType.CONTINUOUS: 'continuous',
+          JointType.PRISMATIC: 'prismatic', JointType.FIXED: 'fixed'}
+
+
+def _text(parent: Any, tag: str, text: str, **attributes: str) -> Any:
+    element = etree.SubElement(parent, tag, attributes)
+    element.text = text
+    return element
+
+
+def _pose(parent: Any, origin: Origin, relative_to: str | None = None) -> None:
+    if origin.is_identity and relative_to is None:
+        return
+    attributes = {'relative_to': relative_to} if relative_to else {}
+    _text(parent, 'pose', f'{fmt_vec(origin.xyz)} {fmt_vec(origin.rpy)}', **attributes)
+
+
+def _geometry(parent: Any, geometry: Geometry) -> None:
+    holder = etree.SubElement(parent, 'geometry')
+    if isinstance(geometry, Box):
+        _text(etree.SubElement(holder, 'box'), 'size', fmt_vec(geometry.size))
+    elif isinstance(geometry, Cylinder):
+        shape = etree.SubElement(holder, 'cylinder')
+        _text(shape, 'radius', fmt(geometry.radius))
+        _text(shape, 'length', fmt(geometry.length))
+    elif isinstance(geometry, Sphere):
+        _text(etree.SubElement(holder, 'sphere'), 'radius', fmt(geometry.radius))
+    elif isinstance(geometry, Mesh):
+        shape = etree.SubElement(holder, 'mesh')
+        _text(shape, 'uri', geometry.filename)
+        if geometry.scale is not None:
+            _text(shape, 'scale', fmt_vec(geometry.scale))
+
+
+def _material(parent: Any, material: Material | None, robot: Robot) -> None:
+    if material is None:
+        return
+    defined = robot._materials.get(material.name)
+    rgba = material.rgba or (defined.rgba if defined is not None else None)
+    if rgba is None:
+        return
+    element = etree.SubElement(parent, 'material')
+    for tag in ('ambient', 'diffuse'):
+        _text(element, tag, fmt_vec(rgba))
+
+
+def _unique(name: str, taken: set[str]) -> str:
+    candidate, number = name, 1
+    while candidate in taken:
+        candidate, number = f'{name}_{number}', number + 1
+    taken.add(candidate)
+    return candidate
+
+
+def _link(model: Any, link: Link, robot: Robot, pose: tuple[Origin, str] | None) -> Any:
+    element = etree.SubElement(model, 'link', name=link.name)
+    if pose is not None:
+        _pose(element, pose[0], pose[1])
+    inertial = link.inertial
+    if inertial is not None:
+        block = etree.SubElement(element, 'inertial')
+        _pose(block, inertial.origin)
+        _text(block, 'mass', fmt(inertial.mass))
+        tensor = etree.SubElement(block, 'inertia')
+        for name in ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz'):
+            _text(tensor, name, fmt(getattr(inertial, name)))
+    taken: set[str] = set()
+    for kind, items in (('collision', link.collisions), ('visual', link.visuals)):
+        for item in items:
+            shape = etree.SubElement(element, kind,
+                                     name=_unique(item.name or f'{link.name}_{kind}', taken))
+            _pose(shape, item.origin)
+            _geometry(shape, item.geometry)
+            if kind == 'visual':
+                _material(shape, item.material, robot)
+    for sensor in link.sensors:
+        element.append(sensor.to_sdf())
+    for block in link.extensions:
+        for child in block.element:
+            if isinstance(child.tag, str) and child.tag == 'sensor':
+                element.append(copy.deepcopy(child))
+    return element
+
+
+def _joint(model: Any, joint: Joint, name: str) -> None:
+    element = etree.SubElement(model, 'joint', name=name, type=_TYPES[joint.type])
+    _pose(element, joint.origin, joint.parent)
+    _text(element, 'parent', joint.parent)
+    _text(element, 'child', joint.child)
+    for sensor in joint.sensors:
+        element.append(sensor.to_sdf())
+    if joint.type is JointType.FIXED:
+        return
+    axis = etree.SubElement(element, 'axis')
+    _text(axis, 'xyz', fmt_vec(joint.effective_axis))
+    limit = joint.limit
+    if limit is not None or joint.type is JointType.CONTINUOUS:
+        block = etree.SubElement(axis, 'limit')
+        if joint.type is not JointType.CONTINUOUS and limit is not None:
+            _text(block, 'lower', fmt(limit.lower))
+            _text(block, 'upper', fmt(limit.upper))
+        if limit is not None:
+            _text(block, 'effort', fmt(limit.effort))
+            _text(block, 'velocity', fmt(limit.velocity))
+    if joint.dynamics is not None:
+        dynamics = etree.SubElement(axis, 'dynamics')
+        _text(dynamics, 'damping', fmt(joint.dynamics.damping))
+        _text(dynamics, 'friction', fmt(joint.dynamics.friction))
+
+
+def write_sdf(robot: Robot, path: str | PathLike[str] | None = None,
+              lump_fixed: bool = False) -> str:
+    """
+    Return the SDF text of ``robot``; also write it to ``path`` when given.
+
+    ``lump_fixed`` merges links joined by fixed joints, as SDFormat's URDF conversion does.
+
+    :raises ValueError: for a planar joint, which SDF cannot express (make it two
+        prismatic joints and a revolute one).
+    """
+    if lump_fixed:
+        from urdfgenpy_ros.lumping import lump_fixed_joints
+        robot = lump_fixed_joints(robot)
+    root = etree.Element('sdf', version=SDF_VERSION)
+    model = etree.SubElement(root, 'model', name=robot.name)
+    parent_joint = {joint.child: joint for joint in robot.joints}
+    # SDF frames share one namespace: a joint named like a link (URDF allows it) is renamed.
+    link_names = {link.name for link in robot.links}
+    taken = set(link_names) | {joint.name for joint in robot.joints}
+    names = {joint.name: (_unique(f'{joint.name}_joint', taken)
+                          if joint.name in link_names else joint.name)
+             for joint in robot.joints}
+    for joint in robot.joints:
+        if joint.type is JointType.PLANAR:
+            raise ValueError(f'joint {joint.name!r}: SDF has no planar joint (model it as '
+                             'two prismatic joints and a revolute one)')
+    for link in robot.links:
+        joint = parent_joint.get(link.name)
+        if joint is None:
+            pose = None
+        elif joint.type is JointType.FLOATING:
+            pose = (joint.origin, joint.parent)
+        else:
+            pose = (Origin(), names[joint.name])
+        _link(model, link, robot, pose)
+    for joint in robot.joints:
+        if joint.type is not JointType.FLOATING:
+            _joint(model, joint, names[joint.name])
+    for block in robot.extensions:
+        if block.tag == 'gazebo':
+            for child in block.element:
+                if isinstance(child.tag, str) and child.tag == 'plugin':
+                    model.append(copy.deepcopy(child))
+    etree.indent(root, space='  ')
+    text = '<?xml version="1.0"?>\n' + etree.tostring(root, encoding='unicode') + '\n'
+    if path is not None:
+        write_text(path, text)
+    return text

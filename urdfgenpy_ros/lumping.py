@@ -1,0 +1,99 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Merge links joined by fixed joints, as SDFormat's URDF conversion does.
+
+The child's visuals, collisions, sensors and joints move onto the parent with their poses
+composed; the inertials combine (masses add, the centre of mass is their weighted mean, and
+the tensors are turned into the parent's frame and shifted there by the parallel axis
+theorem).
+"""
+
+from __future__ import annotations
+
+import copy
+
+from urdfgenpy_ros.geometry import IDENTITY, Origin
+from urdfgenpy_ros.inertial import Inertial
+from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.transforms import from_xyz_rpy, Matrix4, multiply, to_xyz_rpy
+
+
+def _compose(outer: Origin, inner: Origin) -> Origin:
+    xyz, rpy = to_xyz_rpy(multiply(from_xyz_rpy(outer.xyz, outer.rpy),
+                                   from_xyz_rpy(inner.xyz, inner.rpy)))
+    return Origin(xyz, rpy)
+
+
+def _tensor_in(inertial: Inertial, frame: Matrix4) -> tuple[list[float], list[list[float]]]:
+    """Return the centre of mass and the tensor of ``inertial`` in the frame ``frame`` is in."""
+    pose = multiply(frame, from_xyz_rpy(inertial.origin.xyz, inertial.origin.rpy))
+    rotation = [row[:3] for row in pose[:3]]
+    tensor = [list(row) for row in inertial.tensor]
+    turned = [[sum(rotation[i][k] * tensor[k][m] * rotation[j][m] for k in range(3)
+                   for m in range(3)) for j in range(3)] for i in range(3)]
+    return [pose[0][3], pose[1][3], pose[2][3]], turned
+
+
+def combine(parts: list[tuple[Inertial, Matrix4]]) -> Inertial | None:
+    """Return the inertial of rigidly joined parts, each given in the common frame."""
+    parts = [(inertial, frame) for inertial, frame in parts if inertial.mass > 0.0]
+    if not parts:
+        return None
+    mass = sum(inertial.mass for inertial, _ in parts)
+    placed = [(inertial.mass, *_tensor_in(inertial, frame)) for inertial, frame in parts]
+    centre = [sum(m * c[i] for m, c, _ in placed) / mass for i in range(3)]
+    total = [[0.0] * 3 for _ in range(3)]
+    for m, c, tensor in placed:
+        d = [c[i] - centre[i] for i in range(3)]
+        square = d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
+        for i in range(3):
+            for j in range(3):
+                total[i][j] += tensor[i][j] + m * ((square if i == j else 0.0) - d[i] * d[j])
+    return Inertial(mass, total[0][0], total[0][1], total[0][2], total[1][1], total[1][2],
+                    total[2][2], origin=Origin(tuple(centre)))
+
+
+def lump_fixed_joints(robot: Robot) -> Robot:
+    """Return a copy of ``robot`` with every fixed joint's child merged into its parent."""
+    merged = copy.deepcopy(robot)
+    while True:
+        joint = next((j for j in merged.joints if j.type is JointType.FIXED), None)
+        if joint is None:
+            return merged
+        parent, child = merged.get_link(joint.parent), merged.get_link(joint.child)
+        at = joint.origin
+        frame = from_xyz_rpy(at.xyz, at.rpy)
+        parts = [(parent.inertial, from_xyz_rpy((0.0, 0.0, 0.0), (0.0, 0.0, 0.0)))
+                 ] if parent.inertial is not None else []
+        if child.inertial is not None:
+            parts.append((child.inertial, frame))
+        parent.inertial = combine(parts) if parts else None
+        for item in (*child.visuals, *child.collisions):
+            item.origin = _compose(at, item.origin)
+        parent.visuals.extend(child.visuals)
+        parent.collisions.extend(child.collisions)
+        for sensor in child.sensors:
+            sensor.origin = _compose(at, sensor.origin)
+            sensor.frame = parent.name
+            parent.sensors.append(sensor)
+        for grandchild in merged.child_joints(child.name):
+            grandchild.parent = parent.name
+            grandchild.origin = _compose(at, grandchild.origin)
+        merged.remove_joint(joint.name)
+        merged.remove_link(child.name)
+        if parent.inertial is not None and parent.inertial.origin == IDENTITY:
+            parent.inertial.origin = IDENTITY
