@@ -25,6 +25,7 @@ from urdfgenpy_ros.cli.check import check
 from urdfgenpy_ros.cli.convert import convert
 from urdfgenpy_ros.cli.example import example
 from urdfgenpy_ros.cli.inertia import inertia
+from urdfgenpy_ros.cli.init import init
 from urdfgenpy_ros.cli.tree import tree
 from urdfgenpy_ros.errors import UrdfgenpyError
 
@@ -56,5 +57,5 @@ def main(ctx: click.Context, verbose: bool) -> None:
     ctx.obj = {'verbose': verbose}
 
 
-for command in (example, tree, convert, check, inertia):
+for command in (example, tree, convert, check, inertia, init):
     main.add_command(command)

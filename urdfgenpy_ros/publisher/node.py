@@ -38,8 +38,8 @@ from std_msgs.msg import String
 from std_srvs.srv import Trigger
 
 from urdfgenpy_ros.errors import Severity, UrdfgenpyError
+from urdfgenpy_ros.model_source import load_model
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
-from urdfgenpy_ros.publisher.model_source import load_model
 from urdfgenpy_ros.robot import Robot
 
 _STRINGS = ParameterType.PARAMETER_STRING_ARRAY

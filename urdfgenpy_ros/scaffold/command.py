@@ -1,0 +1,76 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""The scaffolding command shared by ``urdfgenpy init`` and ``ros2 pkg scaffold``."""
+
+from __future__ import annotations
+
+import argparse
+from collections.abc import Sequence
+from pathlib import Path
+import sys
+
+from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.model_source import load_model
+from urdfgenpy_ros.scaffold.render import create_package
+from urdfgenpy_ros.scaffold.spec import BUILD_TYPES, PackageSpec
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """Declare the options, named as ``ros2 pkg create`` names them."""
+    parser.add_argument('package_name', help='the package to create, e.g. my_robot_description')
+    parser.add_argument('--build-type', default='ament_cmake', choices=BUILD_TYPES)
+    parser.add_argument('--destination-directory', default='.', type=Path,
+                        help='where the package folder is created')
+    parser.add_argument('--license', default='Apache-2.0')
+    parser.add_argument('--maintainer-name', default='maintainer')
+    parser.add_argument('--maintainer-email', default='maintainer@example.com')
+    parser.add_argument('--description', default='')
+    parser.add_argument('--dependencies', nargs='*', default=[],
+                        help='more packages to list as exec_depend')
+    parser.add_argument('--from', dest='source', default='',
+                        help='a .urdf, .xacro, DH table (.yaml/.csv) or module:function; '
+                             'default: the built-in example robot')
+    parser.add_argument('--xacro-args', nargs='*', default=[], metavar='NAME:=VALUE')
+    parser.add_argument('--package-path', action='append', default=[],
+                        help='a folder holding ROS packages (repeatable)')
+    parser.add_argument('--force', action='store_true', help='overwrite existing files')
+
+
+def run(args: argparse.Namespace) -> int:
+    """Create the package; print one line per problem on stderr; return the exit code."""
+    try:
+        spec = PackageSpec(args.package_name, args.build_type, args.destination_directory,
+                           args.maintainer_name, args.maintainer_email, args.license,
+                           args.description, list(args.dependencies))
+        robot, _ = load_model(args.source, args.xacro_args, args.package_path)
+        written, warnings = create_package(
+            spec, robot, force=args.force, source=args.source or 'the built-in example',
+            search_paths=args.package_path)
+    except (UrdfgenpyError, ValueError) as error:
+        print(f'error: {error}', file=sys.stderr)
+        return 1
+    for warning in warnings:
+        print(f'warning: {warning}', file=sys.stderr)
+    print(f'created {spec.root} ({len(written)} files, {spec.build_type}): '
+          f'colcon build --packages-select {spec.name}')
+    return 0
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command with ``argv``."""
+    parser = argparse.ArgumentParser(prog='urdfgenpy init',
+                                     description='Create a ROS 2 description package.')
+    add_arguments(parser)
+    return run(parser.parse_args(argv))

@@ -1,0 +1,214 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Render a description package in memory, then write it without overwriting anything."""
+
+from __future__ import annotations
+
+import copy
+import datetime
+import hashlib
+import os
+from pathlib import Path
+import shutil
+
+from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
+from urdfgenpy_ros.formats._xml import fragment, INDENT
+from urdfgenpy_ros.formats.urdf import UrdfWriter
+from urdfgenpy_ros.formats.xacro import XACRO_NS
+from urdfgenpy_ros.geometry import Mesh
+from urdfgenpy_ros.material import Material
+from urdfgenpy_ros.resources import PackageResolver, ResourceError
+from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.scaffold.spec import PackageSpec
+
+# What the launch files run; package.xml must name each of them.
+LAUNCH_DEPENDS = ('joint_state_publisher', 'joint_state_publisher_gui', 'launch',
+                  'launch_ros', 'robot_state_publisher', 'ros_gz_bridge', 'ros_gz_sim',
+                  'rviz2', 'xacro')
+_BRIDGE_TYPES = {'camera': ('sensor_msgs/msg/Image', 'gz.msgs.Image'),
+                 'gpu_lidar': ('sensor_msgs/msg/LaserScan', 'gz.msgs.LaserScan'),
+                 'imu': ('sensor_msgs/msg/Imu', 'gz.msgs.IMU'),
+                 'force_torque': ('geometry_msgs/msg/Wrench', 'gz.msgs.Wrench')}
+
+
+def template_root() -> Path:
+    """Return the templates: the installed share folder first, then the source tree."""
+    try:
+        from ament_index_python.packages import get_package_share_directory
+        installed = Path(get_package_share_directory('urdfgenpy_ros')) / 'templates'
+        if installed.is_dir():
+            return installed
+    except (ImportError, LookupError, OSError, ValueError):
+        pass
+    source = Path(__file__).resolve().parents[2] / 'templates'
+    if source.is_dir():
+        return source
+    raise UrdfgenpyError('the package templates are missing: reinstall urdfgenpy_ros')
+
+
+def _escape(text: str) -> str:
+    return text.replace('${', '$${').replace('$(', '$$(')
+
+
+def _fragment_file(lines: list[str]) -> str:
+    body = '\n'.join(lines)
+    return f'<?xml version="1.0"?>\n<robot xmlns:xacro="{XACRO_NS}">\n{body}\n</robot>\n'
+
+
+def _meshes(spec: PackageSpec, robot: Robot, search_paths: list[str],
+            warnings: list[str]) -> dict[str, bytes]:
+    """Copy every resolvable mesh into meshes/ and point the robot's URIs at it."""
+    resolver = PackageResolver(search_paths)
+    base = None
+    if robot.source is not None and robot.source.file and Path(robot.source.file).is_file():
+        base = Path(robot.source.file).parent
+    files: dict[str, bytes] = {}
+    renamed: dict[str, str] = {}
+    for link in robot.links:
+        for item in (*link.visuals, *link.collisions):
+            mesh = item.geometry
+            if not isinstance(mesh, Mesh):
+                continue
+            if mesh.filename not in renamed:
+                try:
+                    data = resolver.resolve(mesh.filename, base).read_bytes()
+                except (ResourceError, OSError) as error:
+                    warnings.append(f'mesh {mesh.filename!r} not copied: {error}')
+                    renamed[mesh.filename] = mesh.filename
+                    continue
+                name = Path(mesh.filename.split('://', 1)[-1]).name
+                if name in files and files[name] != data:
+                    name = f'{hashlib.sha1(data).hexdigest()[:8]}_{name}'
+                files[name] = data
+                renamed[mesh.filename] = f'package://{spec.name}/meshes/{name}'
+            item.geometry = Mesh(renamed[mesh.filename], mesh.scale)
+    return {f'meshes/{name}': data for name, data in files.items()}
+
+
+def _urdf_files(spec: PackageSpec, robot: Robot) -> tuple[dict[str, bytes], list[str], str]:
+    """Return the Xacro files (main, materials, gazebo, ros2_control) and the includes."""
+    stem = robot.name
+    writer = UrdfWriter(robot)
+    parts = {'materials.xacro': [writer.write_material(m, INDENT) for m in robot.materials],
+             f'{stem}.gazebo.xacro': [], f'{stem}.ros2_control.xacro': []}
+    kept = []
+    for block in robot.extensions:
+        target = {'gazebo': f'{stem}.gazebo.xacro',
+                  'ros2_control': f'{stem}.ros2_control.xacro'}.get(block.tag)
+        if target is None:
+            kept.append(block)
+        else:
+            parts[target].append(fragment(block.element, INDENT))
+    for link in robot.links:  # the definitions move to materials.xacro: refer to them
+        for visual in link.visuals:
+            if visual.material is not None and visual.material.name in robot._materials:
+                visual.material = Material(visual.material.name)
+    main = copy.copy(robot)
+    main._materials = {}
+    main.extensions = kept
+    main.extras = None
+    includes = [name for name, lines in parts.items() if lines]
+    text = main.to_xacro()
+    opening = text.index('>', text.index('<robot')) + 1
+    include_lines = ''.join(f'\n  <xacro:include filename="$(find {spec.name})/urdf/{name}"/>'
+                            for name in includes)
+    text = text[:opening] + include_lines + text[opening:]
+    files = {f'urdf/{stem}.urdf.xacro': text.encode()}
+    files.update({f'urdf/{name}': _escape(_fragment_file(parts[name])).encode()
+                  for name in includes})
+    return files, includes, f'{stem}.urdf.xacro'
+
+
+def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in example',
+                   search_paths: list[str] | None = None,
+                   templates: Path | None = None) -> tuple[dict[str, bytes], list[str]]:
+    """Return every file of the package (path relative to it: bytes) and any warnings."""
+    try:
+        import jinja2
+    except ImportError:
+        raise MissingDependencyError('jinja2', 'scaffold', 'urdfgenpy init') from None
+    robot = copy.deepcopy(robot)
+    warnings: list[str] = []
+    files = _meshes(spec, robot, list(search_paths or ()), warnings)
+    urdf_files, includes, xacro_file = _urdf_files(spec, robot)
+    files.update(urdf_files)
+    sensors = [sensor for owner in (*robot.links, *robot.joints) for sensor in owner.sensors]
+    context = {
+        'name': spec.name, 'robot_name': robot.name, 'root_link': robot.root.name,
+        'build_type': spec.build_type, 'maintainer_name': spec.maintainer_name,
+        'maintainer_email': spec.maintainer_email, 'license': spec.license,
+        'description': spec.description, 'source': source, 'xacro_file': xacro_file,
+        'includes': includes, 'mesh_count': sum(p.startswith('meshes/') for p in files),
+        'year': datetime.date.today().year,
+        'exec_depends': sorted(set(LAUNCH_DEPENDS) | set(spec.dependencies)),
+        'bridge_topics': [{'name': sensor.topic or sensor.name,
+                           'ros_type': _BRIDGE_TYPES[sensor.kind][0],
+                           'gz_type': _BRIDGE_TYPES[sensor.kind][1]}
+                          for sensor in sensors if sensor.kind in _BRIDGE_TYPES],
+    }
+    root = templates or template_root()
+    environment = jinja2.Environment(loader=jinja2.FileSystemLoader(str(root)),
+                                     undefined=jinja2.StrictUndefined,
+                                     keep_trailing_newline=True, autoescape=False)
+    for folder in ('common', spec.build_type):
+        for path in sorted((root / folder).rglob('*.jinja')):
+            relative = path.relative_to(root / folder).as_posix()[:-len('.jinja')]
+            relative = relative.replace('__name__', spec.name)
+            template = environment.get_template(path.relative_to(root).as_posix())
+            files[relative] = template.render(context).encode()
+    files.setdefault('meshes/.gitkeep', b'')
+    return files, warnings
+
+
+def create_package(spec: PackageSpec, robot: Robot, *, force: bool = False,
+                   source: str = 'the built-in example', search_paths: list[str] | None = None,
+                   templates: Path | None = None) -> tuple[list[Path], list[str]]:
+    """
+    Write the package; return the files written and any warnings.
+
+    Nothing is written when the package folder exists and is not empty, or when any file
+    would be overwritten, unless ``force``; if writing fails half way, what was written
+    is removed again.
+
+    :raises UrdfgenpyError: with one line saying what is wrong and how to go on.
+    """
+    files, warnings = render_package(spec, robot, source, search_paths, templates)
+    root = spec.root
+    if root.exists() and not root.is_dir():
+        raise UrdfgenpyError(f'{root} exists and is not a folder: choose another name or '
+                             '--destination-directory')
+    if not force and root.is_dir() and any(root.iterdir()):
+        raise UrdfgenpyError(f'{root} exists and is not empty: choose another '
+                             '--destination-directory, or pass --force to overwrite')
+    created_root = not root.exists()
+    written: list[Path] = []
+    try:
+        for relative, data in sorted(files.items()):
+            target = root / relative
+            target.parent.mkdir(parents=True, exist_ok=True)
+            target.write_bytes(data)
+            written.append(target)
+    except OSError as error:
+        for path in written:
+            path.unlink(missing_ok=True)
+        if created_root and root.exists():
+            shutil.rmtree(root, ignore_errors=True)
+        where = error.filename or root
+        raise UrdfgenpyError(f'cannot write {where}: {error.strerror or error} (choose a '
+                             'writable --destination-directory)') from None
+    for path in written:
+        if path.suffix == '.py' and 'launch' in path.parts:
+            os.chmod(path, 0o644)
+    return written, warnings
