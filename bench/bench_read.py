@@ -32,11 +32,11 @@ import io
 from pathlib import Path
 import re
 import shutil
-import statistics
 import subprocess
-import time
 import tracemalloc
 from typing import Any, Callable
+
+from timing import median_seconds
 
 
 def _readers() -> dict[str, Callable[[bytes], Any]]:
@@ -81,17 +81,6 @@ def corpus_files(corpus: Path) -> list[Path]:
                               timeout=30).returncode == 0]
 
 
-def median_time(function: Callable[[], Any], repeat: int) -> float:
-    """Return the median wall time of ``function`` over ``repeat`` runs."""
-    times = []
-    for _ in range(repeat):
-        gc.collect()
-        start = time.perf_counter()
-        function()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
-
-
 def main() -> None:
     """Print per-library totals (and per-file figures on request)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
@@ -122,7 +111,7 @@ def main() -> None:
     totals = dict.fromkeys(readers, 0.0)
     rows = []
     for path in usable:
-        figures = {name: median_time(lambda: function(data[path]), args.repeat)
+        figures = {name: median_seconds(lambda: function(data[path]), args.repeat)
                    for name, function in readers.items()}
         for name, seconds in figures.items():
             totals[name] += seconds
@@ -147,7 +136,7 @@ def main() -> None:
         'urdfgenpy_ros': lambda: [robot.to_urdf() for robot in robots.values()],
         'urdf_parser_py': lambda: [model.to_xml_string() for model in parsed.values()],
     }
-    written = {name: median_time(function, args.repeat) for name, function in writers.items()}
+    written = {name: median_seconds(function, args.repeat) for name, function in writers.items()}
     floor = written['lxml tostring (floor)']
     print(f'\n## Writing the same {len(usable)} robots\n')
     print('| writer | total ms | x lxml tostring |\n|---|---:|---:|')

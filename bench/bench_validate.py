@@ -25,9 +25,8 @@ and of ``robot.validate()`` on the read robot, and their ratio.
 from __future__ import annotations
 
 import argparse
-import statistics
-import time
 
+from timing import median_seconds
 from urdfgenpy_ros import (
     Box, Collision, Inertial, Joint, JointLimit, Link, Origin, Robot, Visual)
 
@@ -52,16 +51,6 @@ def build(count: int, shape: str) -> Robot:
     return robot
 
 
-def median(function, repeat: int) -> float:
-    """Return the median wall time of ``function``."""
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        function()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
-
-
 def main() -> None:
     """Print a Markdown table."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
@@ -74,8 +63,8 @@ def main() -> None:
             text = build(count, shape).to_urdf().encode()
             robot = Robot.from_urdf_string(text)
             assert not [f for f in robot.validate() if str(f.severity) == 'error']
-            read = median(lambda: Robot.from_urdf_string(text), args.repeat)
-            check = median(lambda: robot.validate(), args.repeat)
+            read = median_seconds(lambda: Robot.from_urdf_string(text), args.repeat)
+            check = median_seconds(lambda: robot.validate(), args.repeat)
             print(f'| {shape} | {count} | {read * 1e3:.1f} | {check * 1e3:.1f} | '
                   f'{check / count * 1e6:.1f} | {check / read:.2f} |')
 

@@ -25,7 +25,7 @@ import sys
 import time
 from typing import Any
 
-from helpers import require_module
+from helpers import environment, require_module
 
 
 class Graph:
@@ -35,18 +35,11 @@ class Graph:
         rclpy = require_module('rclpy')
         self.env = dict(os.environ, ROS_DOMAIN_ID=str(random.randint(30, 220)),
                         ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST')
-        saved = {key: os.environ.get(key) for key in ('ROS_DOMAIN_ID',
-                                                      'ROS_AUTOMATIC_DISCOVERY_RANGE')}
-        os.environ.update({key: self.env[key] for key in saved})
-        try:
+        isolated = {key: self.env[key] for key in ('ROS_DOMAIN_ID',
+                                                   'ROS_AUTOMATIC_DISCOVERY_RANGE')}
+        with environment(isolated):  # rclpy reads them at init
             self.context = rclpy.context.Context()
             rclpy.init(context=self.context)
-        finally:
-            for key, value in saved.items():
-                if value is None:
-                    os.environ.pop(key, None)
-                else:
-                    os.environ[key] = value
         self.node = rclpy.create_node(f'listener_{random.randint(0, 10**6)}',
                                       context=self.context)
         self.executor = rclpy.executors.SingleThreadedExecutor(context=self.context)

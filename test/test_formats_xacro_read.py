@@ -16,12 +16,11 @@
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 from helpers import (
-    ament_index, canonical, check_urdf, CORPUS, CORPUS_PACKAGES, load_yourdfpy, require_module,
-    snapshot)
+    ament_index, canonical, check_urdf, CORPUS, CORPUS_PACKAGES, environment, load_yourdfpy,
+    require_module, snapshot)
 import pytest
 
 from urdfgenpy_ros import ParseError, Robot
@@ -55,23 +54,15 @@ def real_xacro(tmp_path_factory: pytest.TempPathFactory):
     """Expand with plain xacro, $(find) answered by a real ament index of the corpus."""
     xacro = require_module('xacro')
     prefix = tmp_path_factory.mktemp('ament')
-    environment = ament_index(prefix)
+    index = ament_index(prefix)
 
     def expand(path: Path, mappings: dict[str, str]) -> str:
-        saved = {key: os.environ.get(key) for key in environment}
-        os.environ.update(environment)
-        try:
+        with environment(index):
             text = xacro.process_file(str(path), mappings=dict(mappings)).toprettyxml()
             # Paths xacro writes in point into the index; ours into the corpus itself.
             for package, folder in CORPUS_PACKAGES.items():
                 text = text.replace(str(prefix / 'share' / package), str(CORPUS / folder))
-            return text
-        finally:
-            for key, value in saved.items():
-                if value is None:
-                    os.environ.pop(key, None)
-                else:
-                    os.environ[key] = value
+        return text
     return expand
 
 

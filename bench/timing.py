@@ -1,0 +1,34 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Timing shared by the benchmarks."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+import gc
+import statistics
+import time
+from typing import Any
+
+
+def median_seconds(function: Callable[[], Any], repeat: int) -> float:
+    """Return the median wall time of ``repeat`` calls of ``function`` (GC run before each)."""
+    times = []
+    for _ in range(repeat):
+        gc.collect()
+        start = time.perf_counter()
+        function()
+        times.append(time.perf_counter() - start)
+    return statistics.median(times)
