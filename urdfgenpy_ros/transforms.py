@@ -25,13 +25,27 @@ IDENTITY4: Matrix4 = [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0
                       [0.0, 0.0, 0.0, 1.0]]
 
 
+def _compose(a: Matrix4, b: Matrix4) -> Matrix4:
+    """Return ``a b`` for rigid transforms (last row 0 0 0 1), unrolled."""
+    (a00, a01, a02, a03), (a10, a11, a12, a13), (a20, a21, a22, a23) = a[0], a[1], a[2]
+    (b00, b01, b02, b03), (b10, b11, b12, b13), (b20, b21, b22, b23) = b[0], b[1], b[2]
+    return [[a00 * b00 + a01 * b10 + a02 * b20, a00 * b01 + a01 * b11 + a02 * b21,
+             a00 * b02 + a01 * b12 + a02 * b22, a00 * b03 + a01 * b13 + a02 * b23 + a03],
+            [a10 * b00 + a11 * b10 + a12 * b20, a10 * b01 + a11 * b11 + a12 * b21,
+             a10 * b02 + a11 * b12 + a12 * b22, a10 * b03 + a11 * b13 + a12 * b23 + a13],
+            [a20 * b00 + a21 * b10 + a22 * b20, a20 * b01 + a21 * b11 + a22 * b21,
+             a20 * b02 + a21 * b12 + a22 * b22, a20 * b03 + a21 * b13 + a22 * b23 + a23],
+            [0.0, 0.0, 0.0, 1.0]]
+
+
 def multiply(*matrices: Matrix4) -> Matrix4:
-    """Return the product of 4x4 homogeneous transforms, left to right."""
-    result = [row[:] for row in IDENTITY4]
-    for matrix in matrices:
-        result = [[sum(result[i][k] * matrix[k][j] for k in range(4)) for j in range(4)]
-                  for i in range(4)]
-    return result
+    """Return the product of rigid 4x4 homogeneous transforms, left to right."""
+    if not matrices:
+        return [row[:] for row in IDENTITY4]
+    result = matrices[0]
+    for matrix in matrices[1:]:
+        result = _compose(result, matrix)
+    return [row[:] for row in result] if len(matrices) == 1 else result
 
 
 def rotation_x(angle: float) -> Matrix4:
