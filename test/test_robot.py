@@ -183,3 +183,11 @@ def test_equality_compares_the_model(ptu: Robot) -> None:
     assert ptu == pan_tilt_unit()
     ptu.get_joint('pan_joint').limit.upper = 3.0
     assert ptu != pan_tilt_unit()
+
+
+def test_remove_material_returns_it_and_forgets_it(ptu: Robot) -> None:
+    removed = ptu.remove_material('amber')
+    assert removed.rgba == (1.0, 0.55, 0.0, 1.0)
+    assert [material.name for material in ptu.materials] == ['charcoal']
+    with pytest.raises(KeyError, match="no material 'amber'"):
+        ptu.get_material('amber')
