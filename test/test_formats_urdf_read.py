@@ -147,3 +147,23 @@ def test_missing_attribute_names_element_and_line() -> None:
     expected = '^x.urdf:3:3: error P002 <joint name="j">: missing \'type\' \\(one of revolute'
     with pytest.raises(ParseError, match=expected):
         Robot.from_urdf_string(xml, 'x.urdf')
+
+
+def test_unedited_elements_keep_their_text_and_edited_ones_are_written_anew() -> None:
+    path = CORPUS / 'kdl_parser/kdl_parser/test/testInertiaRPYmodel1.urdf'
+    # lxml writes "<a />" as "<a/>", and each top-level element starts at our indent;
+    # everything else of an unedited element stays: the attribute order, each number's
+    # spelling ("0.0", "-0"), the indentation inside it.
+    original = [line.strip() for line in path.read_text().replace(' />', '/>').splitlines()]
+    robot = Robot.from_urdf(path)
+    untouched = robot.to_urdf().splitlines()
+    first = original.index('<robot name="testInertialRPYmodel1">')
+    assert [line.strip() for line in untouched[1:]] == original[first:]
+    robot.get_link('link1').inertial.mass = 2.5
+    edited = robot.to_urdf().splitlines()
+    changed = [line for line in edited if line not in untouched]
+    assert any('<mass value="2.5"/>' in line for line in changed)
+    start = next(i for i, line in enumerate(edited) if '<link name="link1">' in line)
+    end = next(i for i in range(start, len(edited)) if edited[i].strip() == '</link>')
+    assert set(changed) <= set(edited[start:end + 1])  # the link is written anew, nothing else
+    assert Robot.from_urdf_string('\n'.join(edited)).get_link('link1').inertial.mass == 2.5

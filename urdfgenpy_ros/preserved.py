@@ -34,7 +34,8 @@ class Preserved:
     the robot's top-level items; ``outside`` the comments before and after the root.
     """
 
-    __slots__ = ('node', 'known_attributes', 'known_children', 'nested', 'order', 'outside')
+    __slots__ = ('node', 'known_attributes', 'known_children', 'nested', 'order', 'outside',
+                 'state')
 
     def __init__(self, node: Any, known_attributes: frozenset[str] = frozenset(),
                  known_children: frozenset[str] = frozenset(),
@@ -45,6 +46,7 @@ class Preserved:
         self.nested = nested or {}
         self.order: list[Any] | None = None
         self.outside: tuple[list[Any], list[Any]] = ([], [])
+        self.state: tuple | None = None  # a top-level element's fingerprint when read
 
     @property
     def texts(self) -> Any:

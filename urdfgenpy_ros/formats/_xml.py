@@ -112,6 +112,18 @@ Attr = tuple[str, Any, str, Any]
 """``(name, value, formatted text, default)``; default None means always written."""
 
 
+def verbatim(node: Any, pad: str, declared: dict[str, str]) -> str:
+    """Return a source element exactly as it was read (namespaces the root declares aside)."""
+    text = etree.tostring(node, encoding='unicode', with_tail=False)
+    if ' xmlns' in text:
+        end = text.find('>')
+        head = _DECLARATION.sub(
+            lambda m: '' if declared.get(m.group(1) or '') == m.group(2) else m.group(0),
+            text[:end])
+        text = head + text[end:]
+    return pad + text
+
+
 def element(pad: str, tag: str, attrs: list[Attr], extras: Preserved | None,
             children: list[str], tags: list[str] | None = None,
             restore_children: bool = True) -> str:

@@ -27,7 +27,8 @@ from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._xml import (
-    Attr, element, esc, fmt, fmt_vec, fragment, INDENT, write_text)
+    Attr, element, esc, fmt, fmt_vec, fragment, INDENT, verbatim, write_text)
+from urdfgenpy_ros.formats.state import state
 from urdfgenpy_ros.geometry import (
     Box, Cylinder, Geometry, Mesh, Origin, set_origin_text, Sphere)
 from urdfgenpy_ros.inertial import Inertial
@@ -66,6 +67,7 @@ class UrdfWriter:
     """Turn a Robot into URDF text; the Xacro writer overrides a few hooks."""
 
     declaration = '<?xml version="1.0"?>'
+    verbatim = True  # write unedited elements read from a file exactly as they were
 
     def __init__(self, robot: Robot) -> None:
         self.robot = robot
@@ -169,6 +171,10 @@ class UrdfWriter:
         return blocks
 
     def _write_item(self, item: object, pad: str, owner: Link | Joint | None = None) -> str:
+        extras = getattr(item, 'extras', None)
+        if extras is not None and extras.state is not None and extras.state == state(item) \
+                and self.verbatim:
+            return verbatim(extras.node, pad, self.declared)
         if isinstance(item, Link):
             return self.write_link(item, pad)
         if isinstance(item, Joint):

@@ -32,6 +32,7 @@ from urdfgenpy_ros.errors import ParseError, ReadWarning, SourceLocation
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._parse import parse_xml, Source
 from urdfgenpy_ros.formats._xml import fmt, fmt_vec
+from urdfgenpy_ros.formats.state import state
 from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, IDENTITY, Mesh, Origin, Sphere
 from urdfgenpy_ros.inertial import INERTIA_ATTRS, Inertial
 from urdfgenpy_ros.joint import (
@@ -415,6 +416,11 @@ class _Reader:
         for joint in joints:
             robot.add_joint(joint)
         _share_materials(robot)
+        for item, node in zip(order, root):  # to write unedited elements verbatim
+            if isinstance(item, (Link, Joint)) and item.extras is None:
+                item.extras = Preserved(node, *KNOWN[node.tag])
+            if isinstance(item, (Link, Joint, Material)) and item.extras is not None:
+                item.extras.state = state(item)
         self.plain = True
         robot.extras = Preserved(root, *KNOWN['robot'])
         robot.extras.order = order

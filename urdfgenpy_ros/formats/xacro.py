@@ -81,6 +81,8 @@ def _identifier(name: str, taken: set[str]) -> str:
 class XacroWriter(UrdfWriter):
     """Write the URDF body with xacro properties and inertia macros."""
 
+    verbatim = False  # masses become properties: every inertial is written anew
+
     def __init__(self, robot: Robot) -> None:
         super().__init__(robot)
         taken: set[str] = set()
