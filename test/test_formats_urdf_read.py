@@ -18,24 +18,14 @@ from __future__ import annotations
 
 from pathlib import Path
 import re
-import subprocess
 
-from helpers import (
-    canonical, check_urdf, CORPUS, load_yourdfpy, require_tool, snapshot)
+from helpers import canonical, check_urdf, check_urdf_verdict, CORPUS, load_yourdfpy, snapshot
 from lxml import etree
 import pytest
 
 from urdfgenpy_ros import ParseError, Robot
 
 URDFS = sorted(CORPUS.rglob('*.urdf')) if CORPUS.is_dir() else []
-
-
-def _check_urdf_accepts(path: Path) -> bool:
-    require_tool('check_urdf')
-    try:
-        return check_urdf(path).returncode == 0
-    except subprocess.TimeoutExpired:
-        return False
 
 
 def _original_root(path: Path) -> bytes:
@@ -47,7 +37,7 @@ def _original_root(path: Path) -> bytes:
 
 @pytest.mark.parametrize('path', URDFS, ids=lambda p: str(p.relative_to(CORPUS)))
 def test_corpus_urdf_round_trips_losslessly(path: Path, tmp_path: Path) -> None:
-    accepted = _check_urdf_accepts(path)
+    accepted = check_urdf_verdict(path)
     wrapped = path.parent.name == 'test' and path.parent.parent.name == 'joint_state_publisher'
     if not (accepted or wrapped):
         pytest.skip('check_urdf rejects this file (see test_broken_files_fail_precisely)')
@@ -106,7 +96,7 @@ BROKEN = [
 def test_broken_files_fail_precisely(name: str, code: str, line: int, column: int,
                                      words: list[str]) -> None:
     path = CORPUS / name
-    assert not _check_urdf_accepts(path), 'check_urdf should reject it too'
+    assert not check_urdf_verdict(path), 'check_urdf should reject it too'
     with pytest.raises(ParseError) as raised:
         Robot.from_urdf(path)
     message = str(raised.value)

@@ -19,9 +19,8 @@ from __future__ import annotations
 import json
 import math
 from pathlib import Path
-import subprocess
 
-from helpers import check_urdf, CORPUS, require_module, require_tool
+from helpers import check_urdf_verdict, CORPUS, require_module
 import pytest
 
 from urdfgenpy_ros import Joint, Link, Robot, Severity, ValidationError
@@ -34,15 +33,6 @@ def _write(tmp_path: Path, name: str, text: str) -> Path:
     path = tmp_path / f'{name}.urdf'
     path.write_text(text)
     return path
-
-
-def check_urdf_accepts(path: Path) -> bool:
-    """Return check_urdf's verdict (it hangs on some loops: a timeout is a refusal)."""
-    require_tool('check_urdf')
-    try:
-        return check_urdf(path).returncode == 0
-    except subprocess.TimeoutExpired:
-        return False
 
 
 def mujoco_accepts(path: Path) -> bool:
@@ -58,7 +48,7 @@ def mujoco_accepts(path: Path) -> bool:
 def test_valid_fixture_has_no_finding_and_consumers_accept_it(tmp_path: Path) -> None:
     path = _write(tmp_path, 'valid', VALID)
     assert Robot.from_urdf(path).validate() == []
-    assert check_urdf_accepts(path) and mujoco_accepts(path)
+    assert check_urdf_verdict(path) and mujoco_accepts(path)
 
 
 def test_examples_and_seed_robot_are_clean() -> None:
@@ -102,7 +92,7 @@ VERDICTS = {
 @pytest.mark.parametrize('key', VERDICTS)
 def test_consumers_agree_or_accept_silently(key: str, tmp_path: Path) -> None:
     path = _write(tmp_path, key, broken(key))
-    assert (check_urdf_accepts(path), mujoco_accepts(path)) == VERDICTS[key]
+    assert (check_urdf_verdict(path), mujoco_accepts(path)) == VERDICTS[key]
 
 
 def test_every_error_code_has_a_consumer_verdict() -> None:
@@ -113,7 +103,7 @@ def test_every_error_code_has_a_consumer_verdict() -> None:
 def test_corpus_files_both_consumers_accept_have_no_error() -> None:
     clean = 0
     for path in sorted(CORPUS.rglob('*.urdf')):
-        if not (check_urdf_accepts(path) and mujoco_accepts(path)):
+        if not (check_urdf_verdict(path) and mujoco_accepts(path)):
             continue
         findings = Robot.from_urdf(path).validate(search_paths=[CORPUS])
         assert [str(f) for f in findings if f.severity is Severity.ERROR] == [], path

@@ -99,13 +99,18 @@ def fragment(element: Any, pad: str, declared: dict[str, str] | None = None) -> 
     if len(element):
         etree.indent(element, space=INDENT, level=len(pad) // len(INDENT))
     text = etree.tostring(element, encoding='unicode', with_tail=False)
-    if declared and ' xmlns' in text:
-        end = text.find('>')
-        head = _DECLARATION.sub(
-            lambda m: '' if declared.get(m.group(1) or '') == m.group(2) else m.group(0),
-            text[:end])
-        text = head + text[end:]
-    return pad + text
+    return pad + _without_declared(text, declared or {})
+
+
+def _without_declared(text: str, declared: dict[str, str]) -> str:
+    """Drop namespace declarations the enclosing root already makes from the first tag."""
+    if not declared or ' xmlns' not in text:
+        return text
+    end = text.find('>')
+    head = _DECLARATION.sub(
+        lambda m: '' if declared.get(m.group(1) or '') == m.group(2) else m.group(0),
+        text[:end])
+    return head + text[end:]
 
 
 Attr = tuple[str, Any, str, Any]
@@ -115,13 +120,7 @@ Attr = tuple[str, Any, str, Any]
 def verbatim(node: Any, pad: str, declared: dict[str, str]) -> str:
     """Return a source element exactly as it was read (namespaces the root declares aside)."""
     text = etree.tostring(node, encoding='unicode', with_tail=False)
-    if ' xmlns' in text:
-        end = text.find('>')
-        head = _DECLARATION.sub(
-            lambda m: '' if declared.get(m.group(1) or '') == m.group(2) else m.group(0),
-            text[:end])
-        text = head + text[end:]
-    return pad + text
+    return pad + _without_declared(text, declared)
 
 
 def element(pad: str, tag: str, attrs: list[Attr], extras: Preserved | None,
