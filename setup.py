@@ -74,7 +74,7 @@ setup(
     zip_safe=True,
     maintainer='urdfgenpy_ros developers',
     maintainer_email='dev@urdfgenpy-ros.invalid',
-    description='Build, read, check and publish robot descriptions from Python.',
+    description='Build, read, validate and publish robot descriptions from Python.',
     license='Apache-2.0',
     entry_points={
         'console_scripts': [
