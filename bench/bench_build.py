@@ -26,7 +26,9 @@ over several runs and the peak Python memory of one run (tracemalloc).
 from __future__ import annotations
 
 import argparse
+import functools
 import gc
+import importlib
 import json
 import statistics
 import time
@@ -37,45 +39,23 @@ def _parent(shape: str, index: int) -> int:
     return index - 1 if shape == 'chain' else 0
 
 
-def ours(count: int, shape: str) -> str:
-    """Build and write with urdfgenpy_ros."""
-    from urdfgenpy_ros import (
-        Box, Collision, Inertial, Joint, JointLimit, Link, Origin, Robot, Visual)
-    robot = Robot('bench')
+def seed_api(library: str, count: int, shape: str) -> str:
+    """Build and write with the seeds' API, which urdfgenpy_ros and urdfgenpy 0.4.0 share."""
+    m = importlib.import_module(library)
+    robot = m.Robot('bench')
     for index in range(count):
-        box = Box(0.1, 0.05, 0.2)
-        origin = Origin.above(box)
-        link = Link(f'link_{index}')
-        link.add_visual(Visual(box, origin=origin))
-        link.add_collision(Collision(box, origin=origin))
-        link.set_inertial(Inertial.from_box(1.0, 0.1, 0.05, 0.2, origin=origin))
+        box = m.Box(0.1, 0.05, 0.2)
+        origin = m.Origin.above(box)
+        link = m.Link(f'link_{index}')
+        link.add_visual(m.Visual(geometry=box, origin=origin))
+        link.add_collision(m.Collision(geometry=box, origin=origin))
+        link.set_inertial(m.Inertial.from_box(1.0, 0.1, 0.05, 0.2, origin=origin))
         robot.add_link(link)
         if index:
-            robot.add_joint(Joint(f'joint_{index}', 'revolute', f'link_{_parent(shape, index)}',
-                                  f'link_{index}', origin=Origin(xyz=(0, 0, 0.2)),
-                                  axis=(0, 0, 1),
-                                  limit=JointLimit(-1.57, 1.57, effort=10, velocity=1)))
-    return robot.to_urdf()
-
-
-def urdfgenpy_040(count: int, shape: str) -> str:
-    """Build and write with urdfgenpy 0.4.0 (PyPI), the library the seeds describe."""
-    from urdfgenpy import (
-        Box, Collision, Inertial, Joint, JointLimit, Link, Origin, Robot, Visual)
-    robot = Robot('bench')
-    for index in range(count):
-        box = Box(0.1, 0.05, 0.2)
-        origin = Origin.above(box)
-        link = Link(f'link_{index}')
-        link.add_visual(Visual(geometry=box, origin=origin))
-        link.add_collision(Collision(geometry=box, origin=origin))
-        link.set_inertial(Inertial.from_box(1.0, 0.1, 0.05, 0.2, origin=origin))
-        robot.add_link(link)
-        if index:
-            robot.add_joint(Joint(f'joint_{index}', 'revolute', f'link_{_parent(shape, index)}',
-                                  f'link_{index}', origin=Origin(xyz=(0, 0, 0.2)),
-                                  axis=(0, 0, 1),
-                                  limit=JointLimit(-1.57, 1.57, effort=10, velocity=1)))
+            robot.add_joint(m.Joint(f'joint_{index}', 'revolute',
+                                    f'link_{_parent(shape, index)}', f'link_{index}',
+                                    origin=m.Origin(xyz=(0, 0, 0.2)), axis=(0, 0, 1),
+                                    limit=m.JointLimit(-1.57, 1.57, effort=10, velocity=1)))
     return robot.to_urdf()
 
 
@@ -110,7 +90,9 @@ def yourdfpy_(count: int, shape: str) -> str:
     return urdf.write_xml_string().decode()
 
 
-LIBRARIES = {'urdfgenpy_ros': ours, 'urdfgenpy 0.4.0': urdfgenpy_040, 'yourdfpy': yourdfpy_}
+LIBRARIES = {'urdfgenpy_ros': functools.partial(seed_api, 'urdfgenpy_ros'),
+             'urdfgenpy 0.4.0': functools.partial(seed_api, 'urdfgenpy'),
+             'yourdfpy': yourdfpy_}
 
 
 def measure(function, count: int, shape: str, repeat: int) -> tuple[float, float]:

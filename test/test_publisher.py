@@ -16,9 +16,11 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 import shutil
 import subprocess
+import sys
 import time
 
 from helpers import CORPUS, require_module
@@ -41,8 +43,7 @@ def _executable(workspace: Path, name: str) -> list[str]:
         ['bash', '-c', 'source install/setup.bash && python3 -c "from ament_index_python.'
          "packages import get_package_prefix; print(get_package_prefix('urdfgenpy_ros'))\""],
         cwd=workspace, capture_output=True, text=True, timeout=60,
-        env=dict(__import__('os').environ, PATH=f'{Path(__import__("sys").executable).parent}:'
-                 + __import__('os').environ['PATH']))
+        env=dict(os.environ, PATH=f'{Path(sys.executable).parent}:{os.environ["PATH"]}'))
     prefix = Path(locate.stdout.strip())
     return ['bash', '-c', f'source {workspace}/install/setup.bash && exec '
             f'{prefix}/lib/urdfgenpy_ros/{name} "$@"', name]

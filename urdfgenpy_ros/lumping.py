@@ -25,11 +25,12 @@ from __future__ import annotations
 
 import copy
 
-from urdfgenpy_ros.geometry import IDENTITY, Origin
+from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import JointType
 from urdfgenpy_ros.robot import Robot
-from urdfgenpy_ros.transforms import from_xyz_rpy, Matrix4, multiply, to_xyz_rpy
+from urdfgenpy_ros.transforms import (
+    from_xyz_rpy, IDENTITY4, Matrix4, multiply, to_xyz_rpy)
 
 
 def _compose(outer: Origin, inner: Origin) -> Origin:
@@ -77,8 +78,7 @@ def lump_fixed_joints(robot: Robot) -> Robot:
         parent, child = merged.get_link(joint.parent), merged.get_link(joint.child)
         at = joint.origin
         frame = from_xyz_rpy(at.xyz, at.rpy)
-        parts = [(parent.inertial, from_xyz_rpy((0.0, 0.0, 0.0), (0.0, 0.0, 0.0)))
-                 ] if parent.inertial is not None else []
+        parts = [(parent.inertial, IDENTITY4)] if parent.inertial is not None else []
         if child.inertial is not None:
             parts.append((child.inertial, frame))
         parent.inertial = combine(parts) if parts else None
@@ -95,5 +95,3 @@ def lump_fixed_joints(robot: Robot) -> Robot:
             grandchild.origin = _compose(at, grandchild.origin)
         merged.remove_joint(joint.name)
         merged.remove_link(child.name)
-        if parent.inertial is not None and parent.inertial.origin == IDENTITY:
-            parent.inertial.origin = IDENTITY

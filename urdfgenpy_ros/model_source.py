@@ -22,7 +22,11 @@ from pathlib import Path
 
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.examples import pan_tilt_unit
+from urdfgenpy_ros.formats import DH_SUFFIXES, load
 from urdfgenpy_ros.robot import Robot
+
+
+_FILES = ('.urdf', '.xacro', *DH_SUFFIXES)
 
 
 def parse_xacro_args(arguments: Sequence[str]) -> dict[str, str]:
@@ -50,22 +54,12 @@ def load_model(model: str, xacro_args: Sequence[str] = (),
     if not model:
         return pan_tilt_unit(), []
     path = Path(model).expanduser()
-    name = path.name.lower()
-    if name.endswith(('.urdf', '.xacro')):
+    if path.name.lower().endswith(_FILES):
         if not path.is_file():
             raise UrdfgenpyError(f"parameter 'model': {model} does not exist (give the path "
-                                 'of a .urdf or .xacro file)')
-        if name.endswith('.urdf'):
-            robot = Robot.from_urdf(path)
-            return robot, [str(path.resolve())]
-        robot = Robot.from_xacro(path, parse_xacro_args(xacro_args),
-                                 search_paths=list(package_paths))
-        return robot, robot.included_files
-    if name.endswith(('.yaml', '.yml', '.csv')):
-        if not path.is_file():
-            raise UrdfgenpyError(f"parameter 'model': {model} does not exist")
-        from urdfgenpy_ros.dh import DHTable
-        return DHTable.from_file(path).to_robot(path.name.split('.')[0]), [str(path.resolve())]
+                                 'of a .urdf, .xacro or DH table file)')
+        robot = load(path, parse_xacro_args(xacro_args), package_paths)
+        return robot, robot.included_files or [str(path.resolve())]
     if ':' in model and '/' not in model:
         return _from_function(model), []
     raise UrdfgenpyError(f"parameter 'model': {model!r} is neither a .urdf/.xacro file nor "

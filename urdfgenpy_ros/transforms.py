@@ -40,12 +40,10 @@ def _compose(a: Matrix4, b: Matrix4) -> Matrix4:
 
 def multiply(*matrices: Matrix4) -> Matrix4:
     """Return the product of rigid 4x4 homogeneous transforms, left to right."""
-    if not matrices:
-        return [row[:] for row in IDENTITY4]
-    result = matrices[0]
+    result = matrices[0] if matrices else IDENTITY4
     for matrix in matrices[1:]:
         result = _compose(result, matrix)
-    return [row[:] for row in result] if len(matrices) == 1 else result
+    return result
 
 
 def rotation_x(angle: float) -> Matrix4:

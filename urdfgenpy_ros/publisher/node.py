@@ -23,8 +23,10 @@ with ``watch``, reloads when the model or a file it includes changes.
 
 from __future__ import annotations
 
+import math
 import os
 import sys
+import time
 from typing import Any
 
 from rcl_interfaces.msg import ParameterDescriptor, ParameterType, SetParametersResult
@@ -111,6 +113,7 @@ class PublisherNode(Node):
         if self.values['watch']:
             self.create_timer(0.5, self._watch)
         self._warned: set[str] = set()
+        self._last_warning: dict[str, float] = {}
         self.get_logger().info(
             f'publishing {self.robot.name!r}: {len(self.robot.links)} links, '
             f'{len(self.states.names)} joint states at {rate} Hz'
@@ -209,13 +212,12 @@ class PublisherNode(Node):
         try:
             unknown = self.states.merge(message.name, message.position, message.velocity,
                                         message.effort)
-        except ValueError as error:  # throttled per kind: each kind is its own call site
-            if 'NaN' in str(error):
-                self.get_logger().warning(f'ignored a JointState: {error}',
-                                          throttle_duration_sec=5.0)
-            else:
-                self.get_logger().warning(f'ignored a JointState: {error}',
-                                          throttle_duration_sec=5.0)
+        except ValueError as error:  # at most one warning per kind of fault every 5 s
+            kind = 'nan' if 'NaN' in str(error) else 'length'
+            now = time.monotonic()
+            if now - self._last_warning.get(kind, -math.inf) >= 5.0:
+                self._last_warning[kind] = now
+                self.get_logger().warning(f'ignored a JointState: {error}')
             return
         fresh = [name for name in unknown if name not in self._warned]
         if fresh:

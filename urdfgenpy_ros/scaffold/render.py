@@ -19,7 +19,6 @@ from __future__ import annotations
 import copy
 import datetime
 import hashlib
-import os
 from pathlib import Path
 import shutil
 
@@ -208,7 +207,4 @@ def create_package(spec: PackageSpec, robot: Robot, *, force: bool = False,
         where = error.filename or root
         raise UrdfgenpyError(f'cannot write {where}: {error.strerror or error} (choose a '
                              'writable --destination-directory)') from None
-    for path in written:
-        if path.suffix == '.py' and 'launch' in path.parts:
-            os.chmod(path, 0o644)
     return written, warnings
