@@ -29,6 +29,7 @@ from urdfgenpy_ros.cli.inertia import inertia
 from urdfgenpy_ros.cli.init import init
 from urdfgenpy_ros.cli.render import render
 from urdfgenpy_ros.cli.tree import tree
+from urdfgenpy_ros.cli.view import view
 from urdfgenpy_ros.errors import UrdfgenpyError
 
 EXIT_UNREADABLE = 2
@@ -59,5 +60,5 @@ def main(ctx: click.Context, verbose: bool) -> None:
     ctx.obj = {'verbose': verbose}
 
 
-for command in (example, tree, convert, check, inertia, init, graph, render):
+for command in (example, tree, convert, check, inertia, init, graph, render, view):
     main.add_command(command)

@@ -192,3 +192,29 @@ def robot_parts(robot: Robot, kind: str = 'visual', cache: MeshCache | None = No
                 rgba = (0.95, 0.55, 0.1, 0.6)
             parts.append(Part(link.name, kind, index, mesh, rgba or DEFAULT_RGBA, textured))
     return parts
+
+
+def inertia_box(inertial: Any) -> tuple[Any, tuple[float, float, float], bool]:
+    """
+    Return the box of uniform density with the same mass and inertia, as Gazebo shows it.
+
+    Returns its pose in the link frame (centre of mass, principal axes), its sides, and
+    whether the tensor is physical (positive-definite, triangle inequality); for a bad
+    tensor the sides are clamped to stay drawable, so the box can be shown in warning red.
+    """
+    import numpy
+    tensor = numpy.array(inertial.tensor, dtype=float)
+    mass = float(inertial.mass)
+    moments, axes = numpy.linalg.eigh(tensor)
+    if numpy.linalg.det(axes) < 0.0:
+        axes[:, 2] = -axes[:, 2]
+    a, b, c = moments
+    squares = [6.0 / mass * (b + c - a), 6.0 / mass * (a + c - b), 6.0 / mass * (a + b - c)] \
+        if mass > 0.0 else [0.0, 0.0, 0.0]
+    valid = mass > 0.0 and bool((moments > 0.0).all()) and all(s > 0.0 for s in squares)
+    sides = tuple(float(numpy.sqrt(max(s, 0.0))) for s in squares)
+    floor = max(max(sides) * 0.05, 1e-3)
+    drawn = (max(sides[0], floor), max(sides[1], floor), max(sides[2], floor))
+    pose = origin_matrix(inertial.origin)
+    pose[:3, :3] = pose[:3, :3] @ axes
+    return pose, drawn, valid
