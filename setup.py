@@ -46,7 +46,7 @@ setup(
             'flake8-blind-except', 'flake8-builtins', 'flake8-class-newline',
             'flake8-comprehensions', 'flake8-deprecated', 'flake8-docstrings',
             'flake8-import-order', 'flake8-quotes', 'catkin-pkg',
-            'graphviz', 'vtk>=9.3', 'viser>=1.0', 'selenium',
+            'graphviz', 'vtk>=9.3', 'viser>=1.0', 'selenium', 'Pillow',
             # colcon builds of the ament_cmake description packages `urdfgenpy init` makes
             'ros-jazzy-ament-cmake',
             'ros-jazzy-ament-cmake-core',

@@ -126,11 +126,17 @@ class MeshCache:
             return None
         key = str(path)
         if key not in self._meshes:
+            import logging
+            logger = logging.getLogger('trimesh')
+            level = logger.level
+            logger.setLevel(logging.CRITICAL)  # it logs tracebacks for a missing texture
             try:
                 loaded = trimesh.load(key, force='mesh')
             except Exception as error:  # noqa: B902 - trimesh raises many kinds
                 self.problems.append(f'{path}: cannot read the mesh ({error})')
                 loaded = None
+            finally:
+                logger.setLevel(level)
             self._meshes[key] = loaded
         loaded = self._meshes[key]
         if loaded is None:

@@ -217,17 +217,19 @@ class RobotViewer:
         with joints:
             for name in free_joints(robot):
                 lower, upper = slider_range(robot, name)
-                value = min(max(float(keep.get(name, 0.0)), lower), upper)
                 step = _step(lower, upper)
-                slider = gui.add_slider(name, min=lower, max=upper if upper > lower
+                movable = upper > lower  # else a fixed value (or limits the findings name)
+                value = min(max(float(keep.get(name, 0.0)), lower), upper) if movable \
+                    else lower
+                slider = gui.add_slider(name, min=lower, max=upper if movable
                                         else lower + step, step=step, initial_value=value,
-                                        disabled=upper <= lower)
+                                        disabled=not movable)
                 slider.on_update(self._slider_moved)
                 self._sliders[name] = slider
             if not self._sliders:
                 gui.add_markdown('no movable joints')
             reset = gui.add_button('Zero all joints')
-            reset.on_click(lambda _: self.set_positions({name: 0.0 for name in self._sliders},
+            reset.on_click(lambda _: self.set_positions(dict.fromkeys(self._sliders, 0.0),
                                                         notify=True))
         show = gui.add_folder('Show')
         self._gui.append(show)
