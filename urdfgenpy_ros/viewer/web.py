@@ -26,6 +26,8 @@ buttons that select the link or joint they name. ``watch()`` reloads when a file
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Mapping
+import contextlib
+import io
 import math
 from os import PathLike
 import re
@@ -111,8 +113,11 @@ class RobotViewer:
         self.status = ''
         self.version = 0  # counts scene rebuilds (loads and reloads)
         self.positions: dict[str, float] = {}
-        self.server = self.viser.ViserServer(host=host, port=port, verbose=False)
-        self.server.gui.configure_theme(control_width='large', show_logo=False)
+        with contextlib.redirect_stdout(io.StringIO()):  # viser prints a banner anyway
+            self.server = self.viser.ViserServer(host=host, port=port, verbose=False)
+        # No share button: it would open a tunnel to viser's public relay; the page is local.
+        self.server.gui.configure_theme(control_width='large', show_logo=False,
+                                        show_share_button=False)
         self.server.scene.set_up_direction('+z')
         self._build(self.robot, dict(initial or {}))
 
@@ -394,4 +399,5 @@ class RobotViewer:
     def close(self) -> None:
         """Stop watching and serving."""
         self._stop.set()
-        self.server.stop()
+        with contextlib.redirect_stdout(io.StringIO()):
+            self.server.stop()
