@@ -111,7 +111,7 @@ def numbers(owner: str, names: tuple[str, ...], values: tuple,
 def are_finite_floats(*values: object) -> bool:
     """Return True when every value already is a finite float (the fast path)."""
     for value in values:
-        if type(value) is not float or value - value != 0.0:  # type: ignore[operator]
+        if type(value) is not float or value - value != 0.0:
             return False
     return True
 
@@ -119,7 +119,7 @@ def are_finite_floats(*values: object) -> bool:
 def vec3(owner: str, field: str, value: Sequence[object]) -> Vec3:
     """Return a 3-vector of finite floats; raise ValueError when malformed."""
     try:
-        x, y, z = value  # type: ignore[misc]
+        x, y, z = value
         if type(value) is tuple and type(x) is float and type(y) is float and type(z) is float:
             result = value
         else:

@@ -17,6 +17,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field, KW_ONLY
+from collections.abc import Sequence
 import math
 
 from urdfgenpy_ros import checks
@@ -52,7 +53,7 @@ class Origin:
     # The URDF attribute text, made once by the writer (the origin is immutable).
     text: str | None = field(default=None, compare=False, repr=False, init=False)
 
-    def __init__(self, xyz: Vec3 = _ZERO, rpy: Vec3 = _ZERO, *,
+    def __init__(self, xyz: Sequence[float] = _ZERO, rpy: Sequence[float] = _ZERO, *,
                  source: SourceLocation | None = None, extras: Preserved | None = None) -> None:
         set_xyz, set_rpy, set_source, set_extras, set_text = _ORIGIN_SLOTS
         set_xyz(self, xyz if xyz is _ZERO else checks.vec3('origin', 'xyz', xyz))

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, KW_ONLY
 from enum import Enum
+from collections.abc import Sequence
 from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros import checks
@@ -191,6 +192,19 @@ class Joint:
     sensors: list[Sensor] = field(default_factory=list)
     source: SourceLocation | None = _hidden()
     extras: Preserved | None = _hidden()
+
+    if TYPE_CHECKING:
+        # The generated __init__ accepts a type name too ('revolute'); say so to checkers.
+        def __init__(self, name: str, type: JointType | str,  # noqa: A002
+                     parent: str, child: str, *, origin: Origin = IDENTITY,
+                     axis: Sequence[float] | None = None, limit: JointLimit | None = None,
+                     dynamics: JointDynamics | None = None, mimic: JointMimic | None = None,
+                     safety_controller: SafetyController | None = None,
+                     calibration: JointCalibration | None = None,
+                     extensions: list[Extension] = ...,
+                     sensors: list[Sensor] = ...,
+                     source: SourceLocation | None = None,
+                     extras: Preserved | None = None) -> None: ...
 
     def __post_init__(self) -> None:
         """Check the name and type; coerce the axis."""

@@ -56,6 +56,10 @@ class Collision:
     extras: Preserved | None = field(default=None, compare=False, repr=False)
 
 
+Shape = Visual | Collision
+"""A visual or a collision: a geometry placed at an origin in its link."""
+
+
 @dataclass(slots=True)
 class Link:
     """

@@ -92,7 +92,7 @@ def _origin(data: Any, degrees: bool, where: SourceLocation) -> Origin:
                          'D002') from None
     if degrees:
         rpy = tuple(math.radians(v) for v in rpy)
-    return Origin(xyz, rpy)  # type: ignore[arg-type]
+    return Origin(xyz, rpy)
 
 
 def _convention(value: Any, where: SourceLocation) -> DHConvention:
@@ -194,7 +194,7 @@ def write_table(table: DHTable, path: str | PathLike[str], degrees: bool = False
 
     rows = []
     for row in table.rows:
-        limits = (row.lower, row.upper)
+        limits: tuple[float | None, ...] = (row.lower, row.upper)
         if row.joint_type == 'revolute':
             limits = tuple(None if v is None else angle(v) for v in limits)
         rows.append({'joint': row.joint, 'a': row.a, 'alpha': angle(row.alpha), 'd': row.d,

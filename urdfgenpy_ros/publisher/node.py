@@ -138,8 +138,9 @@ class PublisherNode(Node):
         return robot, watched
 
     def _joint_states(self, robot: Robot) -> JointStates:
-        zeros = {name: parameter.value
-                 for name, parameter in self.get_parameters_by_prefix('zeros').items()}
+        # rclpy annotates the values as plain values; they are Parameter objects.
+        parameters: dict[str, Any] = dict(self.get_parameters_by_prefix('zeros'))
+        zeros = {name: parameter.value for name, parameter in parameters.items()}
         options = JointStateOptions(
             zeros=zeros, use_mimic_tags=self.values['use_mimic_tags'],
             use_smallest_joint_limits=self.values['use_smallest_joint_limits'],
@@ -192,7 +193,7 @@ class PublisherNode(Node):
         return response
 
     def _modification_times(self) -> dict[str, float]:
-        stamps = {}
+        stamps: dict[str, float] = {}
         for file in self.watched:
             try:
                 stamps[file] = os.stat(file).st_mtime_ns
