@@ -16,14 +16,14 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field, KW_ONLY
 from enum import Enum
-from collections.abc import Sequence
 from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.checks import Vec3
-from urdfgenpy_ros.errors import SourceLocation
+from urdfgenpy_ros.errors import ModelError, SourceLocation
 from urdfgenpy_ros.geometry import IDENTITY, Origin
 from urdfgenpy_ros.preserved import Preserved
 
@@ -211,7 +211,7 @@ class Joint:
         checks.name('joint', self.name)
         kind = _TYPES.get(self.type)
         if kind is None:
-            raise ValueError(f'joint {self.name!r}: unknown type {self.type!r} '
+            raise ModelError(f'joint {self.name!r}: unknown type {self.type!r} '
                              f'(use one of {_TYPE_NAMES})')
         self.type = kind
         if not (type(self.parent) is str and self.parent and type(self.child) is str
@@ -221,7 +221,7 @@ class Joint:
         if self.axis is not None:
             self.axis = checks.vec3(f'joint {self.name!r}', 'axis', self.axis)
             if self.axis == (0.0, 0.0, 0.0) and kind in _ONE_DOF and checks.enabled():
-                raise ValueError(f'joint {self.name!r}: axis must not be zero for a {kind} '
+                raise ModelError(f'joint {self.name!r}: axis must not be zero for a {kind} '
                                  'joint (give the direction of motion, e.g. (0, 0, 1))')
 
     @property

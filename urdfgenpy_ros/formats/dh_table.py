@@ -132,6 +132,8 @@ def _read_yaml(text: str, file: str) -> DHTable:
     where = SourceLocation(file, 1, 1)
     if not isinstance(data, dict) or 'rows' not in data or 'convention' not in data:
         raise ParseError("a DH table needs 'convention' and 'rows'", where, 'D001')
+    if not isinstance(data['rows'], list):
+        raise ParseError("'rows' is a list of rows (- {joint: 1, a: 0.0, ...})", where, 'D001')
     degrees = bool(data.get('degrees', False))
     rows = []
     lines = text.splitlines()

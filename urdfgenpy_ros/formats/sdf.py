@@ -30,6 +30,7 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
+from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.formats._xml import fmt, fmt_vec, write_text
 from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Mesh, Origin, Sphere
 from urdfgenpy_ros.joint import Joint, JointType
@@ -174,7 +175,7 @@ def write_sdf(robot: Robot, path: str | PathLike[str] | None = None,
              for joint in robot.joints}
     for joint in robot.joints:
         if joint.type is JointType.PLANAR:
-            raise ValueError(f'joint {joint.name!r}: SDF has no planar joint (model it as '
+            raise ModelError(f'joint {joint.name!r}: SDF has no planar joint (model it as '
                              'two prismatic joints and a revolute one)')
     for link in robot.links:
         parent = parent_joint.get(link.name)

@@ -25,6 +25,7 @@ from __future__ import annotations
 from os import PathLike
 from typing import Any, TYPE_CHECKING
 
+from urdfgenpy_ros.errors import ModelTypeError
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._xml import (
     Attr, element, esc, fmt, fmt_vec, fragment, INDENT, verbatim, write_text)
@@ -296,7 +297,7 @@ class UrdfWriter:
             if geometry.scale is not None:
                 attrs.append(('scale', geometry.scale, fmt_vec(geometry.scale), _ONE3))
         else:
-            raise TypeError(f'cannot write geometry of type {type(geometry).__name__}')
+            raise ModelTypeError(f'cannot write geometry of type {type(geometry).__name__}')
         shape = element(inner, tag, attrs, geometry.extras, [])
         return element(pad, 'geometry', [], _sub(geometry.extras, 'geometry'), [shape])
 

@@ -42,6 +42,7 @@ from std_srvs.srv import Trigger
 from urdfgenpy_ros.errors import Severity, UrdfgenpyError
 from urdfgenpy_ros.model_source import load_model
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
+from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
 
 _STRINGS = ParameterType.PARAMETER_STRING_ARRAY
@@ -154,10 +155,10 @@ class PublisherNode(Node):
         try:
             robot, watched = self._load()
             states = self._joint_states(robot)
-        except UrdfgenpyError as error:
+        except KNOWN_ERRORS as error:
             self.get_logger().error(f'reload failed, still publishing the last good model: '
-                                    f'{error}')
-            return False, str(error)
+                                    f'{one_line(error)}')
+            return False, one_line(error)
         previous = dict(self.states.free)
         for name, joint in states.free.items():
             if name in previous:
@@ -296,8 +297,8 @@ def main(args: list[str] | None = None) -> int:
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
-    except UrdfgenpyError as error:
-        rclpy.logging.get_logger('urdfgenpy_publisher').error(str(error))
+    except KNOWN_ERRORS as error:
+        rclpy.logging.get_logger('urdfgenpy_publisher').error(one_line(error))
         return 1
     except rclpy.exceptions.InvalidParameterTypeException as error:
         rclpy.logging.get_logger('urdfgenpy_publisher').error(
