@@ -72,8 +72,13 @@ class PublisherNode(Node):
     """Publish a validated robot description and its joint states."""
 
     def __init__(self, **kwargs: Any) -> None:
-        super().__init__('urdfgenpy_publisher',
-                         automatically_declare_parameters_from_overrides=True, **kwargs)
+        try:
+            super().__init__('urdfgenpy_publisher',
+                             automatically_declare_parameters_from_overrides=True, **kwargs)
+        except ValueError as error:  # rclpy refusing an override it cannot type, e.g. []
+            raise UrdfgenpyError(
+                f'bad parameter: {error} (an empty list has no type in ROS 2: leave the '
+                'parameter out to get its default)') from None
         for name, (default, kind, description) in _PARAMETERS.items():
             descriptor = ParameterDescriptor(description=description)
             if kind is None:
@@ -141,7 +146,14 @@ class PublisherNode(Node):
     def _joint_states(self, robot: Robot) -> JointStates:
         # rclpy annotates the values as plain values; they are Parameter objects.
         parameters: dict[str, Any] = dict(self.get_parameters_by_prefix('zeros'))
-        zeros = {name: parameter.value for name, parameter in parameters.items()}
+        zeros = {}
+        for name, parameter in parameters.items():
+            value = parameter.value
+            if isinstance(value, bool) or not isinstance(value, (int, float)) \
+                    or not math.isfinite(value):
+                raise UrdfgenpyError(f"parameter 'zeros.{name}': {value!r} is not a finite "
+                                     'number (the joint position, in rad or m)')
+            zeros[name] = float(value)
         options = JointStateOptions(
             zeros=zeros, use_mimic_tags=self.values['use_mimic_tags'],
             use_smallest_joint_limits=self.values['use_smallest_joint_limits'],
