@@ -266,20 +266,25 @@ CORPUS_PACKAGES = {
 }
 
 
-def ament_index(root: Path) -> dict[str, str]:
+FIXTURE_PACKAGES = {'fixture_description': FIXTURES / 'packages' / 'fixture_description'}
+
+
+def ament_index(root: Path, packages: dict[str, Path] | None = None) -> dict[str, str]:
     """
-    Make a real ament index of the corpus packages under ``root``.
+    Make a real ament index under ``root`` of ``packages`` (default: the corpus packages).
 
     Return the environment that makes ament_index_python (and so plain xacro) find them.
     """
+    if packages is None:
+        packages = {name: CORPUS / folder for name, folder in CORPUS_PACKAGES.items()}
     share = root / 'share'
     markers = share / 'ament_index' / 'resource_index' / 'packages'
     markers.mkdir(parents=True, exist_ok=True)
-    for name, folder in CORPUS_PACKAGES.items():
+    for name, folder in packages.items():
         (markers / name).write_text('')
         link = share / name
         if not link.exists():
-            link.symlink_to(CORPUS / folder, target_is_directory=True)
+            link.symlink_to(folder, target_is_directory=True)
     return {'AMENT_PREFIX_PATH': str(root)}
 
 
