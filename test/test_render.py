@@ -170,3 +170,36 @@ def test_without_vtk_one_line_names_the_extra(ptu: RobotType, tmp_path: Path,
     assert result.exit_code == 2
     assert result.stderr == ('urdfgenpy: urdfgenpy render needs the Python package '
                              "'vtkmodules': pip install 'urdfgenpy_ros[render]'\n")
+
+
+def test_init_puts_the_picture_and_the_tree_in_the_readme(tmp_path: Path) -> None:
+    _require_renderer()
+    pytest.importorskip('graphviz')
+    from lxml import etree
+    result = CliRunner().invoke(main, ['init', 'ptu_description', '--destination-directory',
+                                       str(tmp_path)])
+    assert result.exit_code == 0, result.output
+    package = tmp_path / 'ptu_description'
+    readme = (package / 'README.md').read_text()
+    assert '![the robot](doc/robot.png)' in readme
+    assert '![its kinematic tree](doc/tree.svg)' in readme
+    image = _read_png(package / 'doc/robot.png')
+    assert (image[:, :, :3] < 250).any(axis=2).mean() > 0.05  # the robot, not a blank
+    texts = {text.text for text in etree.parse(str(package / 'doc/tree.svg')).iter(
+        '{http://www.w3.org/2000/svg}text')}
+    assert {'base_link', 'base_plate', 'pan_link', 'tilt_link', 'pan_joint'} <= texts
+
+
+def test_init_without_the_extras_says_how_to_draw_them(tmp_path: Path,
+                                                       monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setitem(sys.modules, 'vtkmodules', None)  # as if not installed
+    monkeypatch.setitem(sys.modules, 'graphviz', None)
+    result = CliRunner().invoke(main, ['init', 'ptu_description', '--destination-directory',
+                                       str(tmp_path)])
+    assert result.exit_code == 0, result.output
+    assert result.stderr == ''
+    package = tmp_path / 'ptu_description'
+    assert not (package / 'doc').exists()
+    readme = (package / 'README.md').read_text()
+    assert 'doc/robot.png)' not in readme
+    assert 'urdfgenpy render urdf/ptu.urdf.xacro -p .. -o doc/robot.png' in readme

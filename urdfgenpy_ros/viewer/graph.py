@@ -92,15 +92,23 @@ def save_graph(robot: Robot, path: str | PathLike[str], file_format: str | None 
     if kind not in FORMATS:
         raise UrdfgenpyError(f'{path}: unknown diagram format {kind!r} (use one of '
                              f'{", ".join(FORMATS)})')
+    path.write_bytes(diagram(robot, kind))
+    return path
+
+
+def diagram(robot: Robot, file_format: str = 'svg') -> bytes:
+    """
+    Return the tree of ``robot`` drawn as ``file_format`` (svg, png, pdf, or dot source).
+
+    :raises MissingDependencyError: without the Python package graphviz.
+    :raises UrdfgenpyError: without Graphviz's ``dot`` program.
+    """
     dot = to_dot(robot)
-    if kind == 'dot':
-        path.write_text(dot.source, encoding='utf-8')
-        return path
+    if file_format == 'dot':
+        return dot.source.encode()
     import graphviz
     try:
-        data = dot.pipe(format=kind)
+        return dot.pipe(format=file_format)
     except graphviz.ExecutableNotFound:
         raise UrdfgenpyError("drawing the tree needs Graphviz's 'dot' program: apt install "
                              "graphviz (or your system's package of it)") from None
-    path.write_bytes(data)
-    return path

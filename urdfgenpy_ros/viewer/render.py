@@ -231,8 +231,7 @@ def render(robot: Robot, values: Mapping[str, float] | None = None, view: str = 
     return Picture(numpy.flipud(pixels).copy(), camera, cache.problems)
 
 
-def save_picture(picture: Picture, path: str | PathLike[str]) -> Path:
-    """Write the picture as PNG."""
+def _png_writer(picture: Picture) -> Any:
     import numpy
     from vtkmodules.util.numpy_support import numpy_to_vtk
     from vtkmodules.vtkCommonDataModel import vtkImageData
@@ -243,7 +242,23 @@ def save_picture(picture: Picture, path: str | PathLike[str]) -> Path:
     flat = numpy.ascontiguousarray(numpy.flipud(picture.pixels)).reshape(-1, 3)
     image.GetPointData().SetScalars(numpy_to_vtk(flat, deep=True))
     writer = vtkPNGWriter()
-    writer.SetFileName(str(path))
     writer.SetInputData(image)
+    return writer
+
+
+def save_picture(picture: Picture, path: str | PathLike[str]) -> Path:
+    """Write the picture as PNG."""
+    writer = _png_writer(picture)
+    writer.SetFileName(str(path))
     writer.Write()
+    if writer.GetErrorCode():
+        raise UrdfgenpyError(f'{path}: cannot write the picture (is the folder writable?)')
     return Path(path)
+
+
+def picture_png(picture: Picture) -> bytes:
+    """Return the picture as PNG bytes."""
+    writer = _png_writer(picture)
+    writer.WriteToMemoryOn()
+    writer.Write()
+    return bytes(writer.GetResult())
