@@ -165,11 +165,11 @@ class RobotViewer:
                    + matrices[part.link][:3, 3] for part in parts if part.link in matrices]
         points = numpy.concatenate(corners) if corners else numpy.zeros((1, 3))
         low, high = points.min(axis=0), points.max(axis=0)
-        centre, size = (low + high) / 2.0, self._size
+        centre, size = (low + high) / 2.0, max(float(numpy.max(high - low)), 0.05)
         camera = self.server.initial_camera
         camera.look_at = tuple(float(v) for v in centre)
         camera.position = tuple(float(v) for v in centre + size * numpy.array(
-            [1.5, -1.3, 1.0]))
+            [1.0, -0.9, 0.6]))
         cell = 10.0 ** math.floor(math.log10(size))
         self.server.scene.add_grid('/grid', width=20 * cell, height=20 * cell,
                                    cell_size=cell / 10.0, section_size=cell,
@@ -188,12 +188,14 @@ class RobotViewer:
         name = f'{_node_name(part.link)}/{part.kind}_{part.index}'
         visible = part.kind == 'visual'
         if part.textured:
-            handle = self.server.scene.add_mesh_trimesh(name, part.mesh, visible=visible)
+            handle = self.server.scene.add_mesh_trimesh(name, part.mesh, visible=visible,
+                                                        cast_shadow=False, receive_shadow=False)
         else:
             handle = self.server.scene.add_mesh_simple(
                 name, part.mesh.vertices, part.mesh.faces, color=_rgb(part.rgba),
                 opacity=part.rgba[3] if part.rgba[3] < 1.0 else None, visible=visible,
-                flat_shading=len(part.mesh.faces) < 64)
+                flat_shading=len(part.mesh.faces) < 64, cast_shadow=False,
+                receive_shadow=False)  # shadows cost seconds in a software-rendered browser
         self._layers[part.kind].append(handle)
 
     def _add_inertia(self, robot: Robot) -> None:
