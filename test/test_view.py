@@ -198,3 +198,15 @@ def test_without_viser_one_line_names_the_extra(tmp_path: Path,
     assert result.exit_code == 2
     assert result.stderr == ('urdfgenpy: The robot viewer needs the Python package '
                              "'viser': pip install 'urdfgenpy_ros[view]'\n")
+
+
+def test_inertia_box_has_the_sides_of_the_solid_and_flags_bad_tensors() -> None:
+    pytest.importorskip('trimesh')
+    from urdfgenpy_ros import Inertial, Origin
+    from urdfgenpy_ros.viewer.scene import inertia_box
+    solid = Inertial.from_box(2.0, 0.3, 0.2, 0.1, origin=Origin((0.1, 0.2, 0.3), (0, 0, 0.4)))
+    pose, sides, valid = inertia_box(solid)
+    assert valid and sorted(sides) == pytest.approx([0.1, 0.2, 0.3])
+    assert list(pose[:3, 3]) == pytest.approx([0.1, 0.2, 0.3])  # at the centre of mass
+    impossible = Inertial(1.0, 1.0, 0.0, 0.0, 0.1, 0.0, 0.1)  # ixx > iyy + izz
+    assert not inertia_box(impossible)[2]
