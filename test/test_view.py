@@ -128,6 +128,10 @@ def test_page_draws_the_robot_and_its_sliders_move_it(tmp_path: Path, browser) -
         assert findings, 'the fixture has findings (missing meshes)'
         for finding in findings:
             assert f'{finding.code} {finding.element}' in page
+        for label, layer, count in (('Collision', 'collision', 9), ('Inertia (CoM, box)',
+                                                                    'inertia', 16)):
+            _toggle(browser, label)  # sent to the page on first use
+            browser.wait_for(lambda: len(viewer._layers[layer]) == count)
         for entry in browser.driver.execute_script(
                 "return performance.getEntriesByType('resource').map(e => e.name)"):
             assert entry.startswith(('http://127.0.0.1', 'ws://127.0.0.1', 'blob:', 'data:'))

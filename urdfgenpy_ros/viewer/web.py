@@ -141,21 +141,21 @@ class RobotViewer:
             self.robot, self.selected = robot, None
             if self._validate:
                 self.findings = robot.validate(search_paths=self._search_paths)
-            cache = MeshCache(robot, self._search_paths)
-            visuals = robot_parts(robot, 'visual', cache)
-            collisions = robot_parts(robot, 'collision', cache)
-            self._size = self._extent(visuals + collisions)
+            self._cache = MeshCache(robot, self._search_paths)
+            visuals = robot_parts(robot, 'visual', self._cache)
+            shown = visuals or robot_parts(robot, 'collision', self._cache)
+            self._size = self._extent(shown)
             for link in robot.links:
                 self._frames[link.name] = self.server.scene.add_frame(
                     _node_name(link.name), show_axes=False, axes_length=0.15 * self._size,
                     axes_radius=0.006 * self._size)
-            for part in visuals + collisions:
-                self._add_part(part)
-            self._add_inertia(robot)
+            for part in visuals:  # collisions and inertia are sent when first shown
+                self._add_part(part, True)
+            self._built = {'visual'}
             self._add_controls(robot, keep)
             self.version += 1
         self._apply(self._positions_from_sliders())
-        self._frame_camera(visuals or collisions)
+        self._frame_camera(shown)
 
     def _frame_camera(self, parts: list[Part]) -> None:
         """Point the initial camera at the posed robot and lay a grid under it."""
@@ -184,9 +184,8 @@ class RobotViewer:
         bounds = numpy.array([part.mesh.bounds for part in parts])
         return float(max(numpy.ptp(bounds.reshape(-1, 3), axis=0).max(), 0.05))
 
-    def _add_part(self, part: Part) -> None:
+    def _add_part(self, part: Part, visible: bool) -> None:
         name = f'{_node_name(part.link)}/{part.kind}_{part.index}'
-        visible = part.kind == 'visual'
         if part.textured:
             handle = self.server.scene.add_mesh_trimesh(name, part.mesh, visible=visible,
                                                         cast_shadow=False, receive_shadow=False)
@@ -206,11 +205,11 @@ class RobotViewer:
             pose, sides, valid = inertia_box(link.inertial)
             base = _node_name(link.name)
             self._layers['inertia'].append(self.server.scene.add_icosphere(
-                f'{base}/centre_of_mass', radius=radius, color=(20, 20, 20), visible=False,
+                f'{base}/centre_of_mass', radius=radius, color=(20, 20, 20),
                 position=tuple(pose[:3, 3])))
             self._layers['inertia'].append(self.server.scene.add_box(
                 f'{base}/inertia', color=(60, 140, 255) if valid else (230, 30, 30),
-                dimensions=sides, opacity=0.35, visible=False, wxyz=_wxyz(pose),
+                dimensions=sides, opacity=0.35, wxyz=_wxyz(pose),
                 position=tuple(pose[:3, 3])))
 
     def _add_controls(self, robot: Robot, keep: Mapping[str, float]) -> None:
@@ -275,6 +274,13 @@ class RobotViewer:
                 for frame in self._frames.values():
                     frame.show_axes = visible
                 return
+            if visible and layer not in self._built:  # sent on first use: a faster load
+                self._built.add(layer)
+                if layer == 'inertia':
+                    self._add_inertia(self.robot)
+                else:
+                    for part in robot_parts(self.robot, layer, self._cache):
+                        self._add_part(part, True)
             for handle in self._layers[layer]:
                 handle.visible = visible
 
