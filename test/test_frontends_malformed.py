@@ -27,8 +27,10 @@ import subprocess
 import tempfile
 
 from click.testing import CliRunner
-from hypothesis import given, HealthCheck, settings, strategies as st
 import pytest
+
+pytest.importorskip('hypothesis')  # its decorators are needed at import time
+from hypothesis import given, HealthCheck, settings, strategies as st  # noqa: E402,I100
 
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.examples import pan_tilt_unit
