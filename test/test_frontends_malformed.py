@@ -29,12 +29,13 @@ import tempfile
 from click.testing import CliRunner
 import pytest
 
-pytest.importorskip('hypothesis')  # its decorators are needed at import time
-from hypothesis import given, HealthCheck, settings, strategies as st  # noqa: E402,I100
-
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.examples import pan_tilt_unit
 from urdfgenpy_ros.scaffold.command import main as init_main
+
+hypothesis = pytest.importorskip('hypothesis')  # its decorators are needed at import time
+st = pytest.importorskip('hypothesis.strategies')
+given, HealthCheck, settings = hypothesis.given, hypothesis.HealthCheck, hypothesis.settings
 
 DH_YAML = """convention: standard
 degrees: false

@@ -22,7 +22,6 @@ import pytest
 from urdfgenpy_ros import Box, Cylinder, Inertial, Mesh, Sphere
 
 
-
 @pytest.fixture
 def trimesh():
     """Return trimesh, the independent integrator (skip without it)."""

@@ -43,6 +43,7 @@ def _ros() -> None:
     for module in ('rclpy', 'sensor_msgs.msg', 'std_msgs.msg', 'std_srvs.srv'):
         require_module(module)
 
+
 MIMIC_CHAIN = FIXTURES / 'robots/mimic_fingers.urdf'
 ARM_PACKAGE = FIXTURES / 'packages/fixture_description'
 ARM = ARM_PACKAGE / 'urdf/arm.urdf.xacro'
