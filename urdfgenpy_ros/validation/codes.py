@@ -58,8 +58,9 @@ CODES: dict[str, tuple[Severity, str]] = {
     'I203': (E, 'inertia violates the triangle inequality'),
     'I204': (W, 'inertia implausible for the link geometry'),
     'I205': (W, 'inertia on the root link'),
-    'I206': (W, 'link without inertial above moving links'),
+    'I206': (W, 'link without inertial (or massless) above moving links'),
     'I207': (W, 'moving link without inertial (fine for RViz, not for simulation)'),
+    'I208': (W, 'inertia an engine could not use alone, on a link merged into its parent'),
     # references and values
     'R301': (W, 'material not defined'),
     'R302': (E, 'collision mesh file not found'),
