@@ -82,10 +82,10 @@ VERDICTS = {
     'S008': (False, True), 'J101': (True, False), 'J103': (False, True),
     'I201': (True, False), 'I207': (True, False), 'I202': (True, False),
     'I203': (True, False), 'R302': (True, False), 'R303': (True, False),
-    'R305': (False, True),
+    'R304': (True, False), 'R305': (False, True),
     # Errors both accept silently: the check is the only thing that catches them.
     'J104': (True, True), 'J105': (True, True), 'J107': (True, True), 'J108': (True, True),
-    'J109': (True, True), 'R304': (True, True),
+    'J109': (True, True),
 }
 
 

@@ -68,6 +68,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'R304': (E, 'non-positive size or zero scale'),
     'R305': (E, 'not a finite number'),
     'R306': (W, 'visual mesh file not found'),
+    'R307': (W, 'non-positive size or zero scale on a visual (it draws nothing)'),
     # conventions
     'C401': (W, "no link called 'base_link'"),
 }
