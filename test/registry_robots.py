@@ -99,9 +99,9 @@ def absolute_meshes(text: str, base: Path) -> str:
     """
     Return URDF text whose mesh URIs are absolute paths, for consumers without ROS.
 
-    ``package://NAME/...`` is looked up in :func:`packages` and ``file://relative`` (the
-    gym-ignition convention) next to ``base``, the folder of the original file. This is the
-    test's own resolution, independent of the package's resolver.
+    ``package://NAME/...`` is looked up in :func:`packages`; ``file://relative`` (the
+    gym-ignition convention) and relative paths are taken from ``base``, the folder of the
+    original file. This is the test's own resolution, independent of the package's resolver.
     """
     from lxml import etree
     root = etree.fromstring(text.encode())
@@ -114,4 +114,6 @@ def absolute_meshes(text: str, base: Path) -> str:
                 mesh.set('filename', str(found[name] / rest))
         elif uri.startswith('file://') and not uri.startswith('file:///'):
             mesh.set('filename', str(base / uri[len('file://'):]))
+        elif uri and '://' not in uri and not Path(uri).is_absolute():
+            mesh.set('filename', str(base / uri))
     return etree.tostring(root, encoding='unicode')
