@@ -19,7 +19,7 @@ from __future__ import annotations
 from pathlib import Path
 import random
 
-from helpers import corpus_file, full_robot, require_module
+from helpers import corpus_cases, corpus_file, full_robot, require_module
 import pytest
 from registry_robots import robot as registry_robot
 
@@ -52,7 +52,7 @@ def _source(source: str) -> Robot:
 
 
 @pytest.mark.parametrize('source', ['every_element', *REGISTRY,
-                                    *(f'corpus:{name}' for name in CORPUS_FILES)])
+                                    *corpus_cases([f'corpus:{name}' for name in CORPUS_FILES])])
 def test_link_poses_equal_yourdfpy_at_random_states(source: str, tmp_path: Path) -> None:
     robot = _source(source)
     path = tmp_path / 'robot.urdf'

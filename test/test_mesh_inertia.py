@@ -20,7 +20,7 @@ from pathlib import Path
 import warnings
 
 from click.testing import CliRunner
-from helpers import corpus_file, require_module
+from helpers import corpus_cases, corpus_file, require_module
 import pytest
 from registry_robots import packages
 
@@ -138,10 +138,10 @@ def test_generated_meshes_agree_with_trimesh_mass_properties(
     _assert_equals_trimesh(path)
 
 
-@pytest.mark.parametrize('name', ['pybullet_data/cube.obj',
-                                  'pybullet_data/quadruped/tmotor3.obj',
-                                  'urdf_tutorial/meshes/l_finger.dae',
-                                  'urdf_tutorial/meshes/l_finger_tip.dae'])
+@pytest.mark.parametrize('name', corpus_cases(['pybullet_data/cube.obj',
+                                               'pybullet_data/quadruped/tmotor3.obj',
+                                               'urdf_tutorial/meshes/l_finger.dae',
+                                               'urdf_tutorial/meshes/l_finger_tip.dae']))
 def test_corpus_meshes_agree_with_trimesh_mass_properties(name: str) -> None:
     _assert_equals_trimesh(corpus_file(name))
 

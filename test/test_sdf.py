@@ -22,7 +22,8 @@ import shutil
 import subprocess
 
 from helpers import (
-    corpus_file, full_robot, load_yourdfpy, pybullet_load, REPO, require_module, require_tool)
+    corpus_cases, corpus_file, full_robot, load_yourdfpy, pybullet_load, REPO, require_module,
+    require_tool)
 import pytest
 from registry_robots import absolute_meshes, robot as registry_robot
 
@@ -152,7 +153,8 @@ def _same_pose(a: list[float], b: list[float]) -> bool:
 
 @pytest.mark.parametrize('name', ['ptu', 'every_element', 'ur5_skeleton', 'panda_skeleton',
                                   'upkie', 'cookie', 'icub', 'so101', 'kinova_robotiq', 'panda',
-                                  'r2d2', 'pr2_gripper', 'minitaur', 'test_robot'])
+                                  *corpus_cases(['r2d2', 'pr2_gripper', 'minitaur',
+                                                 'test_robot'])])
 def test_sdf_loads_in_sdformat_and_link_poses_match_the_urdf(
         name: str, check_sdf, tmp_path: Path) -> None:
     robot = _robot(name)
@@ -174,7 +176,7 @@ def test_sdf_loads_in_sdformat_and_link_poses_match_the_urdf(
 @pytest.mark.parametrize('name', [
     'ptu', 'upkie', 'cookie', 'so101', 'kinova_robotiq',
     pytest.param('icub', marks=pytest.mark.xfail(reason=PRESERVED, strict=True)),
-    'r2d2', 'minitaur', 'pr2_gripper'])
+    *corpus_cases(['r2d2', 'minitaur', 'pr2_gripper'])])
 def test_lumped_fixed_joints_match_sdformats_own_conversion(
         name: str, check_sdf, tmp_path: Path) -> None:
     robot = _robot(name)
@@ -248,7 +250,8 @@ def test_exported_urdf_simulates_in_mujoco_and_stays_finite(tmp_path: Path) -> N
 # (reachback has a planar joint: MuJoCo makes it two slides and a hinge. MuJoCo cannot
 # decode kinova_robotiq's COLLADA visuals.)
 @pytest.mark.parametrize('name', ['ptu', 'ur5_skeleton', 'panda_skeleton', 'upkie', 'icub',
-                                  'so101', 'reachback', 'cartpole', 'cartpole_pybullet'])
+                                  'so101', 'reachback', 'cartpole',
+                                  *corpus_cases(['cartpole_pybullet'])])
 def test_exported_urdfs_load_in_pybullet_and_mujoco(name: str, tmp_path: Path) -> None:
     robot = _robot(name)
     path = tmp_path / f'{name}.urdf'
