@@ -111,16 +111,9 @@ def test_every_error_code_has_a_consumer_verdict() -> None:
 
 # Registry robots on which our validator reports errors that both consumers accept: bugs
 # of ours, each named (strict, so that a fix shows here).
-POINT_MASS = ('I202 refuses a zero tensor with a positive mass (a point mass, positive '
-              'semi-definite) on a link that does not move (root or fixed joint)')
-ZERO_BOX = 'R304 refuses the zero-size visual <box size="0 0 0"/> of a virtual link'
 RELATIVE_FILE = ("R302 resolves gym-ignition's relative file://meshes/x.stl to /x.stl "
                  '(the host part is dropped) instead of next to the URDF')
 FALSE_ERRORS = {
-    'urdf/upkie.urdf': f'{POINT_MASS}; {ZERO_BOX}',
-    'urdf/upkie_camera.urdf': f'{POINT_MASS}; {ZERO_BOX}',
-    'urdf/cookie.urdf': f'{POINT_MASS}; {ZERO_BOX}',
-    'so101_robot_model/so101.urdf': POINT_MASS,
     'iCubGazeboV2_5/icub.urdf': RELATIVE_FILE,
     'panda/panda.urdf': RELATIVE_FILE,
 }
