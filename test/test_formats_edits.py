@@ -152,10 +152,6 @@ def _check_edits(path: Path, data) -> None:
         assert Robot.from_urdf(written) == robot
 
 
-_TODAY = pytest.mark.xfail(reason='issue 12: edits lost, <texture/> rewritten', strict=False)
-
-
-@_TODAY
 @pytest.mark.parametrize('path', LAYOUTS, ids=[path.name for path in LAYOUTS])
 def test_random_edits_are_all_written(path: Path) -> None:
     """Every edit survives writing, and nothing else changes (files of every layout)."""
@@ -172,7 +168,6 @@ def _corpus_files() -> list[Path]:
     return sorted(path for path in CORPUS.rglob('*.urdf') if 'fail' not in path.name)
 
 
-@_TODAY
 @pytest.mark.parametrize('path', _corpus_files(), ids=lambda path: path.name)
 def test_random_edits_on_corpus(path: Path, corpus: Path) -> None:
     """The same on every real robot of the corpus that both readers accept."""

@@ -16,6 +16,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field, KW_ONLY
 
 from urdfgenpy_ros import checks
@@ -153,4 +154,4 @@ class Inertial:
         return inertial_from_meshlab(mass, volume, tensor, centre)
 
 
-_SOLID_TENSORS = {'box': box_tensor, 'cylinder': cylinder_tensor, 'sphere': sphere_tensor}
+_SOLID_TENSORS: dict[str, Callable[..., tuple[float, ...]]] = {'box': box_tensor, 'cylinder': cylinder_tensor, 'sphere': sphere_tensor}

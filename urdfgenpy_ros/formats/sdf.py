@@ -33,7 +33,7 @@ from lxml import etree
 from urdfgenpy_ros.formats._xml import fmt, fmt_vec, write_text
 from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Mesh, Origin, Sphere
 from urdfgenpy_ros.joint import Joint, JointType
-from urdfgenpy_ros.link import Link
+from urdfgenpy_ros.link import Link, Visual
 from urdfgenpy_ros.material import Material
 
 if TYPE_CHECKING:
@@ -77,8 +77,9 @@ def _geometry(parent: Any, geometry: Geometry) -> None:
 def _material(parent: Any, material: Material | None, robot: Robot) -> None:
     if material is None:
         return
-    defined = robot._materials.get(material.name)
-    rgba = material.rgba or (defined.rgba if defined is not None else None)
+    rgba = material.rgba
+    if rgba is None and robot.has_material(material.name):
+        rgba = robot.get_material(material.name).rgba
     if rgba is None:
         return
     element = etree.SubElement(parent, 'material')
@@ -113,7 +114,7 @@ def _link(model: Any, link: Link, robot: Robot, pose: tuple[Origin, str] | None)
                                      name=_unique(item.name or f'{link.name}_{kind}', taken))
             _pose(shape, item.origin)
             _geometry(shape, item.geometry)
-            if kind == 'visual':
+            if isinstance(item, Visual):
                 _material(shape, item.material, robot)
     for sensor in link.sensors:
         element.append(sensor.to_sdf())
@@ -177,13 +178,13 @@ def write_sdf(robot: Robot, path: str | PathLike[str] | None = None,
             raise ValueError(f'joint {joint.name!r}: SDF has no planar joint (model it as '
                              'two prismatic joints and a revolute one)')
     for link in robot.links:
-        joint = parent_joint.get(link.name)
-        if joint is None:
+        parent = parent_joint.get(link.name)
+        if parent is None:
             pose = None
-        elif joint.type is JointType.FLOATING:
-            pose = (joint.origin, joint.parent)
+        elif parent.type is JointType.FLOATING:
+            pose = (parent.origin, parent.parent)
         else:
-            pose = (Origin(), names[joint.name])
+            pose = (Origin(), names[parent.name])
         _link(model, link, robot, pose)
     for joint in robot.joints:
         if joint.type is not JointType.FLOATING:
