@@ -112,7 +112,7 @@ def _urdf_files(spec: PackageSpec, robot: Robot) -> tuple[dict[str, bytes], list
             parts[target].append(fragment(block.element, INDENT))
     for link in robot.links:  # the definitions move to materials.xacro: refer to them
         for visual in link.visuals:
-            if visual.material is not None and visual.material.name in robot._materials:
+            if visual.material is not None and robot.has_material(visual.material.name):
                 visual.material = Material(visual.material.name)
     includes = [name for name, lines in parts.items() if lines]
     text = write_xacro(robot, includes=[f'$(find {spec.name})/urdf/{name}' for name in includes],
