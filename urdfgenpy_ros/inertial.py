@@ -154,4 +154,5 @@ class Inertial:
         return inertial_from_meshlab(mass, volume, tensor, centre)
 
 
-_SOLID_TENSORS: dict[str, Callable[..., tuple[float, ...]]] = {'box': box_tensor, 'cylinder': cylinder_tensor, 'sphere': sphere_tensor}
+_SOLID_TENSORS: dict[str, Callable[..., tuple[float, ...]]] = {
+    'box': box_tensor, 'cylinder': cylinder_tensor, 'sphere': sphere_tensor}

@@ -24,38 +24,12 @@ from typing import Any
 
 from lxml import etree
 
+from urdfgenpy_ros.floats import fmt, fmt_vec
+
+__all__ = ['esc', 'escape_text', 'fmt', 'fmt_vec', 'fragment', 'INDENT', 'without_declared',
+           'write_text']
 
 INDENT = '  '
-_FORMATTED: dict[float, str] = {}
-
-
-def fmt(value: float) -> str:
-    """Return the shortest text that reads back as the same float (``1`` for 1.0)."""
-    text = _FORMATTED.get(value)
-    if text is None:
-        text = repr(float(value))
-        if text.endswith('.0'):
-            text = text[:-2]
-        if text == '-0':
-            text = '0'
-        if len(_FORMATTED) > 4096:
-            _FORMATTED.clear()
-        _FORMATTED[value] = text
-    return text
-
-
-_VECTORS: dict[tuple, str] = {}
-
-
-def fmt_vec(values: Any) -> str:
-    """Return numbers separated by single spaces (cached: vectors repeat a lot)."""
-    text = _VECTORS.get(values)
-    if text is None:
-        text = ' '.join([fmt(v) for v in values])
-        if len(_VECTORS) > 4096:
-            _VECTORS.clear()
-        _VECTORS[tuple(values)] = text
-    return text
 
 
 def esc(text: str) -> str:

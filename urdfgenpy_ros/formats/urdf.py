@@ -32,8 +32,9 @@ from typing import Any, TYPE_CHECKING
 from lxml import etree
 
 from urdfgenpy_ros.extensions import Extension
-from urdfgenpy_ros.formats._xml import (
-    esc, fmt, fmt_vec, fragment, without_declared, write_text)
+from urdfgenpy_ros.floats import fmt, fmt_vec
+from urdfgenpy_ros.formats._xml import esc, fragment, without_declared, write_text
+from urdfgenpy_ros.formats.sdf import sensor_element
 from urdfgenpy_ros.formats.urdf_schema import (
     Child, Element, ELEMENTS, FLOAT, INERTIAL, MATERIAL, OF_CLASS, REQUIRED, TEXT, values)
 from urdfgenpy_ros.joint import Joint
@@ -50,15 +51,6 @@ _SLOTS: dict[str, dict[str, Child]] = {
     for tag, element in ELEMENTS.items()}
 _ATTRS = {tag: {attr.name: attr for attr in element.attrs} for tag, element in ELEMENTS.items()}
 _ROBOT_NAME = re.compile(r'(\sname\s*=\s*)(["\'])(.*?)\2', re.DOTALL)
-
-
-def _text(kind: str, value: Any) -> str:
-    """Return the URDF text of a value: exact, shortest numbers."""
-    if kind == FLOAT:
-        return fmt(value)
-    if kind == TEXT:
-        return str(value)
-    return fmt_vec(value)
 
 
 def _reads_as(kind: str, text: str, value: Any) -> bool:
@@ -95,7 +87,7 @@ def _sensor_block(sensor: Any, reference: str) -> Any:
     """Return the ``<gazebo reference=...>`` element that carries a sensor in URDF."""
     block = Extension('<gazebo/>')
     block.reference = reference
-    block.element.append(sensor.to_sdf())
+    block.element.append(sensor_element(sensor))
     return block.element
 
 
@@ -115,6 +107,18 @@ class UrdfWriter:
                          } if extras is not None else {}
         self.materials = robot.materials
         self.extensions = robot.extensions
+        self._numbers: dict[Any, str] = {}  # the text of numbers and vectors written
+
+    def text(self, kind: str, value: Any) -> str:
+        """Return the URDF text of a value: exact, shortest numbers."""
+        if kind == TEXT:
+            return str(value)
+        text = self._numbers.get(value)
+        if text is None:
+            text = fmt(value) if kind == FLOAT else fmt_vec(value)
+            if type(value) is tuple or type(value) is float:
+                self._numbers[value] = text
+        return text
 
     def document(self) -> str:
         """Return the whole file, with the comments a read file had around its root."""
@@ -323,7 +327,7 @@ class UrdfWriter:
                 value = getattr(item, attr.field)
                 if value is None or (value == '' and attr.default == ''):
                     continue
-                parts.append(f' {attr.name}="{esc(_text(attr.kind, value))}"')
+                parts.append(f' {attr.name}="{esc(self.text(attr.kind, value))}"')
             return ''.join(parts)
         declared = _ATTRS[element.tag]
         done = set()
@@ -337,7 +341,7 @@ class UrdfWriter:
             if value is None:
                 continue
             if not _reads_as(known.kind, original, value):
-                original = _text(known.kind, value)
+                original = self.text(known.kind, value)
             parts.append(f' {name}="{esc(original)}"')
         for attr in element.attrs:
             if attr.name in done:
@@ -345,7 +349,7 @@ class UrdfWriter:
             value = getattr(item, attr.field)
             if value is None or (attr.default is not REQUIRED and value == attr.default):
                 continue
-            parts.append(f' {attr.name}="{esc(_text(attr.kind, value))}"')
+            parts.append(f' {attr.name}="{esc(self.text(attr.kind, value))}"')
         return ''.join(parts)
 
     def _children(self, element: Element, item: Any, node: Any,

@@ -27,7 +27,8 @@ import re
 from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.extensions import Extension
-from urdfgenpy_ros.formats._xml import esc, fmt, fmt_vec, write_text
+from urdfgenpy_ros.floats import fmt, fmt_vec
+from urdfgenpy_ros.formats._xml import esc, write_text
 from urdfgenpy_ros.formats.urdf import UrdfWriter
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.link import Link
