@@ -35,6 +35,7 @@ from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import esc, fragment, without_declared, write_text
 from urdfgenpy_ros.formats.sdf import sensor_element
+from urdfgenpy_ros.formats.urdf_fresh import FRESH
 from urdfgenpy_ros.formats.urdf_schema import (
     Child, Element, ELEMENTS, FLOAT, INERTIAL, MATERIAL, OF_CLASS, REQUIRED, TEXT, values)
 from urdfgenpy_ros.joint import Joint
@@ -113,10 +114,21 @@ class UrdfWriter:
         """Return the URDF text of a value: exact, shortest numbers."""
         if kind == TEXT:
             return str(value)
+        return self.number(value) if kind == FLOAT else self.vector(value)
+
+    def number(self, value: float) -> str:
+        """Return the exact text of a float (cached: numbers repeat a lot)."""
         text = self._numbers.get(value)
         if text is None:
-            text = fmt(value) if kind == FLOAT else fmt_vec(value)
-            if type(value) is tuple or type(value) is float:
+            text = self._numbers[value] = fmt(value)
+        return text
+
+    def vector(self, value: tuple[float, ...]) -> str:
+        """Return the exact text of a vector, numbers separated by spaces."""
+        text = self._numbers.get(value)
+        if text is None:
+            text = fmt_vec(value)
+            if type(value) is tuple:
                 self._numbers[value] = text
         return text
 
@@ -289,9 +301,19 @@ class UrdfWriter:
                     values(item) == extras.snapshot:
                 return self.source_text(extras.node)
             node = extras.node
+        elif slot is None or slot.tag != element.tag:
+            if pad is not None:
+                return FRESH[type(item)](self, item, pad)
+            node = None
         else:
-            node = slot if slot is not None and slot.tag == element.tag else None
+            node = slot
         return self.write(element, item, node, pad)
+
+    def object_text(self, item: Any, pad: str) -> str:
+        """Return the element of a model object written where no source node stood."""
+        if item.extras is None:
+            return FRESH[type(item)](self, item, pad)
+        return self.write_object(OF_CLASS[type(item)], item, pad)
 
     def write(self, element: Element, item: Any, node: Any, pad: str | None) -> str:
         """Return ``element`` with the fields of ``item``, laid out like ``node`` if any."""
@@ -379,13 +401,13 @@ class UrdfWriter:
             elif child.field == 'inertial':
                 result.append((child, [self.write_inertial(part, pad, item, slot)]))
             elif child.field == 'material':
-                result.append((child, [self._visual_material(part, pad, slot)]))
+                result.append((child, [self.visual_material(part, pad, slot)]))
             else:
                 result.append((child, [self.write_object(OF_CLASS[type(part)], part, pad,
                                                          slot)]))
         return result
 
-    def _visual_material(self, material: Material, pad: str | None, slot: Any) -> str:
+    def visual_material(self, material: Material, pad: str | None, slot: Any) -> str:
         """Return a visual's material: a reference to a robot-level one, or its own."""
         robot = self.robot
         if robot.has_material(material.name):
