@@ -38,6 +38,7 @@ from urdfgenpy_ros.formats.sdf import sensor_element
 from urdfgenpy_ros.formats.urdf_fresh import FRESH
 from urdfgenpy_ros.formats.urdf_schema import (
     Child, Element, ELEMENTS, FLOAT, INERTIAL, MATERIAL, OF_CLASS, REQUIRED, TEXT, values)
+from urdfgenpy_ros.geometry import Box, Cylinder, Mesh, Origin, Sphere
 from urdfgenpy_ros.joint import Joint
 from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.material import Material
@@ -50,6 +51,7 @@ if TYPE_CHECKING:
 _SLOTS: dict[str, dict[str, Child]] = {
     tag: {name: child for child in element.children for name in child.tags}
     for tag, element in ELEMENTS.items()}
+_LEAVES = frozenset((Origin, Box, Cylinder, Sphere, Mesh))
 _ATTRS = {tag: {attr.name: attr for attr in element.attrs} for tag, element in ELEMENTS.items()}
 _ROBOT_NAME = re.compile(r'(\sname\s*=\s*)(["\'])(.*?)\2', re.DOTALL)
 
@@ -109,6 +111,8 @@ class UrdfWriter:
         self.materials = robot.materials
         self.extensions = robot.extensions
         self._numbers: dict[Any, str] = {}  # the text of numbers and vectors written
+        self._leaves: dict[Any, str] = {}  # the text of origins and shapes, by value
+        self.known_number = self._numbers.get
 
     def text(self, kind: str, value: Any) -> str:
         """Return the URDF text of a value: exact, shortest numbers."""
@@ -173,6 +177,11 @@ class UrdfWriter:
         extras = robot.extras
         unit = self.unit
         fresh = '\n' + unit
+        if extras is not None and self._untouched():
+            head = extras.layout.head
+            assert head is not None
+            text = etree.tostring(extras.node, encoding='unicode', with_tail=False)
+            return head + text[text.index('>') + 1:] if len(extras.node) else head[:-1] + '/>'
         items = [(fresh, text) for text in self.prologue()]
         materials, links, joints = self.materials, robot.links, robot.joints
         written: set[int] = set()
@@ -193,7 +202,7 @@ class UrdfWriter:
                 trailing = '\n'
         items += [(fresh, self.write_item(item, unit)) for item in materials
                   if id(item) not in written]
-        items += [(fresh, self.write_item(item, unit)) for item in links
+        items += [(fresh, self.object_text(item, unit)) for item in links
                   if id(item) not in written]
         owners: list[Link | Joint] = [*links, *joints]
         for owner in owners:
@@ -201,7 +210,7 @@ class UrdfWriter:
                       if id(block) not in written]
             items += [(fresh, self.write_extension(_sensor_block(sensor, owner.name), unit))
                       for sensor in owner.sensors]
-        items += [(fresh, self.write_item(item, unit)) for item in joints
+        items += [(fresh, self.object_text(item, unit)) for item in joints
                   if id(item) not in written]
         items += [(fresh, self.write_item(block, unit)) for block in self.extensions
                   if id(block) not in written]
@@ -209,6 +218,31 @@ class UrdfWriter:
         if not items:
             return opening[:-1] + '/>'
         return opening + ''.join(space + text for space, text in items) + trailing + '</robot>'
+
+    def _untouched(self) -> bool:
+        """Return whether the robot holds exactly what was read: write the tree as it is."""
+        robot = self.robot
+        extras = robot.extras
+        if extras is None or extras.order is None or extras.layout.head is None \
+                or not self.verbatim or extras.node.get('name') != robot.name:
+            return False
+        blocks = self._all_extensions()
+        items = [*self.materials, *robot.links, *robot.joints, *blocks]
+        read = [item for item in extras.order if isinstance(item, (Material, Link, Joint,
+                                                                   Extension))]
+        if len(items) != len(read) or {id(item) for item in items} != {id(i) for i in read}:
+            return False
+        for item in read:
+            if isinstance(item, Extension):
+                owner = self._owner(item)
+                if owner is not None and item.tag == 'gazebo' and item.reference != owner.name:
+                    return False
+            elif item.extras is None or values(item) != item.extras.snapshot:
+                return False
+        if any(owner.sensors for owner in self._owners_of_blocks()):
+            return False
+        head = extras.layout.head
+        return all(f'{key}=' in head for key, _ in self.robot_attrs()) and not self.prologue()
 
     def _opening(self) -> str:
         """Return the ``<robot ...>`` tag: as the file wrote it, with what changed."""
@@ -311,9 +345,15 @@ class UrdfWriter:
 
     def object_text(self, item: Any, pad: str) -> str:
         """Return the element of a model object written where no source node stood."""
-        if item.extras is None:
-            return FRESH[type(item)](self, item, pad)
-        return self.write_object(OF_CLASS[type(item)], item, pad)
+        if item.extras is not None:
+            return self.write_object(OF_CLASS[type(item)], item, pad)
+        kind = type(item)
+        if kind in _LEAVES:  # frozen one-line elements: the same value, the same text
+            text = self._leaves.get(item)
+            if text is None:
+                text = self._leaves[item] = FRESH[kind](self, item, pad)
+            return text
+        return FRESH[kind](self, item, pad)
 
     def write(self, element: Element, item: Any, node: Any, pad: str | None) -> str:
         """Return ``element`` with the fields of ``item``, laid out like ``node`` if any."""

@@ -43,7 +43,8 @@ def _attributes(element: Element, owner: str, lines: list[str], indent: str) -> 
         else:
             text = 'number(v)' if attr.kind == FLOAT else 'vector(v)'
             lines.append(f'{indent}if v is not None:')
-            lines.append(f'{indent}    a += \' {attr.name}="\' + {text} + \'"\'')
+            lines.append(f'{indent}    n = known(v)')
+            lines.append(f'{indent}    a += \' {attr.name}="\' + (n or {text}) + \'"\'')
 
 
 def _body(element: Element, lines: list[str], indent: str, depth: int) -> None:
@@ -109,6 +110,7 @@ def _compile(element: Element) -> Writer:
              '    unit = writer.unit',
              '    number = writer.number',
              '    vector = writer.vector',
+             '    known = writer.known_number',
              '    obj = writer.object_text']
     _body(element, lines, '    ', 0)
     lines.append('    return t')
