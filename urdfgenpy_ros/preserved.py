@@ -37,20 +37,34 @@ class Preserved:
     A writer compares the element's current fields with ``snapshot``: equal, it writes
     ``node`` as it was; different, it writes the element anew in the layout of ``node``,
     keeping what the model does not hold (unknown attributes and children, comments) and
-    the original text of every value nobody changed. For the robot, ``order`` is the
-    document order of its items, ``outside`` the comments before and after the root and
-    ``layout`` the style of the file.
+    the original text of every value nobody changed. The robot's (a
+    :class:`DocumentPreserved`) also has ``order``, the document order of its items,
+    ``outside``, the comments before and after the root, and ``layout``.
     """
 
-    __slots__ = ('node', 'snapshot', 'order', 'outside', 'layout')
+    __slots__ = ('node', 'snapshot')
+
+    order: list[Any] | None = None
+    outside: tuple[list[Any], list[Any]] = ([], [])
+    layout: Layout = Layout()
 
     def __init__(self, node: Any, snapshot: tuple | None = None) -> None:
         self.node = node
         self.snapshot = snapshot
-        self.order: list[Any] | None = None
-        self.outside: tuple[list[Any], list[Any]] = ([], [])
-        self.layout = Layout()
 
     def __repr__(self) -> str:
         """Return the source tag and line."""
         return f'Preserved(<{self.node.tag}> line {self.node.sourceline})'
+
+
+class DocumentPreserved(Preserved):
+    """What a reader kept of the ``<robot>`` element: its items' order, layout, comments."""
+
+    __slots__ = ('order', 'outside', 'layout')
+
+    def __init__(self, node: Any, order: list[Any], outside: tuple[list[Any], list[Any]],
+                 layout: Layout) -> None:
+        super().__init__(node)
+        self.order = order
+        self.outside = outside
+        self.layout = layout

@@ -37,7 +37,7 @@ from urdfgenpy_ros.formats.urdf_schema import (
 from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.material import Material
-from urdfgenpy_ros.preserved import Layout, Preserved
+from urdfgenpy_ros.preserved import DocumentPreserved, Layout, Preserved
 from urdfgenpy_ros.robot import Robot
 
 EXTENSION_TAGS = frozenset(('gazebo', 'transmission', 'ros2_control'))
@@ -203,11 +203,9 @@ class _Reader:
         for item in order:
             if isinstance(item, (Link, Joint, Material)):
                 record(item)
-        robot.extras = Preserved(root)
-        robot.extras.order = order
-        robot.extras.outside = (list(root.itersiblings(preceding=True))[::-1],
-                                list(root.itersiblings()))
-        robot.extras.layout = self._layout(root, root is top)
+        robot.extras = DocumentPreserved(
+            root, order, (list(root.itersiblings(preceding=True))[::-1],
+                          list(root.itersiblings())), self._layout(root, root is top))
         return robot
 
     def _layout(self, root: Any, is_document: bool) -> Layout:

@@ -201,27 +201,21 @@ def values(item: Any) -> tuple:
     return tuple(snapshot)
 
 
-def record(item: Any) -> None:
-    """Store the snapshot of ``item`` and of every part of it read from a file."""
-    extras = item.extras
-    if extras is not None:
-        extras.snapshot = values(item)
+def record(item: Any) -> tuple:
+    """Store the snapshot of ``item`` and of every part of it read from a file; return it."""
     fields, nested, lists = _PLANS[type(item)]
+    snapshot = []
     for name in fields:
         part = getattr(item, name)
-        if type(part) in _PLANS and part.extras is not None:
+        snapshot.append(part)
+        if type(part) in _PLANS and part.extras is not None and part.extras.snapshot is None:
             part.extras.snapshot = values(part)
     for name in nested:
         part = getattr(item, name)
-        if part is not None:
-            record(part)
+        snapshot.append(None if part is None else record(part))
     for name in lists:
-        for part in getattr(item, name):
-            record(part)
-
-
-def unchanged(item: Any) -> bool:
-    """Return whether ``item`` was read from a file and still holds what it read."""
-    extras = item.extras
-    return extras is not None and extras.snapshot is not None and \
-        values(item) == extras.snapshot
+        snapshot.append(tuple([record(part) for part in getattr(item, name)]))
+    result = tuple(snapshot)
+    if item.extras is not None:
+        item.extras.snapshot = result
+    return result
