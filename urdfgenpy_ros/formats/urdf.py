@@ -198,8 +198,6 @@ class UrdfWriter:
                     items.append((whitespace, self.source_text(node)))
                 whitespace = node.tail or ''
             trailing = whitespace if not whitespace.strip() else '\n'
-            if '\n' not in trailing:
-                trailing = '\n'
         items += [(fresh, self.write_item(item, unit)) for item in materials
                   if id(item) not in written]
         items += [(fresh, self.object_text(item, unit)) for item in links
