@@ -157,3 +157,13 @@ def test_texture_built_in_python_without_a_file(tmp_path: Path) -> None:
     robot = Robot('bare')
     robot.add_material(Material('plain', texture=''))
     assert '<texture/>' in robot.to_urdf()
+
+
+def test_an_edited_block_of_a_copied_robot_is_written(tmp_path: Path) -> None:
+    """Blocks edited in place count, also in a deep copy of a read robot."""
+    import copy
+    robot = copy.deepcopy(Robot.from_urdf(FIXTURES / 'two_space.urdf'))
+    robot.extensions[0].element.set('name', 'wrist_transmission')
+    removed, added = _changed(_source(FIXTURES / 'two_space.urdf'), robot.to_urdf())
+    assert removed == ['  <transmission name="pan_transmission">']
+    assert added == ['  <transmission name="wrist_transmission">']

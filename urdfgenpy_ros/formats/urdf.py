@@ -168,6 +168,8 @@ class UrdfWriter(ElementWriter):
             return False
         for item in read:
             if isinstance(item, Extension):
+                if item.element.getparent() is not extras.node:  # a copy: write it itself
+                    return False
                 owner = self._owner(item)
                 if owner is not None and item.tag == 'gazebo' and item.reference != owner.name:
                     return False
