@@ -339,7 +339,9 @@ class Robot:
                            for key, value in self._materials.items()}
         for link in self._links.values():
             for visual in link.visuals:
-                if visual.material is not None and visual.material.name == old:
+                if visual.material is material:  # shares the definition: keeps sharing
+                    visual.material = renamed
+                elif visual.material is not None and visual.material.name == old:
                     visual.material = Material(new, visual.material.rgba,
                                                visual.material.texture,
                                                source=visual.material.source,

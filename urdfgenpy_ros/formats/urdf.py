@@ -125,9 +125,15 @@ class UrdfWriter(ElementWriter):
         if extras is not None and extras.order is not None:
             present = {id(item) for item in [*materials, *links, *joints,
                                              *self._all_extensions()]}
+            # an item replaced by a copy of itself (a renamed material) keeps the place
+            # of the source node it came from
+            by_node = {id(item.extras.node): item for item in [*materials, *links, *joints]
+                       if item.extras is not None}
             whitespace = extras.node.text or ''
             for item, node in zip(extras.order, extras.node):
-                if id(item) in present:
+                if id(item) not in present and isinstance(item, (Material, Link, Joint)):
+                    item = by_node.get(id(node), item)
+                if id(item) in present and id(item) not in written:
                     written.add(id(item))
                     items.append((whitespace, self.write_item(item, unit)))
                 elif not isinstance(item, (Material, Link, Joint, Extension)):
