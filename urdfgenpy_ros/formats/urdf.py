@@ -127,8 +127,8 @@ class UrdfWriter(ElementWriter):
                                              *self._all_extensions()]}
             # an item replaced by a copy of itself (a renamed material) keeps the place
             # of the source node it came from
-            by_node = {id(item.extras.node): item for item in [*materials, *links, *joints]
-                       if item.extras is not None}
+            read: list[Material | Link | Joint] = [*materials, *links, *joints]
+            by_node = {id(item.extras.node): item for item in read if item.extras is not None}
             whitespace = extras.node.text or ''
             for item, node in zip(extras.order, extras.node):
                 if id(item) not in present and isinstance(item, (Material, Link, Joint)):
