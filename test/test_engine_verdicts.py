@@ -54,6 +54,11 @@ EXPECTED = {
     'tiny_moment.urdf': {('I202', 'error')},
     'barely_impossible_disc.urdf': {('I203', 'error')},
     'no_links.urdf': {('S001', 'error')},
+    # urdfdom drops the inertial; MuJoCo refuses the model (read, kept, reported).
+    'inertial_without_inertia.urdf': {('P106', 'error'), ('I207', 'warning')},
+    # urdfdom ignores a visual's own material whose colour is not 4 numbers; MuJoCo
+    # refuses the model.
+    'five_number_colour.urdf': {('P107', 'error')},
 }
 
 
@@ -68,6 +73,30 @@ def test_findings_match_what_the_engines_do(name: str) -> None:
         assert not errors, 'both consumers accept it: an error would be a false alarm'
     if not mujoco_accepts(path) and name != 'no_links.urdf':
         assert errors, 'MuJoCo refuses it: validate() must say why'
+
+
+@pytest.mark.parametrize('name, tag', [('inertial_without_inertia.urdf', 'inertial'),
+                                       ('five_number_colour.urdf', 'material')])
+def test_what_urdfdom_ignores_is_kept_until_replaced(name: str, tag: str) -> None:
+    from urdfgenpy_ros import Box, Inertial, Material, Visual
+    path = PROBLEMS / name
+    robot = Robot.from_urdf(path)
+    assert robot.to_urdf() == path.read_text()
+    link = robot.links[-1]
+    link.add_visual(Visual(Box(0.1, 0.1, 0.1)))  # an unrelated edit keeps it
+    assert robot.to_urdf().count(f'<{tag}') == path.read_text().count(f'<{tag}')
+    if tag == 'inertial':  # a value given takes its place, once
+        link.set_inertial(Inertial.from_sphere(1.0, 0.1))
+    else:
+        link.visuals[0].material = Material('grey', rgba=(0.5, 0.5, 0.5, 1.0))
+    written = robot.to_urdf()
+    assert written.count(f'<{tag}') == path.read_text().count(f'<{tag}')
+    again = Robot.from_urdf_string(written)
+    assert not again.read_warnings
+    if tag == 'inertial':
+        assert again.links[-1].inertial == link.inertial
+    else:
+        assert again.links[-1].visuals[0].material.rgba == (0.5, 0.5, 0.5, 1.0)
 
 
 def test_a_robot_without_links_fails_check(tmp_path: Path) -> None:

@@ -30,6 +30,10 @@ CODES: dict[str, tuple[Severity, str]] = {
     'P102': (W, 'malformed or misplaced XML declaration'),
     'P103': (W, 'NUL bytes after the document'),
     'P104': (W, 'default namespace on <robot>'),
+    'P105': (W, 'undeclared namespace prefix, kept as written'),
+    'P106': (E, '<inertial> without <inertia> (urdfdom drops it, MuJoCo refuses it)'),
+    'P107': (E, 'visual material with a malformed colour (urdfdom ignores it, MuJoCo refuses '
+                'it)'),
     # structure
     'S001': (E, 'no root link'),
     'S002': (E, 'more than one root link'),
