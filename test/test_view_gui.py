@@ -59,6 +59,8 @@ def test_a_slider_moved_in_the_browser_drives_joint_states(graph: Graph, browser
     output = _lines(process)
     states = graph.collect(JointState, 'joint_states')
     assert graph.spin_until(lambda: states, 30), ''.join(output)
+    assert graph.spin_until(lambda: any('joint sliders at' in line for line in output), 30), \
+        ''.join(output)
     url = next(re.search(r'joint sliders at (http://\S+)', line).group(1)
                for line in output if 'joint sliders at' in line)
     browser.load(url)
