@@ -104,3 +104,12 @@ def test_a_robot_without_links_fails_check(tmp_path: Path) -> None:
     from urdfgenpy_ros.cli import main
     result = CliRunner().invoke(main, ['check', str(PROBLEMS / 'no_links.urdf')])
     assert result.exit_code == 1 and ' error S001 ' in result.stdout
+
+
+@pytest.mark.parametrize('lump_fixed', [False, True])
+def test_sdf_export_refuses_a_dangling_joint_with_the_finding(lump_fixed: bool) -> None:
+    from urdfgenpy_ros import ModelError
+    robot = Robot.from_urdf(PROBLEMS / 'missing_parent.urdf')
+    with pytest.raises(ModelError, match="joint 'shoulder': parent link 'torso' does not "
+                                         'exist .*S004'):
+        robot.to_sdf(lump_fixed=lump_fixed)
