@@ -31,6 +31,10 @@ setup(
     extras_require={
         'xacro': ['xacro>=2.0', 'ros-jazzy-ament-index-python'],
         'mesh': ['trimesh', 'numpy', 'pycollada'],
+        # pictures: the tree (also Debian's graphviz), a still image, the browser viewer
+        'graph': ['graphviz'],
+        'render': ['vtk>=9.3', 'trimesh', 'numpy', 'pycollada'],
+        'view': ['viser>=1.0', 'trimesh', 'numpy', 'pycollada', 'graphviz', 'vtk>=9.3'],
         'ros': [
             'ros-jazzy-rclpy[fastrtps]', 'ros-jazzy-std-msgs', 'ros-jazzy-sensor-msgs',
             'ros-jazzy-std-srvs', 'ros-jazzy-ament-index-python',
@@ -46,6 +50,7 @@ setup(
             'flake8-blind-except', 'flake8-builtins', 'flake8-class-newline',
             'flake8-comprehensions', 'flake8-deprecated', 'flake8-docstrings',
             'flake8-import-order', 'flake8-quotes', 'catkin-pkg',
+            'graphviz', 'vtk>=9.3', 'viser>=1.0', 'selenium', 'Pillow',
             # colcon builds of the ament_cmake description packages `urdfgenpy init` makes
             'ros-jazzy-ament-cmake',
             'ros-jazzy-ament-cmake-core',

@@ -21,9 +21,12 @@ import click
 from urdfgenpy_ros.cli.check import check
 from urdfgenpy_ros.cli.convert import convert
 from urdfgenpy_ros.cli.example import example
+from urdfgenpy_ros.cli.graph import graph
 from urdfgenpy_ros.cli.inertia import inertia
 from urdfgenpy_ros.cli.init import init
+from urdfgenpy_ros.cli.render import render
 from urdfgenpy_ros.cli.tree import tree
+from urdfgenpy_ros.cli.view import view
 from urdfgenpy_ros.report import known_errors_as_one_line
 
 
@@ -51,5 +54,5 @@ def main(ctx: click.Context, verbose: bool) -> None:
     ctx.obj = {'verbose': verbose}
 
 
-for command in (example, tree, convert, check, inertia, init):
+for command in (example, tree, convert, check, inertia, init, graph, render, view):
     main.add_command(command)

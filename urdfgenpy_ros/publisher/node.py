@@ -65,6 +65,8 @@ _PARAMETERS: dict[str, tuple[Any, int | None, str]] = {
     'publish_tf': (False, ParameterType.PARAMETER_BOOL,
                    '/tf for movable joints, /tf_static for fixed ones (needs tf2_msgs)'),
     'frame_prefix': ('', ParameterType.PARAMETER_STRING, 'prefix of every TF frame id'),
+    'gui': (False, ParameterType.PARAMETER_BOOL, 'joint sliders on a local web page'),
+    'gui_port': (8080, ParameterType.PARAMETER_INTEGER, 'port of the gui page'),
 }
 
 
@@ -141,6 +143,10 @@ class PublisherNode(Node):
             self.create_timer(0.5, self._watch)
         self._warned: set[str] = set()
         self._last_warning: dict[str, float] = {}
+        self.gui = None
+        if self.values['gui']:  # imported only here: the viewer's dependencies are heavy
+            from urdfgenpy_ros.publisher.gui import NodeGui
+            self.gui = NodeGui(self, self.values['gui_port'])
         self.get_logger().info(
             f'publishing {self.robot.name!r}: {len(self.robot.links)} links, '
             f'{len(self.states.names)} joint states at {rate} Hz'
@@ -200,6 +206,8 @@ class PublisherNode(Node):
         self._stamps = self._modification_times()
         if self.tf is not None:
             self.tf.configure(robot)
+        if self.gui is not None:
+            self.gui.show(robot)
         description = robot.to_urdf()
         if description == self.description:
             return True, 'model unchanged'
@@ -339,6 +347,8 @@ def main(args: list[str] | None = None) -> int:
         return 1
     finally:
         if node is not None:
+            if node.gui is not None:
+                node.gui.close()
             node.destroy_node()
         rclpy.try_shutdown()
     return 0

@@ -133,9 +133,11 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
         import jinja2
     except ImportError:
         raise MissingDependencyError('jinja2', 'scaffold', 'urdfgenpy init') from None
+    from urdfgenpy_ros.viewer.pictures import package_pictures
+    pictures, warnings = package_pictures(robot, search_paths or ())  # before URIs change
     robot = copy.deepcopy(robot)
-    warnings: list[str] = []
     files = _meshes(spec, robot, list(search_paths or ()), warnings)
+    files.update(pictures)
     urdf_files, includes, xacro_file = _urdf_files(spec, robot)
     files.update(urdf_files)
     sensors = [sensor for owner in robot.links for sensor in owner.sensors]
@@ -145,6 +147,7 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
         'build_type': spec.build_type, 'maintainer_name': spec.maintainer_name,
         'maintainer_email': spec.maintainer_email, 'license': spec.license,
         'description': spec.description, 'source': source, 'xacro_file': xacro_file,
+        'pictures': sorted(pictures),
         'includes': includes, 'mesh_count': sum(p.startswith('meshes/') for p in files),
         'year': datetime.date.today().year,
         'exec_depends': sorted(set(LAUNCH_DEPENDS) | set(spec.dependencies)),

@@ -1,0 +1,59 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+
+"""``urdfgenpy view``: the robot in the browser, with joint sliders and its findings."""
+
+from __future__ import annotations
+
+from pathlib import Path
+import threading
+
+import click
+
+from urdfgenpy_ros.cli._options import input_options, parse_mappings
+
+
+@click.command()
+@click.argument('path', type=click.Path(exists=True, dir_okay=False, path_type=Path))
+@click.argument('arguments', nargs=-1, metavar='[NAME:=VALUE]...')
+@click.option('--port', default=8080, show_default=True, help='The port to serve on.')
+@click.option('--host', default='127.0.0.1', show_default=True,
+              help='The address to serve on (0.0.0.0: every interface).')
+@input_options
+def view(path: Path, arguments: tuple[str, ...], port: int, host: str,
+         package_paths: tuple[Path, ...]) -> None:
+    """Show PATH on a local web page; reload when it or a file it includes changes."""
+    from urdfgenpy_ros.formats import load
+    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.viewer.web import RobotViewer
+    mappings = parse_mappings(arguments)
+
+    def read() -> Robot:
+        return load(path, mappings, package_paths)
+
+    def watched(robot: Robot) -> list[str]:
+        return sorted({str(path.resolve()), *robot.included_files})
+
+    viewer = RobotViewer(read, host=host, port=port, search_paths=package_paths,
+                         watched=watched)
+    viewer.watch()
+    click.echo(f'urdfgenpy view: {viewer.url} shows {viewer.robot.name!r} '
+               f'({len(viewer.findings)} findings); Ctrl-C stops')
+    try:
+        threading.Event().wait()
+    except KeyboardInterrupt:
+        pass
+    finally:
+        viewer.close()
