@@ -73,6 +73,8 @@ _PARAMETERS: dict[str, tuple[Any, int | None, str]] = {
 _EXPECTED = {
     ParameterType.PARAMETER_STRING: ('a string', lambda value: isinstance(value, str)),
     ParameterType.PARAMETER_BOOL: ('true or false', lambda value: isinstance(value, bool)),
+    ParameterType.PARAMETER_INTEGER: ('an integer', lambda value: isinstance(value, int)
+                                      and not isinstance(value, bool)),
     ParameterType.PARAMETER_DOUBLE: ('a number', lambda value: isinstance(value, (int, float))
                                      and not isinstance(value, bool)),
     _STRINGS: ("a list of strings, e.g. \"['a', 'b']\"", lambda value: isinstance(
@@ -82,7 +84,7 @@ _EXPECTED = {
 
 def _check_type(name: str, kind: int | None, value: Any) -> None:
     """Refuse a parameter given with another type than declared (overrides keep theirs)."""
-    if kind is None:
+    if kind not in _EXPECTED:  # None: dynamically typed ('rate': int or double)
         return
     expected, accepts = _EXPECTED[kind]
     if not accepts(value):
