@@ -25,6 +25,7 @@ import pytest
 
 from urdfgenpy_ros import Joint, Link, Robot, Severity, ValidationError
 from urdfgenpy_ros.examples import pan_tilt_unit
+from urdfgenpy_ros.formats import load
 from urdfgenpy_ros.validation import CODES
 from validation_fixtures import broken, defect_line, DEFECTS, VALID
 
@@ -105,7 +106,7 @@ def test_corpus_files_both_consumers_accept_have_no_error() -> None:
     for path in sorted(CORPUS.rglob('*.urdf')):
         if not (check_urdf_verdict(path) and mujoco_accepts(path)):
             continue
-        findings = Robot.from_urdf(path).validate(search_paths=[CORPUS])
+        findings = load(path, search_paths=[CORPUS]).validate(search_paths=[CORPUS])
         assert [str(f) for f in findings if f.severity is Severity.ERROR] == [], path
         clean += 1
     assert clean >= 20

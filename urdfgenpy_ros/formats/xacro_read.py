@@ -20,6 +20,7 @@ from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from os import PathLike
 from pathlib import Path
+import threading
 from typing import Any
 
 from urdfgenpy_ros.errors import MissingDependencyError, ParseError, SourceLocation
@@ -28,12 +29,35 @@ from urdfgenpy_ros.resources import PackageResolver
 from urdfgenpy_ros.robot import Robot
 
 
+_LOCK = threading.Lock()  # xacro keeps its state in module globals: one read at a time
+
+
 def _xacro() -> Any:
     try:
         import xacro
     except ImportError:
         raise MissingDependencyError('xacro', 'xacro', 'Reading Xacro') from None
     return xacro
+
+
+@contextmanager
+def _fresh_state(xacro: Any) -> Iterator[list[str]]:
+    """
+    Give one expansion xacro's module state of its own; yield the list of its includes.
+
+    xacro appends every file it includes to the module-level ``all_includes`` and never
+    empties it, so in a long-running process each read would report (and the node watch)
+    the files of every earlier read. Reset it, and the file and macro stacks, around
+    each read, so that nothing grows with the number of reads.
+    """
+    included: list[str] = []
+    xacro.all_includes = included
+    try:
+        yield included
+    finally:
+        xacro.all_includes = []
+        xacro.init_stacks(None)
+        xacro.substitution_args_context.clear()
 
 
 @contextmanager
@@ -64,14 +88,15 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
     resolver = resolver or PackageResolver()
     where = SourceLocation(str(path))
     try:
-        with _finding_with(resolver):
+        with _LOCK, _fresh_state(xacro) as includes, _finding_with(resolver):
             document = xacro.process_file(str(path), mappings=dict(mappings or {}))
+            names = list(dict.fromkeys(includes))
     except Exception as error:  # noqa: B902 - xacro raises many types; all are one line
         message = ' '.join(str(error).split()) or type(error).__name__
         if 'ament_index_python' in message or 'PackageNotFound' in type(error).__name__:
             message += ' (pass the package folders in search_paths)'
         raise ParseError(f'xacro: {message}', where, 'X001') from None
-    included = [str(Path(name).resolve()) for name in getattr(xacro, 'all_includes', [])]
+    included = [str(Path(name).resolve()) for name in names]
     return document.toprettyxml(indent='  '), included
 
 

@@ -30,6 +30,8 @@ CODES: dict[str, tuple[Severity, str]] = {
     'P102': (W, 'malformed or misplaced XML declaration'),
     'P103': (W, 'NUL bytes after the document'),
     'P104': (W, 'default namespace on <robot>'),
+    'X002': (E, 'Xacro file given to the URDF reader'),
+    'X101': (W, 'Xacro in a .urdf file, expanded with xacro'),
     # structure
     'S001': (E, 'no root link'),
     'S002': (E, 'more than one root link'),
@@ -67,6 +69,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'R304': (E, 'non-positive size or zero scale'),
     'R305': (E, 'not a finite number'),
     'R306': (W, 'visual mesh file not found'),
+    'R307': (W, 'relative path written as a file:// URI (not portable)'),
     # conventions
     'C401': (W, "no link called 'base_link'"),
 }

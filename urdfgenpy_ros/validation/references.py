@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from urdfgenpy_ros.geometry import Box, Cylinder, Mesh, Sphere
-from urdfgenpy_ros.resources import PackageResolver, ResourceError
+from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
 
@@ -79,6 +79,10 @@ def _check_mesh(mesh: Mesh, element: str, where: str, findings: Findings,
             code, hint = missing, 'fix the file name or add the file'
         findings.add(code, mesh, element, f'{where}/geometry/mesh', message, hint, 'mesh')
         return
+    warning = uri_warning(mesh.filename)
+    if warning is not None:
+        findings.add('R307', mesh, element, f'{where}/geometry/mesh', warning,
+                     'use a path relative to the file, or package://', 'mesh')
     if not os.access(path, os.R_OK) or not path.is_file():
         findings.add(missing, mesh, element, f'{where}/geometry/mesh',
                      f'{mesh.filename!r} resolves to {path}, which is not a readable file',

@@ -1,0 +1,185 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+
+"""A ROS 2 workspace as users have one: Xacro in .urdf files, packages, long-running reads."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+import re
+import statistics
+import subprocess
+import sys
+import time
+
+from click.testing import CliRunner
+from helpers import canonical, environment, require_module
+import pytest
+
+from urdfgenpy_ros import ParseError, Robot
+from urdfgenpy_ros.cli import main as cli
+from urdfgenpy_ros.formats import load
+from urdfgenpy_ros.formats.detect import is_xacro, xacro_evidence_in
+from urdfgenpy_ros.resources import PackageResolver
+
+WORKSPACE = Path(__file__).resolve().parent / 'fixtures' / 'workspace'
+PREFIX = WORKSPACE / 'prefix'
+ROBOT = PREFIX / 'share' / 'ws_robot_description' / 'urdf' / 'ws_robot.urdf'
+RELATIVE = PREFIX / 'share' / 'ws_robot_description' / 'urdf' / 'relative_uri.urdf'
+SOURCED = {'AMENT_PREFIX_PATH': str(PREFIX)}
+
+
+def real_xacro(path: Path, *arguments: str) -> str:
+    """Expand ``path`` with the xacro command, in its own process, in the sourced prefix."""
+    require_module('xacro')
+    command = [str(Path(sys.executable).with_name('xacro')), str(path), *arguments]
+    result = subprocess.run(command, capture_output=True, text=True, timeout=60,
+                            env=dict(os.environ, **SOURCED))
+    assert result.returncode == 0, result.stderr
+    return result.stdout
+
+
+def names(urdf: str) -> tuple[list[str], list[str]]:
+    """Return the link and joint names of URDF text, read with lxml alone."""
+    from lxml import etree
+    root = etree.fromstring(urdf.encode())
+    return ([e.get('name') for e in root.findall('link')],
+            [e.get('name') for e in root.findall('joint')])
+
+
+# ---- long-running processes ----------------------------------------------------------
+
+def test_200_reads_in_one_process_stay_the_same_and_flat() -> None:
+    require_module('xacro')
+    included, times = [], []
+    with environment(SOURCED):
+        for _ in range(200):
+            started = time.perf_counter()
+            robot = Robot.from_xacro(ROBOT, {'prefix': 'a_'})
+            times.append(time.perf_counter() - started)
+            included.append(robot.included_files)
+    wheel = str((PREFIX / 'share' / 'ws_parts' / 'urdf' / 'wheel.xacro').resolve())
+    assert included[0] == [str(ROBOT.resolve()), wheel]
+    assert all(files == included[0] for files in included)
+    # No absolute times: the last reads are not markedly slower than the first ones.
+    assert statistics.median(times[-20:]) < 2.0 * statistics.median(times[:20])
+
+
+# ---- Xacro whatever the suffix -------------------------------------------------------
+
+@pytest.mark.parametrize('text, what', [
+    (b'<robot name="r"><link name="${p}base"/></robot>', '<link name> uses ${...}'),
+    (b'<robot name="r"><link name="$(arg p)base"/></robot>', '<link name> uses $(...)'),
+    (b'<robot name="r" xmlns:xacro="http://wiki.ros.org/xacro"><xacro:property name="a" '
+     b'value="1"/><link name="b"/></robot>', 'it has <xacro:property> elements'),
+    (b'<robot name="r" xmlns:xacro="http://ros.org/wiki/xacro"><gazebo><plugin filename="'
+     b'a">$(find p)/c.yaml</plugin></gazebo></robot>', '<plugin> text uses $(...)'),
+])
+def test_xacro_is_told_by_content(text: bytes, what: str) -> None:
+    evidence = xacro_evidence_in(text, 'r.urdf')
+    assert evidence is not None and evidence.what.startswith(what)
+
+
+@pytest.mark.parametrize('text', [
+    b'<robot name="r"><link name="base"/></robot>',
+    # a declaration alone, as xacro outputs keep it: xacro gives the same model
+    b'<robot name="r" xmlns:xacro="http://ros.org/wiki/xacro"><link name="b"/></robot>',
+    # text for Gazebo in a file that is not Xacro
+    b'<robot name="r"><gazebo><plugin filename="a">$(find p)/c.yaml</plugin></gazebo></robot>',
+    # the call of a macro nothing defines (urdf's pr2_desc.urdf): xacro could not expand it
+    b'<robot name="r" xmlns:xacro="http://ros.org/wiki/xacro"><xacro:gazebo_v0 name="h"/>'
+    b'</robot>',
+    b'<!-- <xacro:include filename="$(find p)/a.xacro"/> ${x} --><robot name="r"/>',
+])
+def test_plain_urdf_is_not_taken_for_xacro(text: bytes) -> None:
+    assert xacro_evidence_in(text) is None
+
+
+def test_from_urdf_refuses_xacro_in_one_line_naming_from_xacro() -> None:
+    assert is_xacro(ROBOT) and not is_xacro(RELATIVE)
+    with pytest.raises(ParseError) as raised:
+        Robot.from_urdf(ROBOT)
+    message = str(raised.value)
+    assert message.startswith(f'{ROBOT}:4:3: error X002 this file is Xacro (it has '
+                              '<xacro:arg> elements)'), message
+    assert 'Robot.from_xacro' in message and '\n' not in message
+
+
+@pytest.mark.parametrize('arguments, prefix', [((), ''), (('prefix:=left_',), 'left_')])
+def test_tree_check_and_convert_expand_xacro_in_a_urdf_file(
+        arguments: tuple[str, ...], prefix: str, tmp_path: Path) -> None:
+    expected = real_xacro(ROBOT, *arguments)
+    links, joints = names(expected)
+    assert links[0] == f'{prefix}base_link'
+    runner = CliRunner()
+    with environment(SOURCED):
+        tree = runner.invoke(cli, ['tree', str(ROBOT), *arguments])
+        check = runner.invoke(cli, ['check', '--strict', str(ROBOT), *arguments])
+        target = tmp_path / 'out.urdf'
+        convert = runner.invoke(cli, ['convert', str(ROBOT), str(target), *arguments])
+    assert tree.exit_code == 0, tree.output
+    assert set(links + joints) <= set(re.findall(r'[\w/]+', tree.stdout))
+    assert tree.stdout.rstrip() == Robot.from_urdf_string(expected).tree_string().rstrip()
+    note = tree.stderr.strip().splitlines()
+    assert len(note) == 1 and 'warning X101 the file is Xacro' in note[0], tree.stderr
+    assert (' '.join(arguments) or 'no arguments') in note[0]
+    # check: the model xacro makes is clean but for the note itself
+    assert check.exit_code == 1 and 'warning X101' in check.stdout, check.output
+    assert 'error' not in check.stdout.replace('0 error(s)', '')
+    allowed = ('X101', 'C401') if prefix else ('X101',)  # no base_link with a prefix
+    assert [line for line in check.stdout.splitlines() if ' warning ' in line
+            and line.split(' warning ')[1][:4] not in allowed] == [], check.stdout
+    assert convert.exit_code == 0, convert.output
+    assert canonical(target.read_text()) == canonical(expected)
+
+
+def test_arguments_reach_the_loader_the_node_and_init_use() -> None:
+    with environment(SOURCED):
+        robot = load(ROBOT, {'prefix': 'r_'})
+    expected = real_xacro(ROBOT, 'prefix:=r_')
+    assert canonical(robot.to_urdf()) == canonical(expected)
+    assert [w.code for w in robot.read_warnings] == ['X101']
+
+
+# ---- package:// and file:// ----------------------------------------------------------
+
+def test_a_folder_named_like_a_package_without_package_xml_is_passed_by() -> None:
+    decoy = WORKSPACE / 'decoy'
+    assert (decoy / 'ws_parts').is_dir() and not (decoy / 'ws_parts' / 'package.xml').exists()
+    resolver = PackageResolver([decoy, PREFIX / 'share'])
+    assert resolver.find('ws_parts') == PREFIX / 'share' / 'ws_parts'
+    mesh = resolver.resolve('package://ws_parts/meshes/wheel.stl')
+    assert mesh == PREFIX / 'share' / 'ws_parts' / 'meshes' / 'wheel.stl'
+    with environment(SOURCED):  # ahead of the ament index too
+        assert PackageResolver([decoy]).find('ws_parts') == PREFIX / 'share' / 'ws_parts'
+    # and the check of the robot finds every mesh: no false missing-mesh findings
+    with environment(SOURCED):
+        robot = Robot.from_xacro(ROBOT)
+        findings = robot.validate(search_paths=[decoy])
+    assert [f.code for f in findings] == [], [str(f) for f in findings]
+
+
+def test_relative_file_uris_resolve_beside_the_file_with_a_warning() -> None:
+    resolver = PackageResolver()
+    found = resolver.resolve('file://meshes/cover.stl', RELATIVE.parent)
+    assert found == RELATIVE.parent / 'meshes' / 'cover.stl'
+    trimesh = pytest.importorskip('trimesh')
+    assert trimesh.load(str(found)).is_watertight  # a real mesh, read by another tool
+    result = CliRunner().invoke(cli, ['check', str(RELATIVE)])
+    lines = result.stdout.strip().splitlines()
+    assert result.exit_code == 0, result.output
+    assert len(lines) == 1 and 'warning R307' in lines[0] and 'not portable' in lines[0]
+    assert lines[0].startswith(f'{RELATIVE}:7:9: ')
