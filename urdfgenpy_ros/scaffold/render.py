@@ -31,6 +31,7 @@ from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.resources import PackageResolver, ResourceError
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.scaffold.spec import PackageSpec
+from urdfgenpy_ros.scaffold.templates import template_root
 
 # What the launch files run; package.xml must name each of them.
 LAUNCH_DEPENDS = ('joint_state_publisher', 'joint_state_publisher_gui', 'launch',
@@ -40,21 +41,6 @@ _BRIDGE_TYPES = {'camera': ('sensor_msgs/msg/Image', 'gz.msgs.Image'),
                  'gpu_lidar': ('sensor_msgs/msg/LaserScan', 'gz.msgs.LaserScan'),
                  'imu': ('sensor_msgs/msg/Imu', 'gz.msgs.IMU'),
                  'force_torque': ('geometry_msgs/msg/Wrench', 'gz.msgs.Wrench')}
-
-
-def template_root() -> Path:
-    """Return the templates: the installed share folder first, then the source tree."""
-    try:
-        from ament_index_python.packages import get_package_share_directory
-        installed = Path(get_package_share_directory('urdfgenpy_ros')) / 'templates'
-        if installed.is_dir():
-            return installed
-    except (ImportError, LookupError, OSError, ValueError):
-        pass
-    source = Path(__file__).resolve().parents[2] / 'templates'
-    if source.is_dir():
-        return source
-    raise UrdfgenpyError('the package templates are missing: reinstall urdfgenpy_ros')
 
 
 def _escape(text: str) -> str:
