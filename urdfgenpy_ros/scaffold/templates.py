@@ -48,13 +48,13 @@ def _source_tree(package: Path) -> Iterator[Path]:
 
 
 def _beside(package: Path) -> Iterator[Path]:
-    """``<prefix>/share/urdfgenpy_ros/templates`` for the prefix the package lies in."""
+    """Yield ``<prefix>/share/urdfgenpy_ros/templates`` for each prefix the package is in."""
     for prefix in list(package.parents)[:5]:
         yield prefix / _SHARED
 
 
 def _recorded() -> Iterator[Path]:
-    """The templates folder the installed distribution's file list names."""
+    """Yield the templates folder the installed distribution's file list names."""
     from importlib import metadata
     try:
         files = metadata.distribution(PACKAGE).files or []
@@ -101,4 +101,4 @@ def template_root() -> Path:
         if _usable(folder):
             return folder
     raise UrdfgenpyError('the package templates are missing: reinstall urdfgenpy_ros '
-                         "(pip install --force-reinstall urdfgenpy_ros), or pass templates=")
+                         '(pip install --force-reinstall urdfgenpy_ros), or pass templates=')
