@@ -183,3 +183,42 @@ def test_relative_file_uris_resolve_beside_the_file_with_a_warning() -> None:
     assert result.exit_code == 0, result.output
     assert len(lines) == 1 and 'warning R307' in lines[0] and 'not portable' in lines[0]
     assert lines[0].startswith(f'{RELATIVE}:7:9: ')
+
+
+# ---- init --from a saved robot keeps its sensors -------------------------------------
+
+def sensor_robot() -> Robot:
+    """Return the pan-tilt unit with a camera, a lidar, an IMU and a force-torque sensor."""
+    from urdfgenpy_ros.examples import pan_tilt_unit
+    from urdfgenpy_ros.geometry import Origin
+    from urdfgenpy_ros.sensors import Camera, ForceTorque, Imu, Lidar
+    robot = pan_tilt_unit()
+    robot.get_link('tilt_link').add_sensor(Camera('head_cam', origin=Origin(xyz=(0.05, 0, 0))))
+    robot.get_link('base_plate').add_sensor(Lidar('scan', topic='laser/scan'))
+    robot.get_link('base_plate').add_sensor(Imu('imu'))
+    robot.get_joint('pan_joint').add_sensor(ForceTorque('pan_ft'))
+    return robot
+
+
+def test_init_from_a_saved_robot_bridges_what_the_builder_does(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    import yaml
+    from urdfgenpy_ros.scaffold.command import main as init
+    module = tmp_path / 'sensor_robot_module.py'
+    module.write_text('from test_workspace import sensor_robot\n')
+    monkeypatch.syspath_prepend(str(tmp_path))
+    monkeypatch.syspath_prepend(str(Path(__file__).parent))
+    saved = tmp_path / 'saved.urdf'
+    sensor_robot().save(saved)
+    for kind, source in (('built', 'sensor_robot_module:sensor_robot'), ('read', str(saved))):
+        assert init(['ptu_description', '--destination-directory', str(tmp_path / kind),
+                     '--from', source]) == 0
+    built, read = tmp_path / 'built' / 'ptu_description', tmp_path / 'read' / 'ptu_description'
+    bridge = yaml.safe_load((built / 'config' / 'ros_gz_bridge.yaml').read_text())
+    assert [entry['ros_topic_name'] for entry in bridge] == [
+        'clock', 'laser/scan', 'imu', 'head_cam', 'pan_ft']
+    compared = [path.relative_to(built) for folder in ('config', 'launch', 'rviz')
+                for path in sorted((built / folder).rglob('*')) if path.is_file()]
+    assert len(compared) >= 4
+    for relative in compared:
+        assert (read / relative).read_bytes() == (built / relative).read_bytes(), relative

@@ -30,6 +30,7 @@ from urdfgenpy_ros.geometry import Mesh
 from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.resources import PackageResolver, ResourceError
 from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.scaffold.sensors_read import sensors_of
 from urdfgenpy_ros.scaffold.spec import PackageSpec
 from urdfgenpy_ros.scaffold.templates import template_root
 
@@ -129,7 +130,7 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
     files = _meshes(spec, robot, list(search_paths or ()), warnings)
     urdf_files, includes, xacro_file = _urdf_files(spec, robot)
     files.update(urdf_files)
-    sensors = [sensor for owner in (*robot.links, *robot.joints) for sensor in owner.sensors]
+    sensors = sensors_of(robot)  # built, or read back from <gazebo> blocks
     context = {
         'name': spec.name, 'robot_name': robot.name, 'root_link': robot.root.name,
         'build_type': spec.build_type, 'maintainer_name': spec.maintainer_name,
