@@ -58,7 +58,8 @@ def _from_block(block: Any, owner: str | None) -> list[SensorInfo]:
 def sensors_of(robot: Robot) -> list[SensorInfo]:
     """Return every sensor of ``robot``, built or read from ``<gazebo>`` blocks, in order."""
     found: list[SensorInfo] = []
-    for owner in (*robot.links, *robot.joints):
+    owners: list[Any] = [*robot.links, *robot.joints]
+    for owner in owners:
         found += [_built(sensor, owner.name) for sensor in owner.sensors]
         for block in owner.extensions:
             found += _from_block(block, owner.name)
