@@ -21,6 +21,7 @@ import datetime
 import hashlib
 from pathlib import Path
 import shutil
+from typing import Any
 
 from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
 from urdfgenpy_ros.formats._xml import fragment, INDENT
@@ -28,7 +29,7 @@ from urdfgenpy_ros.formats.urdf import UrdfWriter
 from urdfgenpy_ros.formats.xacro import XACRO_NS
 from urdfgenpy_ros.geometry import Mesh
 from urdfgenpy_ros.material import Material
-from urdfgenpy_ros.resources import PackageResolver, ResourceError
+from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.scaffold.sensors_read import sensors_of
 from urdfgenpy_ros.scaffold.spec import PackageSpec
@@ -58,16 +59,22 @@ def _meshes(spec: PackageSpec, robot: Robot, search_paths: list[str],
     """Copy every resolvable mesh into meshes/ and point the robot's URIs at it."""
     resolver = PackageResolver(search_paths)
     base = None
-    if robot.source is not None and robot.source.file and Path(robot.source.file).is_file():
-        base = Path(robot.source.file).parent
+    origin = robot.included_files[0] if robot.included_files else (
+        robot.source.file if robot.source is not None else None)  # Xacro: the main file
+    if origin and Path(origin).is_file():
+        base = Path(origin).parent
     files: dict[str, bytes] = {}
     renamed: dict[str, str] = {}
     for link in robot.links:
-        for item in (*link.visuals, *link.collisions):
+        items: list[Any] = [*link.visuals, *link.collisions]
+        for item in items:
             mesh = item.geometry
             if not isinstance(mesh, Mesh):
                 continue
             if mesh.filename not in renamed:
+                note = uri_warning(mesh.filename)
+                if note is not None:
+                    warnings.append(note)
                 try:
                     data = resolver.resolve(mesh.filename, base).read_bytes()
                 except (ResourceError, OSError) as error:
