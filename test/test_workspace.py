@@ -222,3 +222,50 @@ def test_init_from_a_saved_robot_bridges_what_the_builder_does(
     assert len(compared) >= 4
     for relative in compared:
         assert (read / relative).read_bytes() == (built / relative).read_bytes(), relative
+
+
+# ---- the node and init on the workspace ----------------------------------------------
+
+def test_the_node_publishes_what_xacro_makes_of_a_urdf_file_with_arguments(graph) -> None:
+    from std_msgs.msg import String
+    expected = real_xacro(ROBOT, 'prefix:=n_')
+    graph.env['AMENT_PREFIX_PATH'] = str(PREFIX)
+    descriptions = graph.collect(String, 'robot_description', latched=True)
+    graph.start(f'model:={ROBOT}', "xacro_args:=['prefix:=n_']")
+    assert graph.spin_until(lambda: descriptions, 30)
+    assert canonical(descriptions[-1].data) == canonical(expected)
+
+
+def _meshes_by_name(urdf: str) -> str:
+    """Return URDF text with every mesh URI reduced to its file name."""
+    return re.sub(r'filename="[^"]*/([^"/]+)"', r'filename="\1"', urdf)
+
+
+def test_init_from_a_xacro_urdf_makes_a_package_xacro_expands_to_the_same_model(
+        tmp_path: Path) -> None:
+    from helpers import load_yourdfpy, snapshot
+    from urdfgenpy_ros.scaffold.command import main as init
+    with environment(SOURCED):
+        assert init(['wsbot_description', '--destination-directory', str(tmp_path / 'src'),
+                     '--from', str(ROBOT), '--xacro-args', 'prefix:=i_']) == 0
+    package = tmp_path / 'src' / 'wsbot_description'
+    # A prefix that holds the new package, as `colcon build` would install it.
+    prefix = tmp_path / 'install'
+    (prefix / 'share' / 'ament_index' / 'resource_index' / 'packages').mkdir(parents=True)
+    (prefix / 'share' / 'ament_index' / 'resource_index' / 'packages' /
+     'wsbot_description').write_text('')
+    (prefix / 'share' / 'wsbot_description').symlink_to(package, target_is_directory=True)
+    main = package / 'urdf' / 'ws_robot.urdf.xacro'
+    require_module('xacro')
+    result = subprocess.run([str(Path(sys.executable).with_name('xacro')), str(main)],
+                            capture_output=True, text=True, timeout=60,
+                            env=dict(os.environ, AMENT_PREFIX_PATH=str(prefix)))
+    assert result.returncode == 0, result.stderr
+    ours, theirs = tmp_path / 'ours.urdf', tmp_path / 'theirs.urdf'
+    ours.write_text(_meshes_by_name(result.stdout))
+    theirs.write_text(_meshes_by_name(real_xacro(ROBOT, 'prefix:=i_')))
+    assert snapshot(load_yourdfpy(ours)) == snapshot(load_yourdfpy(theirs))
+    # the meshes were copied in, byte for byte
+    assert (package / 'meshes' / 'wheel.stl').read_bytes() == (
+        PREFIX / 'share' / 'ws_parts' / 'meshes' / 'wheel.stl').read_bytes()
+    assert 'package://wsbot_description/meshes/cover.stl' in result.stdout
