@@ -269,3 +269,76 @@ def test_init_from_a_xacro_urdf_makes_a_package_xacro_expands_to_the_same_model(
     assert (package / 'meshes' / 'wheel.stl').read_bytes() == (
         PREFIX / 'share' / 'ws_parts' / 'meshes' / 'wheel.stl').read_bytes()
     assert 'package://wsbot_description/meshes/cover.stl' in result.stdout
+
+
+# ---- the corpus: description packages of several vendors -----------------------------
+
+CORPUS_MODELS = [
+    ('turtlebot3/turtlebot3_description/urdf/turtlebot3_burger.urdf', ()),
+    ('turtlebot3/turtlebot3_description/urdf/turtlebot3_waffle.urdf', ('namespace:=tb3_0/',)),
+    ('turtlebot3/turtlebot3_description/urdf/turtlebot3_waffle_pi.urdf',
+     ('namespace:=tb3_1/',)),
+    ('ur_description/urdf/ur.urdf.xacro', ('name:=ur', 'ur_type:=ur5e')),
+    ('kortex/kortex_description/robots/gen3.xacro', ('dof:=7', 'vision:=true')),
+    ('husky/husky_description/urdf/husky.urdf.xacro', ('is_sim:=true',)),
+]
+
+
+@pytest.fixture(scope='module')
+def corpus_index(tmp_path_factory: pytest.TempPathFactory) -> dict[str, str]:
+    """Return the environment of a shell with the corpus packages sourced."""
+    from helpers import ament_index, CORPUS
+    if not CORPUS.is_dir():
+        pytest.skip(f'corpus not found at {CORPUS} (set URDFGENPY_CORPUS)')
+    return ament_index(tmp_path_factory.mktemp('corpus_prefix'))
+
+
+@pytest.mark.parametrize('name, arguments', CORPUS_MODELS,
+                         ids=[f'{n} {" ".join(a)}' for n, a in CORPUS_MODELS])
+def test_corpus_packages_convert_like_xacro_in_a_sourced_shell(
+        name: str, arguments: tuple[str, ...], corpus_index: dict[str, str],
+        tmp_path: Path) -> None:
+    from helpers import CORPUS
+    path = CORPUS / name
+    require_module('xacro')
+    expected = subprocess.run([str(Path(sys.executable).with_name('xacro')), str(path),
+                               *arguments], capture_output=True, text=True, timeout=120,
+                              env=dict(os.environ, **corpus_index))
+    assert expected.returncode == 0, expected.stderr
+    target = tmp_path / 'out.urdf'
+    with environment(corpus_index):
+        result = CliRunner().invoke(cli, ['convert', str(path), str(target), *arguments])
+        tree = CliRunner().invoke(cli, ['tree', str(path), *arguments])
+    assert result.exit_code == 0, result.output
+    assert canonical(target.read_text()) == canonical(expected.stdout)
+    links, _ = names(expected.stdout)
+    assert tree.exit_code == 0 and links[0] in tree.stdout
+    if path.suffix == '.urdf':  # said once, on stderr
+        assert result.stderr.count('warning X101') == 1, result.stderr
+
+
+def test_init_from_turtlebot3_urdf_expands_in_xacro_to_the_same_model(
+        corpus_index: dict[str, str], tmp_path: Path) -> None:
+    from helpers import CORPUS, load_yourdfpy, snapshot
+    from urdfgenpy_ros.scaffold.command import main as init
+    source = CORPUS / 'turtlebot3/turtlebot3_description/urdf/turtlebot3_waffle_pi.urdf'
+    with environment(corpus_index):
+        assert init(['waffle_pi_description', '--destination-directory', str(tmp_path),
+                     '--from', str(source), '--xacro-args', 'namespace:=tb3_0/']) == 0
+    package = tmp_path / 'waffle_pi_description'
+    prefix = Path(corpus_index['AMENT_PREFIX_PATH'])
+    (prefix / 'share' / 'ament_index' / 'resource_index' / 'packages' /
+     'waffle_pi_description').write_text('')
+    (prefix / 'share' / 'waffle_pi_description').symlink_to(package)
+    xacro = str(Path(sys.executable).with_name('xacro'))
+    ours = subprocess.run([xacro, str(package / 'urdf' / 'turtlebot3_waffle_pi.urdf.xacro')],
+                          capture_output=True, text=True, timeout=120,
+                          env=dict(os.environ, **corpus_index))
+    assert ours.returncode == 0, ours.stderr  # was: "Property names must not start ..."
+    theirs = subprocess.run([xacro, str(source), 'namespace:=tb3_0/'], capture_output=True,
+                            text=True, timeout=120, env=dict(os.environ, **corpus_index))
+    (tmp_path / 'ours.urdf').write_text(_meshes_by_name(ours.stdout))
+    (tmp_path / 'theirs.urdf').write_text(_meshes_by_name(theirs.stdout))
+    assert snapshot(load_yourdfpy(tmp_path / 'ours.urdf')) == \
+        snapshot(load_yourdfpy(tmp_path / 'theirs.urdf'))
+    assert names(ours.stdout)[0][0] == 'tb3_0/base_footprint'
