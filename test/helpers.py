@@ -32,7 +32,18 @@ from urdfgenpy_ros import (
     Visual)
 
 REPO = Path(__file__).resolve().parents[1]
-CORPUS = Path(os.environ.get('URDFGENPY_CORPUS', REPO.parent / 'shared' / 'corpus'))
+FIXTURES = REPO / 'test' / 'fixtures'
+# The third-party corpus, only when a run is given one (CI sets it when it has one).
+CORPUS = Path(os.environ.get('URDFGENPY_CORPUS') or '/nonexistent/urdfgenpy-corpus')
+NO_CORPUS = 'no corpus: set URDFGENPY_CORPUS to a folder of third-party robots to run this'
+
+
+def corpus_file(relative: str) -> Path:
+    """Return a file of the third-party corpus; skip (one line) when there is none."""
+    path = CORPUS / relative
+    if not path.exists():
+        pytest.skip(NO_CORPUS if not CORPUS.is_dir() else f'{relative} not in the corpus')
+    return path
 
 
 def require_tool(name: str) -> str:

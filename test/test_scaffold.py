@@ -152,7 +152,7 @@ def test_the_verb_runs_as_ros2cli_drives_it(tmp_path: Path) -> None:
 def test_bad_names_are_one_line_and_nothing_is_written(
         arguments: list[str], words: str, tmp_path: Path,
         capsys: pytest.CaptureFixture[str]) -> None:
-    assert init([*arguments, '--destination-directory', str(tmp_path)]) == 1
+    assert init([*arguments, '--destination-directory', str(tmp_path)]) == 2
     error = capsys.readouterr().err
     assert error.count('\n') == 1 and words in error
     assert list(tmp_path.iterdir()) == []
@@ -163,7 +163,7 @@ def test_existing_files_are_never_overwritten_without_force(
     target = tmp_path / 'ptu_description'
     target.mkdir()
     (target / 'notes.txt').write_text('mine')
-    assert init(['ptu_description', '--destination-directory', str(tmp_path)]) == 1
+    assert init(['ptu_description', '--destination-directory', str(tmp_path)]) == 2
     assert 'exists and is not empty' in capsys.readouterr().err
     assert sorted(p.name for p in target.iterdir()) == ['notes.txt']
     assert init(['ptu_description', '--destination-directory', str(tmp_path), '--force']) == 0
@@ -174,7 +174,7 @@ def test_unwritable_destination_is_one_line_and_leaves_nothing(
         tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     blocker = tmp_path / 'a_file'
     blocker.write_text('x')
-    assert init(['ptu_description', '--destination-directory', str(blocker / 'sub')]) == 1
+    assert init(['ptu_description', '--destination-directory', str(blocker / 'sub')]) == 2
     error = capsys.readouterr().err
     assert error.count('\n') == 1 and 'cannot write' in error
     assert sorted(p.name for p in tmp_path.iterdir()) == ['a_file']

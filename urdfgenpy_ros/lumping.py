@@ -28,6 +28,7 @@ import copy
 from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.link import Shape
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.transforms import (
     from_xyz_rpy, IDENTITY4, Matrix4, multiply, to_xyz_rpy)
@@ -82,7 +83,8 @@ def lump_fixed_joints(robot: Robot) -> Robot:
         if child.inertial is not None:
             parts.append((child.inertial, frame))
         parent.inertial = combine(parts) if parts else None
-        for item in (*child.visuals, *child.collisions):
+        items: tuple[Shape, ...] = (*child.visuals, *child.collisions)
+        for item in items:
             item.origin = _compose(at, item.origin)
         parent.visuals.extend(child.visuals)
         parent.collisions.extend(child.collisions)

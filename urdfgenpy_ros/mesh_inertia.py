@@ -47,7 +47,7 @@ def load_triangles(path: str | PathLike[str]) -> Any:
     except ImportError:
         raise MissingDependencyError('trimesh', 'mesh', 'Inertial.from_mesh') from None
     try:
-        mesh = trimesh.load(str(path), force='mesh', process=False)
+        mesh: Any = trimesh.load(str(path), force='mesh', process=False)
     except (OSError, ValueError, KeyError) as error:
         raise UrdfgenpyError(f'{path}: cannot read the mesh ({error})') from None
     return mesh.vertices[mesh.faces]

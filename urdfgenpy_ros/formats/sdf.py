@@ -30,10 +30,11 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
+from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.formats._xml import fmt, fmt_vec, write_text
 from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Mesh, Origin, Sphere
 from urdfgenpy_ros.joint import Joint, JointType
-from urdfgenpy_ros.link import Link
+from urdfgenpy_ros.link import Link, Visual
 from urdfgenpy_ros.material import Material
 
 if TYPE_CHECKING:
@@ -113,7 +114,7 @@ def _link(model: Any, link: Link, robot: Robot, pose: tuple[Origin, str] | None)
                                      name=_unique(item.name or f'{link.name}_{kind}', taken))
             _pose(shape, item.origin)
             _geometry(shape, item.geometry)
-            if kind == 'visual':
+            if isinstance(item, Visual):
                 _material(shape, item.material, robot)
     for sensor in link.sensors:
         element.append(sensor.to_sdf())
@@ -174,16 +175,16 @@ def write_sdf(robot: Robot, path: str | PathLike[str] | None = None,
              for joint in robot.joints}
     for joint in robot.joints:
         if joint.type is JointType.PLANAR:
-            raise ValueError(f'joint {joint.name!r}: SDF has no planar joint (model it as '
+            raise ModelError(f'joint {joint.name!r}: SDF has no planar joint (model it as '
                              'two prismatic joints and a revolute one)')
     for link in robot.links:
-        joint = parent_joint.get(link.name)
-        if joint is None:
+        parent = parent_joint.get(link.name)
+        if parent is None:
             pose = None
-        elif joint.type is JointType.FLOATING:
-            pose = (joint.origin, joint.parent)
+        elif parent.type is JointType.FLOATING:
+            pose = (parent.origin, parent.parent)
         else:
-            pose = (Origin(), names[joint.name])
+            pose = (Origin(), names[parent.name])
         _link(model, link, robot, pose)
     for joint in robot.joints:
         if joint.type is not JointType.FLOATING:

@@ -25,6 +25,7 @@ from __future__ import annotations
 from os import PathLike
 from typing import Any, TYPE_CHECKING
 
+from urdfgenpy_ros.errors import ModelTypeError
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._xml import (
     Attr, element, esc, fmt, fmt_vec, fragment, INDENT, verbatim, write_text)
@@ -146,7 +147,8 @@ class UrdfWriter:
         children.extend(self.write_material(material, pad) for material in materials)
         for link in links:
             children.append(self.write_link(link, pad))
-        for owner in (*robot.links, *robot.joints):
+        owners: tuple[Link | Joint, ...] = (*robot.links, *robot.joints)
+        for owner in owners:
             children.extend(self._write_item(block, pad, owner)
                             for block in owner.extensions if id(block) not in written)
             children.extend(_sensor_block(sensor, owner.name, pad) for sensor in owner.sensors)
@@ -166,14 +168,15 @@ class UrdfWriter:
     def _all_extensions(self) -> list[Extension]:
         robot = self.robot
         blocks = list(robot.extensions)
-        for owner in (*robot.links, *robot.joints):
+        owners: tuple[Link | Joint, ...] = (*robot.links, *robot.joints)
+        for owner in owners:
             blocks.extend(owner.extensions)
         return blocks
 
     def _write_item(self, item: object, pad: str, owner: Link | Joint | None = None) -> str:
         extras = getattr(item, 'extras', None)
-        if extras is not None and extras.state is not None and extras.state == state(item) \
-                and self.verbatim:
+        if extras is not None and extras.state is not None and self.verbatim \
+                and extras.state == state(item):  # type: ignore[arg-type]
             return verbatim(extras.node, pad, self.declared)
         if isinstance(item, Link):
             return self.write_link(item, pad)
@@ -190,8 +193,9 @@ class UrdfWriter:
 
     def _owner(self, block: Extension) -> Link | Joint | None:
         if self._owners is None:
+            owners: tuple[Link | Joint, ...] = (*self.robot.links, *self.robot.joints)
             self._owners = {id(candidate): owner
-                            for owner in (*self.robot.links, *self.robot.joints)
+                            for owner in owners
                             for candidate in owner.extensions}
         return self._owners.get(id(block))
 
@@ -293,7 +297,7 @@ class UrdfWriter:
             if geometry.scale is not None:
                 attrs.append(('scale', geometry.scale, fmt_vec(geometry.scale), _ONE3))
         else:
-            raise TypeError(f'cannot write geometry of type {type(geometry).__name__}')
+            raise ModelTypeError(f'cannot write geometry of type {type(geometry).__name__}')
         shape = element(inner, tag, attrs, geometry.extras, [])
         return element(pad, 'geometry', [], _sub(geometry.extras, 'geometry'), [shape])
 

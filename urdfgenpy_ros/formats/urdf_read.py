@@ -192,7 +192,9 @@ class _Reader:
         """Read a ``<material>`` definition or reference."""
         self.plain = True
         name = self.text(node, 'name', 'the material name')
-        rgba, texture, nested = None, None, {}
+        rgba: Any = None
+        texture: str | None = None
+        nested: dict[str, Any] = {}
         for child in node:
             if child.tag == 'color' and rgba is None:
                 rgba = self.numbers(child, 'rgba', 4)
@@ -237,7 +239,7 @@ class _Reader:
         if not filename:
             raise self.fail(node, "<mesh>: missing 'filename' (the mesh file, e.g. "
                                   'package://my_robot/meshes/part.stl)')
-        scale = self.numbers(node, 'scale', 3) if node.get('scale') is not None else None
+        scale: Any = self.numbers(node, 'scale', 3) if node.get('scale') is not None else None
         return Mesh(filename, scale, source=self.where(node),
                     extras=self.keep(node, 'mesh', wrapper))
 

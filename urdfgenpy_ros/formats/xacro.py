@@ -89,7 +89,8 @@ class XacroWriter(UrdfWriter):
         self.mass_names = {link.name: _identifier(link.name, taken)
                            for link in robot.links if link.inertial is not None}
         self.kinds = sorted({link.inertial.solid[0] for link in robot.links
-                             if _uses_macro(link.inertial)})
+                             if link.inertial is not None and link.inertial.solid is not None
+                             and _uses_macro(link.inertial)})
 
     def document(self) -> str:
         """Return the whole file, with ``$`` escaped wherever it is not ours."""

@@ -27,7 +27,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 import math
 
-from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.errors import ModelError, UrdfgenpyError
 from urdfgenpy_ros.joint import JointType
 from urdfgenpy_ros.robot import Robot
 
@@ -129,9 +129,9 @@ class JointStates:
         for label, values in (('position', positions), ('velocity', velocities),
                               ('effort', efforts)):
             if values and len(values) != len(names):
-                raise ValueError(f'{len(names)} names but {len(values)} {label} values')
+                raise ModelError(f'{len(names)} names but {len(values)} {label} values')
             if any(math.isnan(value) for value in values):
-                raise ValueError(f'{label} holds NaN')
+                raise ModelError(f'{label} holds NaN')
         unknown = []
         self.version += 1
         for index, name in enumerate(names):

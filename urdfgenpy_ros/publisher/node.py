@@ -40,6 +40,7 @@ from std_msgs.msg import String
 from urdfgenpy_ros.errors import Severity, UrdfgenpyError
 from urdfgenpy_ros.model_source import load_model
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
+from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 
 if TYPE_CHECKING:  # imported when needed: sensor_msgs brings numpy, not needed to start
     from sensor_msgs.msg import JointState
@@ -74,8 +75,13 @@ class PublisherNode(Node):
     """Publish a validated robot description and its joint states."""
 
     def __init__(self, **kwargs: Any) -> None:
-        super().__init__('urdfgenpy_publisher',
-                         automatically_declare_parameters_from_overrides=True, **kwargs)
+        try:
+            super().__init__('urdfgenpy_publisher',
+                             automatically_declare_parameters_from_overrides=True, **kwargs)
+        except ValueError as error:  # rclpy refusing an override it cannot type, e.g. []
+            raise UrdfgenpyError(
+                f'bad parameter: {error} (an empty list has no type in ROS 2: leave the '
+                'parameter out to get its default)') from None
         for name, (default, kind, description) in _PARAMETERS.items():
             descriptor = ParameterDescriptor(description=description)
             if kind is None:
@@ -144,8 +150,16 @@ class PublisherNode(Node):
         return robot, watched
 
     def _joint_states(self, robot: Robot) -> JointStates:
-        zeros = {name: parameter.value
-                 for name, parameter in self.get_parameters_by_prefix('zeros').items()}
+        # rclpy annotates the values as plain values; they are Parameter objects.
+        parameters: dict[str, Any] = dict(self.get_parameters_by_prefix('zeros'))
+        zeros = {}
+        for name, parameter in parameters.items():
+            value = parameter.value
+            if isinstance(value, bool) or not isinstance(value, (int, float)) \
+                    or not math.isfinite(value):
+                raise UrdfgenpyError(f"parameter 'zeros.{name}': {value!r} is not a finite "
+                                     'number (the joint position, in rad or m)')
+            zeros[name] = float(value)
         options = JointStateOptions(
             zeros=zeros, use_mimic_tags=self.values['use_mimic_tags'],
             use_smallest_joint_limits=self.values['use_smallest_joint_limits'],
@@ -159,10 +173,10 @@ class PublisherNode(Node):
         try:
             robot, watched = self._load()
             states = self._joint_states(robot)
-        except UrdfgenpyError as error:
+        except KNOWN_ERRORS as error:
             self.get_logger().error(f'reload failed, still publishing the last good model: '
-                                    f'{error}')
-            return False, str(error)
+                                    f'{one_line(error)}')
+            return False, one_line(error)
         previous = dict(self.states.free)
         for name, joint in states.free.items():
             if name in previous:
@@ -198,7 +212,7 @@ class PublisherNode(Node):
         return response
 
     def _modification_times(self) -> dict[str, float]:
-        stamps = {}
+        stamps: dict[str, float] = {}
         for file in self.watched:
             try:
                 stamps[file] = os.stat(file).st_mtime_ns
@@ -301,8 +315,8 @@ def main(args: list[str] | None = None) -> int:
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
-    except UrdfgenpyError as error:
-        rclpy.logging.get_logger('urdfgenpy_publisher').error(str(error))
+    except KNOWN_ERRORS as error:
+        rclpy.logging.get_logger('urdfgenpy_publisher').error(one_line(error))
         return 1
     except rclpy.exceptions.InvalidParameterTypeException as error:
         rclpy.logging.get_logger('urdfgenpy_publisher').error(

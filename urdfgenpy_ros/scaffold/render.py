@@ -21,13 +21,13 @@ import datetime
 import hashlib
 from pathlib import Path
 import shutil
-from typing import Any
 
 from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
 from urdfgenpy_ros.formats._xml import fragment, INDENT
 from urdfgenpy_ros.formats.urdf import UrdfWriter
 from urdfgenpy_ros.formats.xacro import XACRO_NS
 from urdfgenpy_ros.geometry import Mesh
+from urdfgenpy_ros.link import Shape
 from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
 from urdfgenpy_ros.robot import Robot
@@ -66,7 +66,7 @@ def _meshes(spec: PackageSpec, robot: Robot, search_paths: list[str],
     files: dict[str, bytes] = {}
     renamed: dict[str, str] = {}
     for link in robot.links:
-        items: list[Any] = [*link.visuals, *link.collisions]
+        items: tuple[Shape, ...] = (*link.visuals, *link.collisions)
         for item in items:
             mesh = item.geometry
             if not isinstance(mesh, Mesh):

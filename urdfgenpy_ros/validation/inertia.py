@@ -21,7 +21,7 @@ import math
 from urdfgenpy_ros.geometry import Box, Cylinder, Sphere
 from urdfgenpy_ros.inertial import box_tensor, cylinder_tensor, Inertial, sphere_tensor
 from urdfgenpy_ros.joint import JointType
-from urdfgenpy_ros.link import Link
+from urdfgenpy_ros.link import Link, Shape
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.transforms import symmetric_eigenvalues
 from urdfgenpy_ros.validation.findings import Findings, link_path
@@ -44,7 +44,7 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
             count = below.get(link.name, 0)
             dropped = "Gazebo's URDF conversion drops it with its joint" + (
                 f' and the {count} link(s) below it' if count else '')
-            if moves:
+            if joint is not None and moves:
                 findings.add('I207', link, element, link_path(link.name),
                              f'moves ({joint.type} joint {joint.name!r}) but has no '
                              '<inertial>', f'RViz does not mind; {dropped}, and MuJoCo '
@@ -111,7 +111,8 @@ def _check_tensor(inertial: Inertial, element: str, where: str,
 
 def _check_plausible(link: Link, inertial: Inertial, element: str, where: str,
                      findings: Findings) -> None:
-    shape = next((item.geometry for item in (*link.collisions, *link.visuals)
+    items: tuple[Shape, ...] = (*link.collisions, *link.visuals)
+    shape = next((item.geometry for item in items
                   if isinstance(item.geometry, (Box, Cylinder, Sphere))), None)
     if shape is None:
         return

@@ -22,6 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from urdfgenpy_ros.geometry import Box, Cylinder, Mesh, Sphere
+from urdfgenpy_ros.link import Shape
 from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
@@ -31,7 +32,9 @@ def check_references(robot: Robot, findings: Findings, resolver: PackageResolver
                      base: Path | None) -> None:
     """Check materials, meshes (when a resolver is given), sizes and non-finite numbers."""
     for link in robot.links:
-        for kind, shapes in (('visual', link.visuals), ('collision', link.collisions)):
+        groups: tuple[tuple[str, list[Shape]], ...] = (
+            ('visual', list(link.visuals)), ('collision', list(link.collisions)))
+        for kind, shapes in groups:
             for number, shape in enumerate(shapes, start=1):
                 where = f'{link_path(link.name)}/{kind}[{number}]'
                 element = f'link {link.name!r}'
