@@ -75,7 +75,7 @@ def test_200_reads_in_one_process_stay_the_same_and_flat() -> None:
     assert included[0] == [str(ROBOT.resolve()), wheel]
     assert all(files == included[0] for files in included)
     # No absolute times: the last reads are not markedly slower than the first ones.
-    assert statistics.median(times[-20:]) < 2.0 * statistics.median(times[:20])
+    assert statistics.median(times[-20:]) < 2.5 * statistics.median(times[:20])
 
 
 # ---- Xacro whatever the suffix -------------------------------------------------------
