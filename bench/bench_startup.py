@@ -19,7 +19,9 @@ Node start-up: process start to the first ``robot_description``, per model sourc
 Against a minimal rclpy node that publishes a fixed string on ``robot_description`` with
 the same QoS (reliable, transient local, depth 1). One run, trials interleaved (each
 round starts every contender once, so drift in the machine's load hits all alike), on an
-isolated ROS domain, with one subscriber living in this process. Model sources: a URDF
+isolated ROS domain, with one subscriber living in this process. Besides the wall time,
+the contender's CPU time (user + system, from ``/proc/<pid>/stat``) when its description
+arrives: on a shared machine it varies far less than the wall time. Model sources: a URDF
 file, a Xacro file with arguments (the fixture workspace's ``ws_robot.urdf``,
 ``prefix:=a_``, its packages in ``AMENT_PREFIX_PATH``), a DH table and a builder
 function (``package.module:function``).
@@ -70,6 +72,17 @@ rows:
 """
 
 
+def _cpu_seconds(pid: int) -> float:
+    """Return the user + system CPU time of process ``pid`` so far."""
+    fields = Path(f'/proc/{pid}/stat').read_text().rsplit(')', 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf('SC_CLK_TCK')
+
+
+def _p90(values: list[float]) -> float:
+    ordered = sorted(values)
+    return ordered[min(len(ordered) - 1, round(0.9 * (len(ordered) - 1)))]
+
+
 def contenders(folder: Path) -> dict[str, list[str]]:
     """Return the command of each contender."""
     sys.path.insert(0, str(REPO))
@@ -111,6 +124,7 @@ def main() -> None:
     listener.create_subscription(String, 'robot_description',
                                  lambda _: received.append(time.monotonic()), qos)
     times: dict[str, list[float]] = {}
+    cpu: dict[str, list[float]] = {}
     with tempfile.TemporaryDirectory() as folder:
         commands = contenders(Path(folder))
         for _ in range(options.repeat):
@@ -123,6 +137,7 @@ def main() -> None:
                     rclpy.spin_once(listener, timeout_sec=0.005)
                 times.setdefault(name, []).append(
                     received[0] - started if received else float('nan'))
+                cpu.setdefault(name, []).append(_cpu_seconds(process.pid))
                 process.send_signal(2)
                 try:
                     process.wait(timeout=10)
@@ -133,15 +148,16 @@ def main() -> None:
     listener.destroy_node()
     rclpy.try_shutdown()
     floor = statistics.median(times['minimal rclpy (fixed string)'])
-    print(f'{options.repeat} trials each, interleaved\n')
-    print('| model source | median s | p90 s | × minimal node |')
-    print('|---|---:|---:|---:|')
+    cpu_floor = statistics.median(cpu['minimal rclpy (fixed string)'])
+    print(f'{options.repeat} trials each, interleaved; load average before: '
+          f'{os.getloadavg()[0]:.1f}\n')
+    print('| model source | wall median s | wall p90 s | wall × minimal | CPU median s | '
+          'CPU p90 s | CPU × minimal |')
+    print('|---|---:|---:|---:|---:|---:|---:|')
     for name, values in times.items():
-        ordered = sorted(values)
-        p90 = ordered[min(len(ordered) - 1, round(0.9 * (len(ordered) - 1)))]
-        median = statistics.median(values)
-        print(f'| {name} | {median:.3f} | {p90:.3f} | {median / floor:.2f} |')
-
+        median, cpu_median = statistics.median(values), statistics.median(cpu[name])
+        print(f'| {name} | {median:.3f} | {_p90(values):.3f} | {median / floor:.2f} | '
+              f'{cpu_median:.2f} | {_p90(cpu[name]):.2f} | {cpu_median / cpu_floor:.2f} |')
 
 if __name__ == '__main__':
     main()
