@@ -159,5 +159,6 @@ def main() -> None:
         print(f'| {name} | {median:.3f} | {_p90(values):.3f} | {median / floor:.2f} | '
               f'{cpu_median:.2f} | {_p90(cpu[name]):.2f} | {cpu_median / cpu_floor:.2f} |')
 
+
 if __name__ == '__main__':
     main()
