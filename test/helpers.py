@@ -38,6 +38,21 @@ CORPUS = Path(os.environ.get('URDFGENPY_CORPUS') or '/nonexistent/urdfgenpy-corp
 NO_CORPUS = 'no corpus: set URDFGENPY_CORPUS to a folder of third-party robots to run this'
 
 
+def corpus_cases(cases: list, ids: list[str] | None = None) -> list:
+    """
+    Return parametrize cases that read the corpus: all of them with a corpus, else one skip.
+
+    Without a corpus the whole list collapses into one skipped case, so that a run without
+    it counts one skip per test, not one per file.
+    """
+    if CORPUS.is_dir():
+        return [pytest.param(*case, id=ident) if isinstance(case, tuple) else
+                pytest.param(case, id=ident)
+                for case, ident in zip(cases, ids or [str(case) for case in cases])]
+    width = len(cases[0]) if cases and isinstance(cases[0], tuple) else 1
+    return [pytest.param(*([None] * width), id='no-corpus', marks=pytest.mark.skip(NO_CORPUS))]
+
+
 def corpus_file(relative: str) -> Path:
     """Return a file of the third-party corpus; skip (one line) when there is none."""
     path = CORPUS / relative
@@ -251,20 +266,25 @@ CORPUS_PACKAGES = {
 }
 
 
-def ament_index(root: Path) -> dict[str, str]:
+FIXTURE_PACKAGES = {'fixture_description': FIXTURES / 'packages' / 'fixture_description'}
+
+
+def ament_index(root: Path, packages: dict[str, Path] | None = None) -> dict[str, str]:
     """
-    Make a real ament index of the corpus packages under ``root``.
+    Make a real ament index under ``root`` of ``packages`` (default: the corpus packages).
 
     Return the environment that makes ament_index_python (and so plain xacro) find them.
     """
+    if packages is None:
+        packages = {name: CORPUS / folder for name, folder in CORPUS_PACKAGES.items()}
     share = root / 'share'
     markers = share / 'ament_index' / 'resource_index' / 'packages'
     markers.mkdir(parents=True, exist_ok=True)
-    for name, folder in CORPUS_PACKAGES.items():
+    for name, folder in packages.items():
         (markers / name).write_text('')
         link = share / name
         if not link.exists():
-            link.symlink_to(CORPUS / folder, target_is_directory=True)
+            link.symlink_to(folder, target_is_directory=True)
     return {'AMENT_PREFIX_PATH': str(root)}
 
 

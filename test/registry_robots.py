@@ -72,9 +72,10 @@ def robots() -> list[Path]:
 
 
 def robot(name: str) -> Path:
-    """Return the registry robot whose file is called ``name``; skip if not installed."""
-    for path in robots():
-        if path.name == name:
+    """Return the registry robot file called ``name`` (URDF or Xacro); skip if not installed."""
+    for distribution, inside, _ in _SOURCES:
+        folder = _folder(distribution, inside)
+        for path in sorted(folder.rglob(name)) if folder is not None else []:
             return path
     pytest.skip(f'{name} not installed: pip install -e ".[test]" installs the robots')
 

@@ -27,12 +27,15 @@ import subprocess
 import tempfile
 
 from click.testing import CliRunner
-from hypothesis import given, HealthCheck, settings, strategies as st
 import pytest
 
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.examples import pan_tilt_unit
 from urdfgenpy_ros.scaffold.command import main as init_main
+
+hypothesis = pytest.importorskip('hypothesis')  # its decorators are needed at import time
+st = pytest.importorskip('hypothesis.strategies')
+given, HealthCheck, settings = hypothesis.given, hypothesis.HealthCheck, hypothesis.settings
 
 DH_YAML = """convention: standard
 degrees: false

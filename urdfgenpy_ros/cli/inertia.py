@@ -42,7 +42,10 @@ def inertia(mesh: Path | None, mass: float | None, density: float | None, scale:
             meshlab: bool, volume: float | None, tensor: str | None) -> None:
     """Print the <inertial> of MESH (STL, OBJ, DAE), or of MeshLab's figures (--meshlab)."""
     if meshlab:
-        numbers = [float(value) for value in (tensor or '').replace(',', ' ').split()]
+        try:
+            numbers = [float(value) for value in (tensor or '').replace(',', ' ').split()]
+        except ValueError as error:
+            raise click.BadParameter(f'{tensor!r}: {error}', param_hint='--tensor') from None
         if mass is None or volume is None or len(numbers) != 9:
             raise UrdfgenpyError('--meshlab needs --mass, --volume and --tensor with 9 '
                                  'numbers (row by row, as MeshLab prints them)')
