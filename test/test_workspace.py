@@ -342,3 +342,18 @@ def test_init_from_turtlebot3_urdf_expands_in_xacro_to_the_same_model(
     assert snapshot(load_yourdfpy(tmp_path / 'ours.urdf')) == \
         snapshot(load_yourdfpy(tmp_path / 'theirs.urdf'))
     assert names(ours.stdout)[0][0] == 'tb3_0/base_footprint'
+
+
+def test_an_unfound_find_is_one_line_naming_the_package(monkeypatch: pytest.MonkeyPatch
+                                                         ) -> None:
+    require_module('xacro')
+    monkeypatch.delenv('AMENT_PREFIX_PATH', raising=False)
+    monkeypatch.delenv('ROS_PACKAGE_PATH', raising=False)
+    with pytest.raises(ParseError) as raised:
+        Robot.from_xacro(ROBOT)
+    assert str(raised.value) == (
+        f"{ROBOT}: error X001 xacro: $(find ws_parts): package 'ws_parts' not found (source "
+        'the workspace that holds it, or pass its folder in search_paths / --package-path)')
+    # and the next read, with the package found, is not disturbed by the failed one
+    robot = Robot.from_xacro(ROBOT, search_paths=[PREFIX / 'share'])
+    assert len(robot.included_files) == 2

@@ -29,6 +29,10 @@ from urdfgenpy_ros.resources import PackageResolver
 from urdfgenpy_ros.robot import Robot
 
 
+class _PackageMissing(LookupError):
+    """A ``$(find pkg)`` nothing answers; its message is the whole story."""
+
+
 _LOCK = threading.Lock()  # xacro keeps its state in module globals: one read at a time
 
 
@@ -68,7 +72,15 @@ def _finding_with(resolver: PackageResolver) -> Iterator[None]:
 
     def find(package: str) -> str:
         found = resolver.find(package)
-        return str(found) if found is not None else original(package)
+        if found is not None:
+            return str(found)
+        try:
+            return original(package)
+        except Exception:  # noqa: B902 - ament's, rospkg's or an unset AMENT_PREFIX_PATH
+            raise _PackageMissing(
+                f'$(find {package}): package {package!r} not found (source the workspace '
+                'that holds it, or pass its folder in search_paths / --package-path)'
+            ) from None
 
     substitution_args._eval_find = find
     try:
@@ -92,8 +104,11 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
             document = xacro.process_file(str(path), mappings=dict(mappings or {}))
             names = list(dict.fromkeys(includes))
     except Exception as error:  # noqa: B902 - xacro raises many types; all are one line
-        message = ' '.join(str(error).split()) or type(error).__name__
-        if 'ament_index_python' in message or 'PackageNotFound' in type(error).__name__:
+        cause = getattr(error, 'exc', None)  # xacro wraps what substitutions raise
+        shown = cause if isinstance(cause, _PackageMissing) else error
+        message = ' '.join(str(shown).split()) or type(error).__name__
+        if ('ament_index_python' in message or 'PackageNotFound' in type(error).__name__) \
+                and 'search_paths' not in message:
             message += ' (pass the package folders in search_paths)'
         raise ParseError(f'xacro: {message}', where, 'X001') from None
     included = [str(Path(name).resolve()) for name in names]
