@@ -21,7 +21,14 @@ the same QoS (reliable, transient local, depth 1). One run, trials interleaved (
 round starts every contender once, so drift in the machine's load hits all alike), on an
 isolated ROS domain, with one subscriber living in this process. Besides the wall time,
 the contender's CPU time (user + system, from ``/proc/<pid>/stat``) when its description
-arrives: on a shared machine it varies far less than the wall time. Model sources: a URDF
+arrives: on a shared machine it varies far less than the wall time. Last, each contender
+once more in a wrapper that stops it at its first publish of the description and prints
+the process's CPU time then (``time.process_time``), which leaves out discovery and what
+runs after that publish.
+
+Python files are byte-compiled first and ``PYTHONDONTWRITEBYTECODE`` is dropped, as in any
+pip or colcon install: otherwise each start compiles the package from source (0.2 s of
+CPU here), which no installed node does. Model sources: a URDF
 file, a Xacro file with arguments (the fixture workspace's ``ws_robot.urdf``,
 ``prefix:=a_``, its packages in ``AMENT_PREFIX_PATH``), a DH table and a builder
 function (``package.module:function``).
@@ -32,6 +39,7 @@ function (``package.module:function``).
 from __future__ import annotations
 
 import argparse
+import compileall
 import os
 from pathlib import Path
 import random
@@ -58,6 +66,24 @@ try:
     rclpy.spin(node)
 except KeyboardInterrupt:
     pass
+"""
+
+_AT_PUBLISH = """
+import os, runpy, sys, time
+import rclpy.publisher
+original = rclpy.publisher.Publisher.publish
+def publish(self, message):
+    original(self, message)
+    if self.topic_name.endswith('robot_description'):
+        print(time.process_time(), flush=True)
+        os._exit(0)
+rclpy.publisher.Publisher.publish = publish
+if sys.argv[1] == '-m':
+    sys.argv = [sys.argv[2], *sys.argv[3:]]
+    runpy.run_module(sys.argv[0], run_name='__main__')
+else:
+    sys.argv = sys.argv[1:]
+    runpy.run_path(sys.argv[0], run_name='__main__')
 """
 
 _DH = """convention: standard
@@ -113,6 +139,8 @@ def main() -> None:
     domain = str(random.randint(30, 220))
     os.environ.update(ROS_DOMAIN_ID=domain, ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST')
     env = dict(os.environ, AMENT_PREFIX_PATH=str(PREFIX))
+    env.pop('PYTHONDONTWRITEBYTECODE', None)
+    compileall.compile_dir(str(REPO / 'urdfgenpy_ros'), quiet=1)
     import rclpy
     from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
     from std_msgs.msg import String
@@ -145,6 +173,16 @@ def main() -> None:
                     process.kill()
                     process.wait()
                 time.sleep(0.2)  # let discovery forget the node
+        at_publish: dict[str, list[float]] = {}
+        wrapper = Path(folder) / 'at_publish.py'
+        wrapper.write_text(_AT_PUBLISH)
+        for _ in range(options.repeat):
+            for name, command in commands.items():
+                result = subprocess.run([command[0], str(wrapper), *command[1:]], env=env,
+                                        capture_output=True, text=True, timeout=60)
+                lines = result.stdout.split()
+                at_publish.setdefault(name, []).append(float(lines[-1]) if lines
+                                                       else float('nan'))
     listener.destroy_node()
     rclpy.try_shutdown()
     floor = statistics.median(times['minimal rclpy (fixed string)'])
@@ -158,6 +196,12 @@ def main() -> None:
         median, cpu_median = statistics.median(values), statistics.median(cpu[name])
         print(f'| {name} | {median:.3f} | {_p90(values):.3f} | {median / floor:.2f} | '
               f'{cpu_median:.2f} | {_p90(cpu[name]):.2f} | {cpu_median / cpu_floor:.2f} |')
+    publish_floor = statistics.median(at_publish['minimal rclpy (fixed string)'])
+    print('\n| model source | CPU at first publish, median s | p90 s | × minimal |')
+    print('|---|---:|---:|---:|')
+    for name, values in at_publish.items():
+        median = statistics.median(values)
+        print(f'| {name} | {median:.3f} | {_p90(values):.3f} | {median / publish_floor:.2f} |')
 
 
 if __name__ == '__main__':
