@@ -344,8 +344,8 @@ def test_init_from_turtlebot3_urdf_expands_in_xacro_to_the_same_model(
     assert names(ours.stdout)[0][0] == 'tb3_0/base_footprint'
 
 
-def test_an_unfound_find_is_one_line_naming_the_package(monkeypatch: pytest.MonkeyPatch
-                                                         ) -> None:
+def test_an_unfound_find_is_one_line_naming_the_package(
+        monkeypatch: pytest.MonkeyPatch) -> None:
     require_module('xacro')
     monkeypatch.delenv('AMENT_PREFIX_PATH', raising=False)
     monkeypatch.delenv('ROS_PACKAGE_PATH', raising=False)
