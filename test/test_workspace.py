@@ -218,6 +218,11 @@ def test_init_from_a_saved_robot_bridges_what_the_builder_does(
     bridge = yaml.safe_load((built / 'config' / 'ros_gz_bridge.yaml').read_text())
     assert [entry['ros_topic_name'] for entry in bridge] == [
         'clock', 'laser/scan', 'imu', 'head_cam', 'pan_ft']
+    rviz = yaml.safe_load((built / 'rviz' / 'display.rviz').read_text())
+    displays = {display['Name']: (display['Class'], display.get('Topic', {}).get('Value'))
+                for display in rviz['Visualization Manager']['Displays']}
+    assert displays['head_cam'] == ('rviz_default_plugins/Image', '/head_cam')
+    assert displays['scan'] == ('rviz_default_plugins/LaserScan', '/laser/scan')
     compared = [path.relative_to(built) for folder in ('config', 'launch', 'rviz')
                 for path in sorted((built / folder).rglob('*')) if path.is_file()]
     assert len(compared) >= 4

@@ -44,6 +44,9 @@ _BRIDGE_TYPES = {'camera': ('sensor_msgs/msg/Image', 'gz.msgs.Image'),
                  'imu': ('sensor_msgs/msg/Imu', 'gz.msgs.IMU'),
                  'force_torque': ('geometry_msgs/msg/Wrench', 'gz.msgs.Wrench')}
 
+# RViz displays for what the sensors publish through the bridge (off until Gazebo runs).
+_DISPLAYS = {'camera': 'Image', 'gpu_lidar': 'LaserScan'}
+
 
 def _escape(text: str) -> str:
     return text.replace('${', '$${').replace('$(', '$$(')
@@ -146,6 +149,10 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
         'includes': includes, 'mesh_count': sum(p.startswith('meshes/') for p in files),
         'year': datetime.date.today().year,
         'exec_depends': sorted(set(LAUNCH_DEPENDS) | set(spec.dependencies)),
+        'sensor_displays': [{'plugin': _DISPLAYS[sensor.kind], 'name': sensor.name,
+                             'topic': sensor.topic if sensor.topic.startswith('/')
+                             else f'/{sensor.topic}'}
+                            for sensor in sensors if sensor.kind in _DISPLAYS],
         'bridge_topics': [{'name': sensor.topic or sensor.name,
                            'ros_type': _BRIDGE_TYPES[sensor.kind][0],
                            'gz_type': _BRIDGE_TYPES[sensor.kind][1]}
