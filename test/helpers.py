@@ -288,12 +288,30 @@ def ament_index(root: Path, packages: dict[str, Path] | None = None) -> dict[str
     return {'AMENT_PREFIX_PATH': str(root)}
 
 
+def parse_xml(data: bytes, **options):
+    """
+    Parse ``data`` with lxml.
+
+    A file whose only fault is an undeclared prefix (``drake:x``), which urdfdom reads, is
+    parsed leniently, the prefixed names kept literally.
+    """
+    from lxml import etree
+    try:
+        return etree.fromstring(data, etree.XMLParser(**options))
+    except etree.XMLSyntaxError as error:
+        if 'Namespace prefix' not in str(error):
+            raise
+    parser = etree.XMLParser(recover=True, **options)
+    root = etree.fromstring(data, parser)
+    assert {entry.type_name for entry in parser.error_log} == {'NS_ERR_UNDEFINED_NAMESPACE'}
+    return root
+
+
 def canonical(xml: str | bytes) -> bytes:
     """Return the C14N form of a document's root, whitespace between elements removed."""
     from lxml import etree
     data = xml.encode() if isinstance(xml, str) else xml
-    parser = etree.XMLParser(remove_blank_text=True)
-    root = etree.fromstring(data, parser)
+    root = parse_xml(data, remove_blank_text=True)
     for node in root.iter():
         if node.tail is not None and not node.tail.strip():
             node.tail = None

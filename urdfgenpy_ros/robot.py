@@ -170,6 +170,10 @@ class Robot:
         """Return whether a joint called ``name`` exists."""
         return name in self._joints
 
+    def has_material(self, name: str) -> bool:
+        """Return whether a robot-level material called ``name`` exists."""
+        return name in self._materials
+
     # ---- navigation ----------------------------------------------------------------
 
     def _children_index(self) -> dict[str, list[Joint]]:
@@ -306,7 +310,7 @@ class Robot:
                 joint.parent = new
             if joint.child == old:
                 joint.child = new
-        self._rename_references(old, new)
+        self._rename_references(old, new, link.extensions)
         return link
 
     def rename_joint(self, old: str, new: str) -> Joint:
@@ -322,7 +326,7 @@ class Robot:
             if mimic is not None and mimic.joint == old:
                 other.mimic = JointMimic(new, mimic.multiplier, mimic.offset,
                                          source=mimic.source, extras=mimic.extras)
-        self._rename_references(old, new)
+        self._rename_references(old, new, joint.extensions)
         return joint
 
     def rename_material(self, old: str, new: str) -> Material:
@@ -336,16 +340,18 @@ class Robot:
                            for key, value in self._materials.items()}
         for link in self._links.values():
             for visual in link.visuals:
-                if visual.material is not None and visual.material.name == old:
+                if visual.material is material:  # shares the definition: keeps sharing
+                    visual.material = renamed
+                elif visual.material is not None and visual.material.name == old:
                     visual.material = Material(new, visual.material.rgba,
                                                visual.material.texture,
                                                source=visual.material.source,
                                                extras=visual.material.extras)
         return renamed
 
-    def _rename_references(self, old: str, new: str) -> None:
-        """Update robot-level blocks whose ``reference`` or ``<joint name>`` is ``old``."""
-        for block in self.extensions:
+    def _rename_references(self, old: str, new: str, owned: list[Extension]) -> None:
+        """Update blocks whose ``reference`` or ``<joint name>`` is ``old``."""
+        for block in (*self.extensions, *owned):
             for element in block.element.iter():
                 if element.get('reference') == old:
                     element.set('reference', new)

@@ -17,26 +17,17 @@ Simulated sensors: ``Camera``, ``Lidar``, ``Imu``, ``ForceTorque``.
 
 Attach with ``link.add_sensor(...)`` (``joint.add_sensor`` for a force-torque sensor). The
 URDF gets a ``<gazebo reference="...">`` block holding the SDF ``<sensor>`` that Gazebo
-reads; SDF gets the ``<sensor>`` itself. ``topic`` defaults to the sensor's name and
-``gz_frame_id`` to the link's, so the messages are stamped with a frame that TF knows.
+reads; SDF gets the ``<sensor>`` itself (both made by :mod:`urdfgenpy_ros.formats.sdf`).
+``topic`` defaults to the sensor's name and ``gz_frame_id`` to the link's, so the
+messages are stamped with a frame that TF knows.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field, KW_ONLY
 import math
-from typing import Any
 
-from lxml import etree
-
-from urdfgenpy_ros.formats._xml import fmt, fmt_vec
 from urdfgenpy_ros.geometry import Origin
-
-
-def _add(parent: Any, tag: str, value: object) -> Any:
-    element = etree.SubElement(parent, tag)
-    element.text = fmt(value) if isinstance(value, float) else str(value)
-    return element
 
 
 @dataclass(slots=True)
@@ -53,23 +44,6 @@ class Sensor:
     frame: str | None = None  # set by add_sensor: the link (or joint) it is attached to
 
     kind = 'sensor'
-
-    def to_sdf(self) -> Any:
-        """Return the SDF ``<sensor>`` element."""
-        element = etree.Element('sensor', name=self.name, type=self.kind)
-        if not self.origin.is_identity:
-            _add(element, 'pose', f'{fmt_vec(self.origin.xyz)} {fmt_vec(self.origin.rpy)}')
-        _add(element, 'always_on', 'true' if self.always_on else 'false')
-        _add(element, 'update_rate', float(self.update_rate))
-        _add(element, 'visualize', 'true' if self.visualize else 'false')
-        _add(element, 'topic', self.topic or self.name)
-        if self.frame:
-            _add(element, 'gz_frame_id', self.frame)
-        self._body(element)
-        return element
-
-    def _body(self, element: Any) -> None:
-        """Add the type-specific part."""
 
 
 @dataclass(slots=True)
@@ -90,17 +64,6 @@ class Camera(Sensor):
         """Take the rate from ``fps``."""
         self.update_rate = self.fps
 
-    def _body(self, element: Any) -> None:
-        camera = etree.SubElement(element, 'camera')
-        _add(camera, 'horizontal_fov', float(self.fov))
-        image = etree.SubElement(camera, 'image')
-        _add(image, 'width', int(self.width))
-        _add(image, 'height', int(self.height))
-        _add(image, 'format', self.image_format)
-        clip = etree.SubElement(camera, 'clip')
-        _add(clip, 'near', float(self.near))
-        _add(clip, 'far', float(self.far))
-
 
 @dataclass(slots=True)
 class Lidar(Sensor):
@@ -116,24 +79,6 @@ class Lidar(Sensor):
     update_rate: float = 10.0
 
     kind = 'gpu_lidar'
-
-    def _body(self, element: Any) -> None:
-        lidar = etree.SubElement(element, 'lidar')
-        scan = etree.SubElement(lidar, 'scan')
-        horizontal = etree.SubElement(scan, 'horizontal')
-        _add(horizontal, 'samples', int(self.samples))
-        _add(horizontal, 'resolution', 1.0)
-        _add(horizontal, 'min_angle', float(self.min_angle))
-        _add(horizontal, 'max_angle', float(self.max_angle))
-        vertical = etree.SubElement(scan, 'vertical')
-        _add(vertical, 'samples', int(self.vertical_samples))
-        _add(vertical, 'resolution', 1.0)
-        _add(vertical, 'min_angle', 0.0)
-        _add(vertical, 'max_angle', 0.0)
-        ranges = etree.SubElement(lidar, 'range')
-        _add(ranges, 'min', float(self.range_min))
-        _add(ranges, 'max', float(self.range_max))
-        _add(ranges, 'resolution', float(self.resolution))
 
 
 @dataclass(slots=True)
@@ -154,8 +99,3 @@ class ForceTorque(Sensor):
     update_rate: float = 100.0
 
     kind = 'force_torque'
-
-    def _body(self, element: Any) -> None:
-        sensor = etree.SubElement(element, 'force_torque')
-        _add(sensor, 'frame', self.measure_frame)
-        _add(sensor, 'measure_direction', self.measure_direction)

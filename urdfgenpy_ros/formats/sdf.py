@@ -31,11 +31,13 @@ from typing import Any, TYPE_CHECKING
 from lxml import etree
 
 from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.formats._xml import fmt, fmt_vec, write_text
+from urdfgenpy_ros.floats import fmt, fmt_vec
+from urdfgenpy_ros.formats._xml import write_text
 from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Mesh, Origin, Sphere
 from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.link import Link, Visual
 from urdfgenpy_ros.material import Material
+from urdfgenpy_ros.sensors import Camera, ForceTorque, Lidar, Sensor
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -78,13 +80,65 @@ def _geometry(parent: Any, geometry: Geometry) -> None:
 def _material(parent: Any, material: Material | None, robot: Robot) -> None:
     if material is None:
         return
-    defined = robot._materials.get(material.name)
-    rgba = material.rgba or (defined.rgba if defined is not None else None)
+    rgba = material.rgba
+    if rgba is None and robot.has_material(material.name):
+        rgba = robot.get_material(material.name).rgba
     if rgba is None:
         return
     element = etree.SubElement(parent, 'material')
     for tag in ('ambient', 'diffuse'):
         _text(element, tag, fmt_vec(rgba))
+
+
+def _add(parent: Any, tag: str, value: object) -> Any:
+    element = etree.SubElement(parent, tag)
+    element.text = fmt(value) if isinstance(value, float) else str(value)
+    return element
+
+
+def sensor_element(sensor: Sensor) -> Any:
+    """Return the SDF ``<sensor>`` element of a sensor (URDF carries it in ``<gazebo>``)."""
+    element = etree.Element('sensor', name=sensor.name, type=sensor.kind)
+    if not sensor.origin.is_identity:
+        _add(element, 'pose', f'{fmt_vec(sensor.origin.xyz)} {fmt_vec(sensor.origin.rpy)}')
+    _add(element, 'always_on', 'true' if sensor.always_on else 'false')
+    _add(element, 'update_rate', float(sensor.update_rate))
+    _add(element, 'visualize', 'true' if sensor.visualize else 'false')
+    _add(element, 'topic', sensor.topic or sensor.name)
+    if sensor.frame:
+        _add(element, 'gz_frame_id', sensor.frame)
+    if isinstance(sensor, Camera):
+        camera = etree.SubElement(element, 'camera')
+        _add(camera, 'horizontal_fov', float(sensor.fov))
+        image = etree.SubElement(camera, 'image')
+        _add(image, 'width', int(sensor.width))
+        _add(image, 'height', int(sensor.height))
+        _add(image, 'format', sensor.image_format)
+        clip = etree.SubElement(camera, 'clip')
+        _add(clip, 'near', float(sensor.near))
+        _add(clip, 'far', float(sensor.far))
+    elif isinstance(sensor, Lidar):
+        lidar = etree.SubElement(element, 'lidar')
+        scan = etree.SubElement(lidar, 'scan')
+        horizontal = etree.SubElement(scan, 'horizontal')
+        _add(horizontal, 'samples', int(sensor.samples))
+        _add(horizontal, 'resolution', 1.0)
+        _add(horizontal, 'min_angle', float(sensor.min_angle))
+        _add(horizontal, 'max_angle', float(sensor.max_angle))
+        vertical = etree.SubElement(scan, 'vertical')
+        _add(vertical, 'samples', int(sensor.vertical_samples))
+        _add(vertical, 'resolution', 1.0)
+        _add(vertical, 'min_angle', 0.0)
+        _add(vertical, 'max_angle', 0.0)
+        ranges = etree.SubElement(lidar, 'range')
+        _add(ranges, 'min', float(sensor.range_min))
+        _add(ranges, 'max', float(sensor.range_max))
+        _add(ranges, 'resolution', float(sensor.resolution))
+    elif isinstance(sensor, ForceTorque):
+        torque = etree.SubElement(element, 'force_torque')
+        _add(torque, 'frame', sensor.measure_frame)
+        _add(torque, 'measure_direction', sensor.measure_direction)
+    return element
 
 
 def _unique(name: str, taken: set[str]) -> str:
@@ -117,7 +171,7 @@ def _link(model: Any, link: Link, robot: Robot, pose: tuple[Origin, str] | None)
             if isinstance(item, Visual):
                 _material(shape, item.material, robot)
     for sensor in link.sensors:
-        element.append(sensor.to_sdf())
+        element.append(sensor_element(sensor))
     for block in link.extensions:
         for child in block.element:
             if isinstance(child.tag, str) and child.tag == 'sensor':
@@ -131,7 +185,7 @@ def _joint(model: Any, joint: Joint, name: str) -> None:
     _text(element, 'parent', joint.parent)
     _text(element, 'child', joint.child)
     for sensor in joint.sensors:
-        element.append(sensor.to_sdf())
+        element.append(sensor_element(sensor))
     if joint.type is JointType.FIXED:
         return
     axis = etree.SubElement(element, 'axis')

@@ -21,17 +21,19 @@ operation, so the real ``xacro`` expands them to exactly the floats ``to_urdf()`
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from os import PathLike
 import re
-from typing import TYPE_CHECKING
+from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.formats._xml import element, fmt, INDENT, write_text
+from urdfgenpy_ros.extensions import Extension
+from urdfgenpy_ros.floats import fmt, fmt_vec
+from urdfgenpy_ros.formats._xml import esc, write_text
 from urdfgenpy_ros.formats.urdf import UrdfWriter
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.link import Link
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.formats._xml import Attr
     from urdfgenpy_ros.robot import Robot
 
 XACRO_NS = 'http://www.ros.org/wiki/xacro'
@@ -49,13 +51,13 @@ _MACROS = {
 }
 
 
-def _macro(kind: str, pad: str) -> str:
+def _macro(kind: str, pad: str, unit: str) -> str:
     params, (ixx, iyy, izz) = _MACROS[kind]
-    inner = pad + INDENT
-    body = pad + INDENT * 2
+    inner = pad + unit
+    body = pad + unit * 2
     e = _EXPR
     return '\n'.join([
-        f'{pad}<xacro:macro name="{kind}_inertial" params="{params} '
+        f'<xacro:macro name="{kind}_inertial" params="{params} '
         "xyz:='' rpy:=''\">",
         f'{inner}<inertial>',
         f'{body}<xacro:if value="{e}{{bool(xyz or rpy)}}">'
@@ -79,12 +81,24 @@ def _identifier(name: str, taken: set[str]) -> str:
 
 
 class XacroWriter(UrdfWriter):
-    """Write the URDF body with xacro properties and inertia macros."""
+    """
+    Write the URDF body with xacro properties and inertia macros.
+
+    ``includes`` are files to ``<xacro:include>`` first (``$(find ...)`` allowed);
+    ``materials=False`` leaves the robot-level materials out (visuals still refer to
+    them) and ``extensions`` replaces the robot-level blocks written.
+    """
 
     verbatim = False  # masses become properties: every inertial is written anew
 
-    def __init__(self, robot: Robot) -> None:
+    def __init__(self, robot: Robot, includes: Sequence[str] = (), materials: bool = True,
+                 extensions: list[Extension] | None = None) -> None:
         super().__init__(robot)
+        self.includes = list(includes)
+        if not materials:
+            self.materials = []
+        if extensions is not None:
+            self.extensions = extensions
         taken: set[str] = set()
         self.mass_names = {link.name: _identifier(link.name, taken)
                            for link in robot.links if link.inertial is not None}
@@ -98,38 +112,42 @@ class XacroWriter(UrdfWriter):
         text = text.replace('${', '$${').replace('$(', '$$(')
         return text.replace(_EXPR, '$')
 
-    def robot_attrs(self) -> list[Attr]:
+    def robot_attrs(self) -> list[tuple[str, str]]:
         """Declare the xacro namespace on the root."""
-        return super().robot_attrs() + [('xmlns:xacro', XACRO_NS, XACRO_NS, None)]
+        return super().robot_attrs() + [('xmlns:xacro', XACRO_NS)]
 
     def prologue(self) -> list[str]:
-        """Return the mass properties and the inertia macros in use."""
-        lines = []
+        """Return the includes, the mass properties and the inertia macros in use."""
+        lines = [f'<xacro:include filename="{esc(name).replace("$", _EXPR)}"/>'
+                 for name in self.includes]
         if self.mass_names:
-            lines.append(f'{INDENT}<!-- Link masses in kg. -->')
+            lines.append('<!-- Link masses in kg. -->')
             for link_name, prop in self.mass_names.items():
                 mass = self.robot.get_link(link_name).inertial.mass  # type: ignore[union-attr]
-                lines.append(f'{INDENT}<xacro:property name="{prop}" value="{fmt(mass)}"/>')
+                lines.append(f'<xacro:property name="{prop}" value="{fmt(mass)}"/>')
         if self.kinds:
-            lines.append(f'{INDENT}<!-- Inertia of solid bodies about their centre of mass. -->')
-            lines.extend(_macro(kind, INDENT) for kind in self.kinds)
+            lines.append('<!-- Inertia of solid bodies about their centre of mass. -->')
+            lines.extend(_macro(kind, self.unit, self.unit) for kind in self.kinds)
         return lines
 
-    def write_inertial(self, inertial: Inertial, pad: str, link: Link) -> str:
+    def write_inertial(self, inertial: Inertial, pad: str | None, link: Link,
+                       slot: Any = None) -> str:
         """Call an inertia macro where one applies; else write it with the mass property."""
         mass = f'{_EXPR}{{{self.mass_names[link.name]}}}'
         if not _uses_macro(inertial):
-            text = super().write_inertial(inertial, pad, link)
-            return text.replace(f'<mass value="{fmt(inertial.mass)}"', f'<mass value="{mass}"',
-                                1)
+            text = super().write_inertial(inertial, pad, link, slot)
+            return _MASS.sub(lambda match: f'{match.group(1)}{mass}{match.group(4)}', text,
+                             count=1)
         kind, _, *dims = inertial.solid  # type: ignore[misc]
         names = _MACROS[kind][0].split()[1:]
-        attrs: list[Attr] = [('mass', mass, mass, None)]
-        attrs += [(name, value, fmt(value), None) for name, value in zip(names, dims)]
+        attrs = [('mass', mass)] + [(name, fmt(value)) for name, value in zip(names, dims)]
         if not inertial.origin.is_identity:
-            attrs += [('xyz', None, ' '.join(map(fmt, inertial.origin.xyz)), None),
-                      ('rpy', None, ' '.join(map(fmt, inertial.origin.rpy)), None)]
-        return element(pad, f'xacro:{kind}_inertial', attrs, None, [])
+            attrs += [('xyz', fmt_vec(inertial.origin.xyz)), ('rpy', fmt_vec(inertial.origin.rpy))]
+        text = ''.join(f' {name}="{value}"' for name, value in attrs)
+        return f'<xacro:{kind}_inertial{text}/>'
+
+
+_MASS = re.compile(r'(<mass\b[^>]*?\bvalue=(["\']))(.*?)(\2)')
 
 
 def _uses_macro(inertial: Inertial | None) -> bool:
@@ -137,9 +155,15 @@ def _uses_macro(inertial: Inertial | None) -> bool:
             and inertial.origin.extras is None and inertial.matches_solid())
 
 
-def write_xacro(robot: Robot, path: str | PathLike[str] | None = None) -> str:
-    """Return the Xacro text of ``robot``; also write it to ``path`` when given."""
-    text = XacroWriter(robot).document()
+def write_xacro(robot: Robot, path: str | PathLike[str] | None = None, *,
+                includes: Sequence[str] = (), materials: bool = True,
+                extensions: list[Extension] | None = None) -> str:
+    """
+    Return the Xacro text of ``robot``; also write it to ``path`` when given.
+
+    ``includes``, ``materials`` and ``extensions``: see :class:`XacroWriter`.
+    """
+    text = XacroWriter(robot, includes, materials, extensions).document()
     if path is not None:
         write_text(path, text)
     return text

@@ -86,8 +86,10 @@ class JointStates:
         if safety is not None and self.options.use_smallest_joint_limits and not continuous:
             lower = max(lower, safety.soft_lower_limit)
             upper = min(upper, safety.soft_upper_limit)
-        if joint.name in self.options.zeros:
+        if joint.name in self.options.zeros:  # clamped, as joint_state_publisher does
             zero = float(self.options.zeros[joint.name])
+            if not continuous:
+                zero = min(max(zero, lower), upper)
         elif lower > 0.0 or upper < 0.0:
             zero = (lower + upper) / 2.0
         else:

@@ -71,6 +71,25 @@ _PARAMETERS: dict[str, tuple[Any, int | None, str]] = {
 }
 
 
+_EXPECTED = {
+    ParameterType.PARAMETER_STRING: ('a string', lambda value: isinstance(value, str)),
+    ParameterType.PARAMETER_BOOL: ('true or false', lambda value: isinstance(value, bool)),
+    ParameterType.PARAMETER_DOUBLE: ('a number', lambda value: isinstance(value, (int, float))
+                                     and not isinstance(value, bool)),
+    _STRINGS: ("a list of strings, e.g. \"['a', 'b']\"", lambda value: isinstance(
+        value, (list, tuple)) and all(isinstance(item, str) for item in value)),
+}
+
+
+def _check_type(name: str, kind: int | None, value: Any) -> None:
+    """Refuse a parameter given with another type than declared (overrides keep theirs)."""
+    if kind is None:
+        return
+    expected, accepts = _EXPECTED[kind]
+    if not accepts(value):
+        raise UrdfgenpyError(f'parameter {name!r}: {value!r} is not {expected}')
+
+
 class PublisherNode(Node):
     """Publish a validated robot description and its joint states."""
 
@@ -91,6 +110,8 @@ class PublisherNode(Node):
             if not self.has_parameter(name):
                 self.declare_parameter(name, default, descriptor)
         self.values = {name: self.get_parameter(name).value for name in _PARAMETERS}
+        for name, (_, kind, _) in _PARAMETERS.items():
+            _check_type(name, kind, self.values[name])
         rate = self.values['rate']
         if isinstance(rate, bool) or not isinstance(rate, (int, float)) or not rate > 0:
             raise UrdfgenpyError(f"parameter 'rate': {rate!r} is not a positive number of Hz")

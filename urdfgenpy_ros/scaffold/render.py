@@ -25,7 +25,7 @@ import shutil
 from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
 from urdfgenpy_ros.formats._xml import fragment, INDENT
 from urdfgenpy_ros.formats.urdf import UrdfWriter
-from urdfgenpy_ros.formats.xacro import XACRO_NS
+from urdfgenpy_ros.formats.xacro import write_xacro, XACRO_NS
 from urdfgenpy_ros.geometry import Mesh
 from urdfgenpy_ros.link import Shape
 from urdfgenpy_ros.material import Material
@@ -109,18 +109,11 @@ def _urdf_files(spec: PackageSpec, robot: Robot) -> tuple[dict[str, bytes], list
             parts[target].append(fragment(block.element, INDENT))
     for link in robot.links:  # the definitions move to materials.xacro: refer to them
         for visual in link.visuals:
-            if visual.material is not None and visual.material.name in robot._materials:
+            if visual.material is not None and robot.has_material(visual.material.name):
                 visual.material = Material(visual.material.name)
-    main = copy.copy(robot)
-    main._materials = {}
-    main.extensions = kept
-    main.extras = None
     includes = [name for name, lines in parts.items() if lines]
-    text = main.to_xacro()
-    opening = text.index('>', text.index('<robot')) + 1
-    include_lines = ''.join(f'\n  <xacro:include filename="$(find {spec.name})/urdf/{name}"/>'
-                            for name in includes)
-    text = text[:opening] + include_lines + text[opening:]
+    text = write_xacro(robot, includes=[f'$(find {spec.name})/urdf/{name}' for name in includes],
+                       materials=False, extensions=kept)
     files = {f'urdf/{stem}.urdf.xacro': text.encode()}
     files.update({f'urdf/{name}': _escape(_fragment_file(parts[name])).encode()
                   for name in includes})

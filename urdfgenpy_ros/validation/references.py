@@ -38,7 +38,8 @@ def check_references(robot: Robot, findings: Findings, resolver: PackageResolver
             for number, shape in enumerate(shapes, start=1):
                 where = f'{link_path(link.name)}/{kind}[{number}]'
                 element = f'link {link.name!r}'
-                _check_geometry(shape.geometry, element, where, findings)
+                _check_geometry(shape.geometry, element, where, findings,
+                                'R304' if kind == 'collision' else 'R307')
                 if isinstance(shape.geometry, Mesh) and resolver is not None:
                     missing = 'R302' if kind == 'collision' else 'R306'
                     _check_mesh(shape.geometry, element, where, findings, resolver, base,
@@ -53,17 +54,21 @@ def check_references(robot: Robot, findings: Findings, resolver: PackageResolver
     _check_finite(robot, findings)
 
 
-def _check_geometry(geometry: Any, element: str, where: str, findings: Findings) -> None:
+def _check_geometry(geometry: Any, element: str, where: str, findings: Findings,
+                    code: str) -> None:
+    """Report a zero or negative size: an error on a collision, a warning on a visual."""
     sizes = {Box: ('length', 'width', 'height'), Cylinder: ('radius', 'length'),
              Sphere: ('radius',)}.get(type(geometry), ())
     for name in sizes:
         value = getattr(geometry, name)
         if math.isfinite(value) and value <= 0.0:
-            findings.add('R304', geometry, element, f'{where}/geometry',
+            findings.add(code, geometry, element, f'{where}/geometry',
                          f'{type(geometry).__name__.lower()} {name} is {value:g}',
-                         'sizes are positive lengths in metres')
+                         'sizes are positive lengths in metres' + (
+                             '' if code == 'R304' else ' (a zero-size visual draws nothing; '
+                             'remove it if it is a placeholder)'))
     if isinstance(geometry, Mesh) and geometry.scale is not None and 0.0 in geometry.scale:
-        findings.add('R304', geometry, element, f'{where}/geometry',
+        findings.add(code, geometry, element, f'{where}/geometry',
                      f'mesh scale {geometry.scale} has a zero',
                      'a zero scale flattens the mesh: use 1 (or 0.001 for millimetres)',
                      'mesh')
@@ -84,7 +89,7 @@ def _check_mesh(mesh: Mesh, element: str, where: str, findings: Findings,
         return
     warning = uri_warning(mesh.filename)
     if warning is not None:
-        findings.add('R307', mesh, element, f'{where}/geometry/mesh', warning,
+        findings.add('R308', mesh, element, f'{where}/geometry/mesh', warning,
                      'use a path relative to the file, or package://', 'mesh')
     if not os.access(path, os.R_OK) or not path.is_file():
         findings.add(missing, mesh, element, f'{where}/geometry/mesh',

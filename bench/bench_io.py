@@ -1,0 +1,199 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+
+"""
+Read, write and read+write real robots with urdfgenpy_ros and its peers, file by file.
+
+Files: the corpus URDFs that Debian's ``check_urdf`` accepts, plus the URDFs of the
+description packages installed from PyPI in this environment (``example-robot-data``,
+``upkie-description``, ``gym-ignition-models``, ``jvrc-description``,
+``cookie-description``: ``pip install`` them first). A file is used when every library
+reads it. For each file and library the time is the median of ``--repeat`` samples, each
+sample looping until it lasts ``--sample`` seconds; the figure reported is the ratio to the
+bare lxml floor on the same file (parse, tostring, or both), summarised over files as
+median and 90th percentile.
+
+    python bench/bench_io.py [--corpus ../shared/corpus] [--repeat 5] [--per-file]
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import gc
+import importlib
+import io
+import logging
+import os
+from pathlib import Path
+import re
+import shutil
+import site
+import statistics
+import subprocess
+import time
+import tracemalloc
+from typing import Any, Callable
+
+PACKAGES = ('upkie_description', 'gym_ignition_models', 'jvrc_description',
+            'cookie_description')
+
+
+def _quiet(function: Callable[..., Any]) -> Callable[..., Any]:
+    """Run ``function`` with logging and stderr silenced (peers warn a lot)."""
+    def run(*args: Any) -> Any:
+        logging.disable(logging.CRITICAL)
+        with open(os.devnull, 'w') as sink, contextlib.redirect_stderr(sink), \
+                contextlib.redirect_stdout(sink):
+            try:
+                return function(*args)
+            finally:
+                logging.disable(logging.NOTSET)
+    return run
+
+
+def package_files() -> list[Path]:
+    """Return the URDFs of the description packages installed from PyPI."""
+    files: list[Path] = []
+    for name in PACKAGES:
+        try:
+            module = importlib.import_module(name)
+        except ImportError:
+            continue
+        files += sorted(Path(module.__file__).parent.rglob('*.urdf'))
+    for folder in site.getsitepackages():
+        robots = Path(folder) / 'cmeel.prefix' / 'share' / 'example-robot-data' / 'robots'
+        files += sorted(robots.rglob('*.urdf'))
+    return files
+
+
+def corpus_files(corpus: Path) -> list[Path]:
+    """Return the corpus URDFs that Debian's check_urdf accepts."""
+    files = sorted(corpus.rglob('*.urdf')) if corpus.is_dir() else []
+    if shutil.which('check_urdf') is None:
+        return files
+    return [path for path in files
+            if subprocess.run(['check_urdf', str(path)], capture_output=True,
+                              timeout=30).returncode == 0]
+
+
+def _libraries() -> dict[str, tuple[Callable[[bytes], Any], Callable[[Any], Any]]]:
+    """Return each library's (read bytes, write model) pair."""
+    from lxml import etree
+    from urdf_parser_py.urdf import URDF as Parsed
+    import yourdfpy
+
+    from urdfgenpy_ros import Robot
+
+    def load(data: bytes) -> Any:
+        return yourdfpy.URDF.load(io.BytesIO(data), load_meshes=False, build_scene_graph=False,
+                                  build_collision_scene_graph=False)
+
+    return {
+        'lxml (floor)': (lambda data: etree.fromstring(data), etree.tostring),
+        'urdfgenpy_ros': (Robot.from_urdf_string, lambda robot: robot.to_urdf()),
+        'yourdfpy': (_quiet(load), _quiet(lambda model: model.write_xml_string())),
+        'urdf_parser_py': (_quiet(Parsed.from_xml_string),
+                           _quiet(lambda model: model.to_xml_string())),
+    }
+
+
+def seconds(function: Callable[[], Any], repeat: int, sample: float) -> float:
+    """Return the median time of one call: ``repeat`` samples of ``sample`` seconds each."""
+    function()
+    start = time.perf_counter()
+    function()
+    once = max(time.perf_counter() - start, 1e-7)
+    loops = max(1, int(sample / once))
+    times = []
+    for _ in range(repeat):
+        gc.collect()
+        start = time.perf_counter()
+        for _ in range(loops):
+            function()
+        times.append((time.perf_counter() - start) / loops)
+    return statistics.median(times)
+
+
+def _p90(values: list[float]) -> float:
+    ordered = sorted(values)
+    return ordered[min(len(ordered) - 1, int(round(0.9 * (len(ordered) - 1))))]
+
+
+def main() -> None:
+    """Print the per-file ratio table (and per-file figures on request)."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
+    parser.add_argument('--corpus', type=Path,
+                        default=Path(__file__).resolve().parents[2] / 'shared' / 'corpus')
+    parser.add_argument('--repeat', type=int, default=5)
+    parser.add_argument('--sample', type=float, default=0.02)
+    parser.add_argument('--per-file', action='store_true')
+    args = parser.parse_args()
+    libraries = _libraries()
+    files = corpus_files(args.corpus) + package_files()
+    data = {path: re.sub(rb'^\s*<\?xml[^>]*\?>', b'', path.read_bytes()) for path in files}
+    usable = []
+    for path in files:
+        try:
+            for read, write in libraries.values():
+                write(read(data[path]))
+            usable.append(path)
+        except Exception as error:  # noqa: B902 - a library failing excludes the file
+            print(f'left out {path.name}: {type(error).__name__}')
+    ratios: dict[str, dict[str, list[float]]] = {
+        name: {'read': [], 'write': [], 'read+write': []} for name in libraries}
+    rows = []
+    for path in usable:
+        text = data[path]
+        times = {}
+        for name, (read, write) in libraries.items():
+            model = read(text)
+            times[name] = (seconds(lambda: read(text), args.repeat, args.sample),
+                           seconds(lambda: write(model), args.repeat, args.sample),
+                           seconds(lambda: write(read(text)), args.repeat, args.sample))
+        floor = times['lxml (floor)']
+        for name, figures in times.items():
+            for kind, value, base in zip(('read', 'write', 'read+write'), figures, floor):
+                ratios[name][kind].append(value / base)
+        rows.append((path, len(text), times))
+    links = sum(text.count(b'<link') for text in data.values())
+    print(f'## {len(usable)} files ({sum(size for _, size, _ in rows) // 1024} KiB, about '
+          f'{links} links), ratio to lxml per file\n')
+    print('| library | read median | read p90 | write median | write p90 | '
+          'read+write median | read+write p90 |\n|---|---:|---:|---:|---:|---:|---:|')
+    for name, kinds in ratios.items():
+        cells = ' | '.join(f'{statistics.median(values):.1f}x | {_p90(values):.1f}x'
+                           for values in kinds.values())
+        print(f'| {name} | {cells} |')
+    if args.per_file:
+        print('\n| file | KiB | ' + ' | '.join(f'{name} read/write ms' for name in libraries)
+              + ' |\n|---|---:|' + '---:|' * len(libraries))
+        for path, size, times in rows:
+            cells = ' | '.join(f'{read * 1e3:.3f} / {write * 1e3:.3f}'
+                               for read, write, _ in times.values())
+            print(f'| {path.name} | {size // 1024} | {cells} |')
+    from urdfgenpy_ros import Robot
+    gc.collect()
+    tracemalloc.start()
+    kept = [Robot.from_urdf_string(data[path]) for path in usable]
+    current = tracemalloc.get_traced_memory()[0]
+    tracemalloc.stop()
+    count = sum(len(robot.links) for robot in kept)
+    print(f'\nMemory held by the {len(kept)} read robots: {current / 2 ** 20:.2f} MiB for '
+          f'{count} links = {current / count / 1024:.1f} KiB per link (tracemalloc).')
+
+
+if __name__ == '__main__':
+    main()

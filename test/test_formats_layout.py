@@ -1,0 +1,171 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""An edit touches only what it changes, in the layout of the file it came from."""
+
+from __future__ import annotations
+
+import difflib
+from pathlib import Path
+
+from helpers import load_yourdfpy
+import pytest
+
+from urdfgenpy_ros import Box, Material, Origin, Robot, Visual
+
+FIXTURES = Path(__file__).parent / 'fixtures' / 'io'
+LAYOUTS = sorted(FIXTURES.glob('*.urdf'))
+ARM = [path for path in LAYOUTS if path.name != 'one_line.urdf']
+
+
+def _changed(before: str, after: str) -> tuple[list[str], list[str]]:
+    """Return the removed and the added lines between two texts."""
+    diff = list(difflib.ndiff(before.splitlines(), after.splitlines()))
+    return ([line[2:] for line in diff if line.startswith('- ')],
+            [line[2:] for line in diff if line.startswith('+ ')])
+
+
+def _source(path: Path) -> str:
+    return path.read_bytes().decode()
+
+
+@pytest.mark.parametrize('path', LAYOUTS, ids=[path.name for path in LAYOUTS])
+def test_unedited_file_is_written_back_byte_for_byte(path: Path) -> None:
+    """Reading and writing an unedited file gives the file (quotes and line ends too)."""
+    assert Robot.from_urdf(path).to_urdf() == _source(path)
+
+
+def _set_mass(robot: Robot) -> tuple[str, str]:
+    robot.get_link('base_link').inertial.mass = 7.25
+    return 'mass value', '7.25'
+
+
+def _set_limit(robot: Robot) -> tuple[str, str]:
+    robot.get_joint('shoulder_lift').limit.upper = 1.25
+    return 'upper', '1.25'
+
+
+def _set_visual_origin(robot: Robot) -> tuple[str, str]:
+    visual = robot.get_link('shoulder').visuals[1]
+    visual.origin = Origin((0.0, 0.0, 0.5))
+    visual.origin = Origin((0.0, 0.0, 0.125))
+    return 'origin', '0 0 0.125'
+
+
+def _set_joint_origin(robot: Robot) -> tuple[str, str]:
+    robot.get_joint('elbow').origin = Origin((0.0, 0.0, 0.35))
+    return 'origin', '0 0 0.35'
+
+
+def _set_box(robot: Robot) -> tuple[str, str]:
+    robot.get_link('base_link').collisions[0].geometry = Box(0.5, 0.32, 0.1)
+    return 'box size', '0.5 0.32 0.1'
+
+
+def _rename_link(robot: Robot) -> tuple[str, str]:
+    robot.rename_link('finger', 'digit')
+    return 'link name', 'digit'
+
+
+EDITS = [_set_mass, _set_limit, _set_visual_origin, _set_joint_origin, _set_box]
+
+
+@pytest.mark.parametrize('edit', EDITS, ids=[edit.__name__[1:] for edit in EDITS])
+@pytest.mark.parametrize('path', ARM, ids=[path.name for path in ARM])
+def test_a_scalar_edit_changes_one_line(path: Path, edit, tmp_path: Path) -> None:
+    """One edited value is one changed line, whatever the indentation."""
+    robot = Robot.from_urdf(path)
+    needle, value = edit(robot)
+    text = robot.to_urdf(tmp_path / 'out.urdf')
+    removed, added = _changed(_source(path), text)
+    assert len(removed) == len(added) == 1, (removed, added)
+    assert needle in added[0] and value in added[0]
+    assert added[0].replace(value, '') != removed[0]
+    load_yourdfpy(tmp_path / 'out.urdf')  # and another reader accepts it
+
+
+def test_renaming_a_link_changes_only_the_lines_naming_it(tmp_path: Path) -> None:
+    """The link's own line and the joint end that names it, nothing else."""
+    path = FIXTURES / 'four_space.urdf'
+    robot = Robot.from_urdf(path)
+    _rename_link(robot)
+    removed, added = _changed(_source(path), robot.to_urdf())
+    assert removed == ['    <link name="finger">', '        <child link="finger"/>']
+    assert added == ['    <link name="digit">', '        <child link="digit"/>']
+
+
+@pytest.mark.parametrize('edit', [_set_mass, _set_visual_origin, _set_joint_origin])
+def test_a_scalar_edit_changes_one_line_of_a_one_line_file(edit, tmp_path: Path) -> None:
+    """In a file of one-line elements, the edited element stays on its line."""
+    path = FIXTURES / 'one_line.urdf'
+    robot = Robot.from_urdf(path)
+    if edit is _set_mass:
+        robot.get_link('chassis').inertial.mass = 7.25
+        value = "value='7.25'"
+    elif edit is _set_visual_origin:
+        robot.get_link('lidar').visuals[0].origin = Origin((0.0, 0.0, 0.5))
+        robot.get_link('lidar').visuals[0].origin = Origin((0.0, 0.0, 0.125))
+        value = "xyz='0 0 0.125'"
+    else:
+        robot.get_joint('lidar_joint').origin = Origin((0.25, 0.0, 0.2))
+        value = "xyz='0.25 0 0.2'"
+    text = robot.to_urdf(tmp_path / 'out.urdf')
+    removed, added = _changed(_source(path), text)
+    assert len(removed) == len(added) == 1, (removed, added)
+    assert value in added[0]
+    load_yourdfpy(tmp_path / 'out.urdf')
+
+
+def test_added_visual_takes_the_file_layout() -> None:
+    """A visual built in Python is indented like its neighbours (tabs here)."""
+    path = FIXTURES / 'tab.urdf'
+    robot = Robot.from_urdf(path)
+    robot.get_link('tool').add_visual(Visual(Box(0.1, 0.1, 0.1)))
+    removed, added = _changed(_source(path), robot.to_urdf())
+    assert removed == ['\t<link name="tool"/>']
+    assert added == ['\t<link name="tool">', '\t\t<visual>', '\t\t\t<geometry>',
+                     '\t\t\t\t<box size="0.1 0.1 0.1"/>', '\t\t\t</geometry>', '\t\t</visual>',
+                     '\t</link>']
+
+
+def test_attribute_less_elements_survive(tmp_path: Path) -> None:
+    """``<texture/>`` stays as written: yourdfpy sees no file name, not ''."""
+    source = FIXTURES / 'two_space.urdf'
+    robot = Robot.from_urdf(source)
+    assert '<texture/>' in robot.to_urdf()
+    robot.rename_material('decal', 'sticker')  # an edited material keeps it too
+    text = robot.to_urdf(tmp_path / 'out.urdf')
+    removed, added = _changed(_source(source), text)
+    assert removed == ['  <material name="decal">', '      <material name="decal"/>']
+    assert added == ['  <material name="sticker">', '      <material name="sticker"/>']
+    theirs = {material.name: material for material in load_yourdfpy(tmp_path / 'out.urdf')
+              .materials}
+    assert theirs['sticker'].texture.filename is None
+
+
+def test_texture_built_in_python_without_a_file(tmp_path: Path) -> None:
+    """A material whose texture is '' is written ``<texture/>`` too."""
+    robot = Robot('bare')
+    robot.add_material(Material('plain', texture=''))
+    assert '<texture/>' in robot.to_urdf()
+
+
+def test_an_edited_block_of_a_copied_robot_is_written(tmp_path: Path) -> None:
+    """Blocks edited in place count, also in a deep copy of a read robot."""
+    import copy
+    robot = copy.deepcopy(Robot.from_urdf(FIXTURES / 'two_space.urdf'))
+    robot.extensions[0].element.set('name', 'wrist_transmission')
+    removed, added = _changed(_source(FIXTURES / 'two_space.urdf'), robot.to_urdf())
+    assert removed == ['  <transmission name="pan_transmission">']
+    assert added == ['  <transmission name="wrist_transmission">']
