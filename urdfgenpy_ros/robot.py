@@ -379,7 +379,9 @@ class Robot:
 
         :raises ParseError: when the file is not a readable URDF (one line, located).
         """
+        from urdfgenpy_ros.formats.detect import refuse_xacro
         from urdfgenpy_ros.formats.urdf_read import read_urdf
+        refuse_xacro(path)  # one line naming Robot.from_xacro (X002)
         return read_urdf(path)
 
     @classmethod

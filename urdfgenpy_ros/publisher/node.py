@@ -27,7 +27,7 @@ import math
 import os
 import sys
 import time
-from typing import Any
+from typing import Any, TYPE_CHECKING
 
 from rcl_interfaces.msg import ParameterDescriptor, ParameterType, SetParametersResult
 import rclpy
@@ -35,15 +35,18 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
-from sensor_msgs.msg import JointState
 from std_msgs.msg import String
-from std_srvs.srv import Trigger
 
 from urdfgenpy_ros.errors import Severity, UrdfgenpyError
 from urdfgenpy_ros.model_source import load_model
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
-from urdfgenpy_ros.robot import Robot
+
+if TYPE_CHECKING:  # imported when needed: sensor_msgs brings numpy, not needed to start
+    from sensor_msgs.msg import JointState
+    from std_srvs.srv import Trigger
+
+    from urdfgenpy_ros.robot import Robot
 
 _STRINGS = ParameterType.PARAMETER_STRING_ARRAY
 _PARAMETERS: dict[str, tuple[Any, int | None, str]] = {
@@ -130,6 +133,9 @@ class PublisherNode(Node):
             self.description_publisher = self.create_publisher(String, 'robot_description',
                                                                latched)
             self.description_publisher.publish(String(data=self.description))
+        # Only now what the description does not need (sensor_msgs imports numpy).
+        from sensor_msgs.msg import JointState
+        from std_srvs.srv import Trigger
         self.joint_publisher = self.create_publisher(JointState, 'joint_states', 10)
         self.message = JointState()
         self._message_states: JointStates | None = None
