@@ -142,7 +142,11 @@ class PublisherNode(Node):
         self._message_version = -1
         self._delta = float(self.values['delta'])
         for topic in self.values['source_list']:
-            self.create_subscription(JointState, topic, self._merge, 10)
+            try:
+                self.create_subscription(JointState, topic, self._merge, 10)
+            except (rclpy.exceptions.InvalidTopicNameException, ValueError) as error:
+                raise UrdfgenpyError(f"parameter 'source_list': {topic!r} is not a topic "
+                                     f'name ({error})') from None
         self.create_service(Trigger, '~/reload', self._reload_service)
         self.tf = _TfPublisher(self) if self.values['publish_tf'] else None
         self.create_timer(1.0 / float(rate), self._publish_joint_states)
