@@ -113,3 +113,27 @@ def test_sdf_export_refuses_a_dangling_joint_with_the_finding(lump_fixed: bool) 
     with pytest.raises(ModelError, match="joint 'shoulder': parent link 'torso' does not "
                                          'exist .*S004'):
         robot.to_sdf(lump_fixed=lump_fixed)
+
+
+def _every_description() -> list:
+    from helpers import CORPUS, corpus_cases
+    from registry_robots import robot_id, robots
+    own = sorted(path for path in FIXTURES.rglob('*') if path.suffix in ('.urdf', '.xacro'))
+    corpus = sorted(path for path in CORPUS.rglob('*')
+                    if path.suffix in ('.urdf', '.xacro')) if CORPUS.is_dir() else []
+    return [*[pytest.param(path, id=str(path.relative_to(FIXTURES))) for path in own],
+            *[pytest.param(path, id=robot_id(path)) for path in robots()],
+            *corpus_cases(corpus, [str(path.relative_to(CORPUS)) for path in corpus])]
+
+
+@pytest.mark.parametrize('path', _every_description())
+def test_no_command_ends_in_a_traceback(path: Path, tmp_path: Path) -> None:
+    from click.testing import CliRunner
+    from urdfgenpy_ros.cli import main
+    for arguments in (['tree', str(path)], ['check', '--no-meshes', str(path)],
+                      ['convert', str(path), str(tmp_path / 'out.urdf')],
+                      ['convert', str(path), str(tmp_path / 'out.sdf')]):
+        result = CliRunner().invoke(main, arguments)
+        if result.exception is not None and not isinstance(result.exception, SystemExit):
+            raise result.exception
+        assert result.exit_code in (0, 1, 2), result.output
