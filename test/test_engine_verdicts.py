@@ -59,6 +59,7 @@ EXPECTED = {
     # urdfdom ignores a visual's own material whose colour is not 4 numbers; MuJoCo
     # refuses the model.
     'five_number_colour.urdf': {('P107', 'error')},
+    'urdfdom_sensor.urdf': set(),
 }
 
 
@@ -137,3 +138,12 @@ def test_no_command_ends_in_a_traceback(path: Path, tmp_path: Path) -> None:
         if result.exception is not None and not isinstance(result.exception, SystemExit):
             raise result.exception
         assert result.exit_code in (0, 1, 2), result.output
+
+
+def test_rename_link_follows_urdfdoms_sensor_parent() -> None:
+    from lxml import etree
+    robot = Robot.from_urdf(PROBLEMS / 'urdfdom_sensor.urdf')
+    robot.rename_link('head', 'camera_head')
+    root = etree.fromstring(robot.to_urdf().encode())
+    assert [parent.get('link') for parent in root.iter('parent')] == [
+        'base_link', 'camera_head']
