@@ -147,3 +147,16 @@ def test_rename_link_follows_urdfdoms_sensor_parent() -> None:
     root = etree.fromstring(robot.to_urdf().encode())
     assert [parent.get('link') for parent in root.iter('parent')] == [
         'base_link', 'camera_head']
+
+
+@pytest.mark.parametrize('name', ['tiny_moment.urdf', 'missing_parent.urdf'])
+def test_findings_on_a_crlf_file_carry_the_same_lines(name: str, tmp_path: Path) -> None:
+    source = PROBLEMS / name
+    crlf = tmp_path / name
+    crlf.write_bytes(source.read_bytes().replace(b'\n', b'\r\n'))
+
+    def located(path: Path) -> list[tuple[str, int | None, int | None]]:
+        return [(finding.code, finding.location.line, finding.location.column)
+                for finding in Robot.from_urdf(path).validate()]
+    assert located(crlf) == located(source)
+    assert all(line is not None for _, line, _ in located(crlf))
