@@ -60,6 +60,7 @@ EXPECTED = {
     # refuses the model.
     'five_number_colour.urdf': {('P107', 'error')},
     'urdfdom_sensor.urdf': set(),
+    'moving_sensor_without_inertial.urdf': {('I207', 'warning')},
 }
 
 
@@ -98,6 +99,11 @@ def test_what_urdfdom_ignores_is_kept_until_replaced(name: str, tag: str) -> Non
         assert again.links[-1].inertial == link.inertial
     else:
         assert again.links[-1].visuals[0].material.rgba == (0.5, 0.5, 0.5, 1.0)
+
+
+def test_a_sensor_gazebo_would_drop_is_named() -> None:
+    (finding,) = Robot.from_urdf(PROBLEMS / 'moving_sensor_without_inertial.urdf').validate()
+    assert "its sensor(s) 'cam'" in finding.hint
 
 
 def test_a_robot_without_links_fails_check(tmp_path: Path) -> None:
