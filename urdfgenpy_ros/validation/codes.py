@@ -31,8 +31,8 @@ CODES: dict[str, tuple[Severity, str]] = {
     'P103': (W, 'NUL bytes after the document'),
     'P104': (W, 'default namespace on <robot>'),
     'P105': (W, 'undeclared namespace prefix, kept as written'),
-    'P106': (E, '<inertial> without <inertia> (urdfdom drops it, MuJoCo refuses it)'),
-    'P107': (E, 'visual material with a malformed colour (urdfdom ignores it, MuJoCo refuses '
+    'P106': (W, '<inertial> without <inertia> (urdfdom drops it, MuJoCo refuses it)'),
+    'P107': (W, 'visual material with a malformed colour (urdfdom ignores it, MuJoCo refuses '
                 'it)'),
     'X002': (E, 'Xacro file given to the URDF reader'),
     'X101': (W, 'Xacro in a .urdf file, expanded with xacro'),
