@@ -46,7 +46,7 @@ def check_references(robot: Robot, findings: Findings, resolver: PackageResolver
                                 missing)
                 material = getattr(shape, 'material', None)
                 if (material is not None and material.is_reference
-                        and not robot._materials.get(material.name)):
+                        and not robot.has_material(material.name)):
                     findings.add('R301', material, element, where + '/material',
                                  f'material {material.name!r} is not defined',
                                  f'add <material name="{material.name}"><color rgba=.../>'
