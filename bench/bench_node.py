@@ -170,7 +170,7 @@ def main() -> None:
     parser.add_argument('--window', type=float, default=4.0)
     parser.add_argument('--rates', type=int, nargs='+', default=[10, 100, 1000])
     args = parser.parse_args()
-    corpus = Path(__file__).resolve().parents[2] / 'shared' / 'corpus'
+    corpus = Path(os.environ.get('URDFGENPY_CORPUS', 'corpus-not-set'))
     folder = Path(tempfile.mkdtemp())
     jsp_robot = corpus / 'joint_state_publisher/test/64_joint_robot.urdf'
     robots = {'64-joint (jsp test)': (jsp_robot, [f'joint{n}' for n in range(1, 65)]),

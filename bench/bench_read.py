@@ -21,7 +21,7 @@ graph), ``urdf_parser_py`` (PyPI ``urdfdom-py``) and a bare ``lxml.etree.fromstr
 ``lxml.etree.tostring`` of the parsed tree (the floor). Everything works from bytes in
 memory; each figure is the median of ``--repeat`` runs.
 
-    python bench/bench_read.py [--corpus ../shared/corpus] [--repeat 7] [--per-file]
+    python bench/bench_read.py [--corpus DIR] [--repeat 7] [--per-file]
 """
 
 from __future__ import annotations
@@ -29,6 +29,7 @@ from __future__ import annotations
 import argparse
 import gc
 import io
+import os
 from pathlib import Path
 import re
 import shutil
@@ -84,8 +85,9 @@ def corpus_files(corpus: Path) -> list[Path]:
 def main() -> None:
     """Print per-library totals (and per-file figures on request)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
-    parser.add_argument('--corpus', type=Path,
-                        default=Path(__file__).resolve().parents[2] / 'shared' / 'corpus')
+    parser.add_argument('--corpus', type=Path, required='URDFGENPY_CORPUS' not in os.environ,
+                        default=os.environ.get('URDFGENPY_CORPUS'),
+                        help='a folder of robots (default: $URDFGENPY_CORPUS)')
     parser.add_argument('--repeat', type=int, default=7)
     parser.add_argument('--per-file', action='store_true')
     args = parser.parse_args()

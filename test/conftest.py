@@ -21,7 +21,7 @@ import shutil
 import subprocess
 import sys
 
-from helpers import CORPUS, full_robot, REPO, require_module
+from helpers import CORPUS, full_robot, NO_CORPUS, REPO, require_module
 import pytest
 
 from urdfgenpy_ros.examples import pan_tilt_unit
@@ -32,7 +32,7 @@ from urdfgenpy_ros.robot import Robot
 def corpus() -> Path:
     """Return the third-party corpus directory, or skip when it is absent."""
     if not CORPUS.is_dir():
-        pytest.skip(f'corpus not found at {CORPUS} (set URDFGENPY_CORPUS)')
+        pytest.skip(NO_CORPUS)
     return CORPUS
 
 

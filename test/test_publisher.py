@@ -23,18 +23,30 @@ import subprocess
 import sys
 import time
 
-from helpers import CORPUS, require_module
+from helpers import FIXTURES, require_module
 import pytest
 
 from ros_helpers import Graph, stop
 from urdfgenpy_ros.examples import pan_tilt_unit
 
-rclpy = require_module('rclpy')
-JointState = require_module('sensor_msgs.msg').JointState
-String = require_module('std_msgs.msg').String
-Trigger = require_module('std_srvs.srv').Trigger
+try:  # without ROS 2, every test here skips through _ros below (and fails in CI)
+    import rclpy
+    from sensor_msgs.msg import JointState
+    from std_msgs.msg import String
+    from std_srvs.srv import Trigger
+except ImportError:
+    pass
 
-MIMIC_CHAIN = CORPUS / 'joint_state_publisher/test/mimic_chain.urdf'
+
+@pytest.fixture(autouse=True)
+def _ros() -> None:
+    for module in ('rclpy', 'sensor_msgs.msg', 'std_msgs.msg', 'std_srvs.srv'):
+        require_module(module)
+
+
+MIMIC_CHAIN = FIXTURES / 'robots/mimic_fingers.urdf'
+ARM_PACKAGE = FIXTURES / 'packages/fixture_description'
+ARM = ARM_PACKAGE / 'urdf/arm.urdf.xacro'
 
 
 def _executable(workspace: Path, name: str) -> list[str]:
@@ -78,12 +90,12 @@ def test_achieved_rate_is_within_5_percent(graph: Graph, rate: float) -> None:
 
 
 def test_mimic_joints_follow_their_leaders_through_chains(graph: Graph) -> None:
-    graph.start(f'model:={MIMIC_CHAIN}', 'zeros.j12:=0.5')
+    graph.start(f'model:={MIMIC_CHAIN}', 'zeros.drive:=0.5')
     states = graph.collect(JointState, 'joint_states')
     assert graph.spin_until(lambda: states, 15)
     message = states[-1]
-    assert list(message.name) == ['j12', 'j23', 'j34']
-    # j23 = j12 + 0.1 (multiplier defaults to 1); j34 = -1 * j23
+    assert list(message.name) == ['drive', 'left', 'right']
+    # left = drive + 0.1 (multiplier defaults to 1); right = -1 * left
     assert list(message.position) == pytest.approx([0.5, 0.6, -0.6], abs=1e-12)
 
 
@@ -135,27 +147,26 @@ def test_reload_publishes_a_valid_change_and_keeps_the_last_good_model(
 
 
 def test_watch_reloads_when_an_included_file_changes(graph: Graph, tmp_path: Path) -> None:
-    shutil.copy(CORPUS / 'urdf_tutorial/urdf/08-macroed.urdf.xacro', tmp_path / 'r2d2.xacro')
-    graph.start(f'model:={tmp_path / "r2d2.xacro"}', 'watch:=true')
+    package = tmp_path / 'fixture_description'
+    shutil.copytree(ARM_PACKAGE, package)
+    graph.start(f'model:={package / "urdf/arm.urdf.xacro"}', 'watch:=true',
+                f"package_paths:=['{tmp_path}']")
     descriptions = graph.collect(String, 'robot_description', latched=True)
     assert graph.spin_until(lambda: descriptions, 20)
-    source = tmp_path / 'r2d2.xacro'
+    included = package / 'urdf/arm_parts.xacro'  # $(find fixture_description)/urdf/...
     time.sleep(0.05)
-    source.write_text(source.read_text().replace('name="head_swivel"', 'name="neck"'))
+    included.write_text(included.read_text().replace('name="joint_${index}"',
+                                                     'name="axis_${index}"'))
     assert graph.spin_until(lambda: len(descriptions) == 2, 10)
-    assert '<joint name="neck" type="continuous">' in descriptions[-1].data
+    assert '<joint name="axis_3" type="revolute">' in descriptions[-1].data
 
 
 def test_xacro_with_arguments_and_a_module_function(graph: Graph, tmp_path: Path) -> None:
-    # TurtleBot3's .urdf files are Xacro; the suffix tells the node which it is.
-    model = tmp_path / 'waffle.urdf.xacro'
-    shutil.copy(CORPUS / 'turtlebot3/turtlebot3_description/urdf/turtlebot3_waffle.urdf',
-                model)
-    graph.start(f'model:={model}', "xacro_args:=['namespace:=tb3_0/']",
-                f"package_paths:=['{CORPUS}']")
+    graph.start(f'model:={ARM}', "xacro_args:=['dof:=2', 'gripper:=true']",
+                f"package_paths:=['{FIXTURES / 'packages'}']")
     states = graph.collect(JointState, 'joint_states')
     assert graph.spin_until(lambda: states, 20)
-    assert list(states[-1].name) == ['tb3_0/wheel_left_joint', 'tb3_0/wheel_right_joint']
+    assert list(states[-1].name) == ['joint_1', 'joint_2']  # the gripper's mount is fixed
     other = Graph()
     try:
         other.start('model:=urdfgenpy_ros.examples:pan_tilt_unit')
@@ -168,10 +179,10 @@ def test_xacro_with_arguments_and_a_module_function(graph: Graph, tmp_path: Path
 
 @pytest.mark.parametrize('parameters, words', [
     (['model:=/no/such/robot.urdf'], '/no/such/robot.urdf does not exist'),
-    ([f"model:={CORPUS / 'urdf/urdf/test/fail_pr2_desc_no_joint2.urdf'}"], 'error P001'),
+    ([f"model:={FIXTURES / 'broken/unclosed_attribute.urdf'}"], 'error P001'),
     (['rate:=-5'], "parameter 'rate': -5 is not a positive number"),
     (['model:=no_such_module:build'], "cannot import 'no_such_module:build'"),
-    (["xacro_args:=['oops']", f"model:={CORPUS / 'urdf_tutorial/urdf/08-macroed.urdf.xacro'}"],
+    (["xacro_args:=['oops']", f'model:={ARM}'],
      "'oops' is not name:=value"),
 ])
 def test_bad_input_exits_1_with_one_line_and_no_traceback(
@@ -238,3 +249,13 @@ def test_publish_tf_without_tf2_msgs_says_so_in_one_line(graph: Graph) -> None:
     assert process.returncode == 1 and 'Traceback' not in output
     errors = [line for line in output.splitlines() if '[ERROR]' in line]
     assert len(errors) == 1 and 'needs the tf2_msgs package' in errors[0]
+
+
+def test_zeros_outside_the_limits_are_clamped_as_joint_state_publisher_does() -> None:
+    from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
+    robot = pan_tilt_unit()
+    upper = robot.get_joint('tilt_joint').limit.upper
+    states = JointStates(robot, JointStateOptions(zeros={'tilt_joint': 9.0,
+                                                         'pan_joint': 0.25}))
+    names, positions, _, _ = states.message_arrays()
+    assert dict(zip(names, positions)) == {'pan_joint': 0.25, 'tilt_joint': upper}

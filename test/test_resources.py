@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from helpers import ament_index, CORPUS, load_yourdfpy
+from helpers import ament_index, FIXTURE_PACKAGES, FIXTURES, load_yourdfpy
 import pytest
 
 from urdfgenpy_ros import Mesh, Robot
@@ -30,51 +30,52 @@ def _meshes(robot: Robot) -> list[str]:
             for shape in (*link.visuals, *link.collisions) if isinstance(shape.geometry, Mesh)]
 
 
+PACKAGES = FIXTURES / 'packages'
+EVERY = PACKAGES / 'fixture_description/urdf/every_element.urdf'
+CUBE = PACKAGES / 'fixture_description/meshes/cube.stl'
+
+
 def test_package_uris_resolve_through_search_paths() -> None:
-    robot = Robot.from_urdf(CORPUS / 'urdf_tutorial/urdf/05-visual.urdf')
-    resolver = PackageResolver([CORPUS])
-    files = {resolver.resolve(uri) for uri in _meshes(robot)}
-    assert files == {CORPUS / 'urdf_tutorial/meshes/l_finger.dae',
-                     CORPUS / 'urdf_tutorial/meshes/l_finger_tip.dae'}
+    robot = Robot.from_urdf(EVERY)
+    resolver = PackageResolver([PACKAGES])
+    assert {resolver.resolve(uri) for uri in _meshes(robot)} == {CUBE.absolute()}
 
 
 def test_package_uris_resolve_like_yourdfpy_does_with_the_same_map() -> None:
-    path = CORPUS / 'urdf_tutorial/urdf/05-visual.urdf'
-    resolver = PackageResolver([CORPUS])
-    theirs = load_yourdfpy(path)
-    uris = sorted({m.geometry.mesh.filename for link in theirs.links for m in link.visuals
-                   if m.geometry.mesh is not None})
-    assert uris == sorted(set(_meshes(Robot.from_urdf(path))))
+    resolver = PackageResolver([PACKAGES])
+    theirs = load_yourdfpy(EVERY)
+    uris = sorted({m.geometry.mesh.filename for link in theirs.links
+                   for m in (*link.visuals, *link.collisions) if m.geometry.mesh is not None})
+    assert uris == sorted(set(_meshes(Robot.from_urdf(EVERY))))
     for uri in uris:
-        assert resolver.resolve(uri).read_bytes()[:5] == b'<?xml'
+        assert resolver.resolve(uri).read_bytes()[:5] == b'solid'
 
 
 def test_the_ament_index_is_used(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    for key, value in ament_index(tmp_path).items():
+    for key, value in ament_index(tmp_path, FIXTURE_PACKAGES).items():
         monkeypatch.setenv(key, value)
-    found = PackageResolver().resolve('package://urdf_tutorial/meshes/l_finger.dae')
-    assert found.resolve() == (CORPUS / 'urdf_tutorial/meshes/l_finger.dae').resolve()
+    found = PackageResolver().resolve('package://fixture_description/meshes/cube.stl')
+    assert found.resolve() == CUBE.resolve()
 
 
 def test_ros_package_path_is_used(monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setenv('ROS_PACKAGE_PATH', str(CORPUS / 'husky'))
+    monkeypatch.setenv('ROS_PACKAGE_PATH', str(PACKAGES))
     monkeypatch.delenv('AMENT_PREFIX_PATH', raising=False)
-    assert PackageResolver().find('husky_control') == CORPUS / 'husky' / 'husky_control'
+    assert PackageResolver().find('fixture_description') == PACKAGES / 'fixture_description'
 
 
 def test_relative_and_file_uris(tmp_path: Path) -> None:
     resolver = PackageResolver()
-    stl = CORPUS / 'pybullet_data' / 'l_finger.stl'
-    assert resolver.resolve('l_finger.stl', CORPUS / 'pybullet_data') == stl
-    assert resolver.resolve(stl.as_uri()) == stl
+    assert resolver.resolve('cube.stl', CUBE.parent) == CUBE
+    assert resolver.resolve(CUBE.as_uri()) == CUBE
 
 
 def test_unresolvable_uris_fail_only_when_needed() -> None:
-    robot = Robot.from_urdf(CORPUS / 'urdf/urdf/test/pr2_desc.urdf')  # reading is fine
+    robot = Robot.from_urdf(EVERY)  # reading is fine
     uri = _meshes(robot)[0]
-    with pytest.raises(ResourceError, match="package 'pr2_description' of .* not found"):
-        PackageResolver([CORPUS]).resolve(uri)
+    with pytest.raises(ResourceError, match="package 'fixture_description' of .* not found"):
+        PackageResolver([FIXTURES / 'robots']).resolve(uri)
     with pytest.raises(ResourceError, match='does not exist'):
-        PackageResolver([CORPUS]).resolve('package://urdf_tutorial/meshes/missing.dae')
+        PackageResolver([PACKAGES]).resolve('package://fixture_description/meshes/gone.dae')
     with pytest.raises(ResourceError, match="unsupported URI scheme 'http'"):
         PackageResolver().resolve('http://example.com/a.stl')

@@ -16,14 +16,14 @@
 
 from __future__ import annotations
 
-from helpers import require_module
+import pytest
 
 from urdfgenpy_ros import (
     Box, Collision, Cylinder, Inertial, Joint, JointDynamics, JointLimit, JointMimic, Link,
     Material, Mesh, Origin, Robot, SafetyController, Sphere, Visual)
 
-hypothesis = require_module('hypothesis')
-st = require_module('hypothesis.strategies')
+hypothesis = pytest.importorskip('hypothesis')  # its decorators are needed at import
+st = pytest.importorskip('hypothesis.strategies')
 
 finite = st.floats(allow_nan=False, allow_infinity=False, min_value=-1e6, max_value=1e6)
 positive = st.floats(min_value=1e-6, max_value=1e3, allow_nan=False)

@@ -21,11 +21,10 @@ import os
 from pathlib import Path
 import py_compile
 import re
-import shutil
 import subprocess
 import sys
 
-from helpers import assert_check_urdf_accepts, CORPUS, require_module
+from helpers import assert_check_urdf_accepts, FIXTURES, require_module
 import pytest
 
 from urdfgenpy_ros import Robot, Severity
@@ -35,9 +34,7 @@ from urdfgenpy_ros.scaffold.verb import ScaffoldVerb
 
 def _sources(folder: Path) -> dict[str, list[str]]:
     """Return, per kind of --from, the arguments that select it."""
-    waffle = folder / 'waffle.urdf.xacro'
-    shutil.copy(CORPUS / 'turtlebot3/turtlebot3_description/urdf/turtlebot3_waffle.urdf',
-                waffle)
+    packages = FIXTURES / 'packages'
     table = folder / 'arm.yaml'
     table.write_text('convention: standard\ndegrees: true\nrows:\n'
                      '  - {joint: 1, a: 0, alpha: 90, d: 0.3}\n'
@@ -45,10 +42,10 @@ def _sources(folder: Path) -> dict[str, list[str]]:
                      '  - {joint: 3, a: 0, alpha: 0, d: 0.1, type: prismatic, upper: 0.2}\n')
     return {
         'example': [],
-        'urdf': ['--from', str(CORPUS / 'urdf_tutorial/urdf/05-visual.urdf'),
-                 '--package-path', str(CORPUS)],
-        'xacro': ['--from', str(waffle), '--xacro-args', 'namespace:=tb3_0/',
-                  '--package-path', str(CORPUS)],
+        'urdf': ['--from', str(packages / 'fixture_description/urdf/every_element.urdf'),
+                 '--package-path', str(packages)],
+        'xacro': ['--from', str(packages / 'fixture_description/urdf/arm.urdf.xacro'),
+                  '--xacro-args', 'dof:=4', 'gripper:=true', '--package-path', str(packages)],
         'dh': ['--from', str(table)],
         'builder': ['--from', 'urdfgenpy_ros.examples:pan_tilt_unit'],
     }
@@ -108,10 +105,9 @@ def test_installed_package_expands_to_a_valid_urdf(workspace: Path, name: str,
     robot = Robot.from_urdf(expanded)
     errors = [str(f) for f in robot.validate() if f.severity is Severity.ERROR]
     assert errors == []
-    if name.startswith('urdf_'):  # its meshes were copied in and the URIs rewritten
-        assert sorted(p.name for p in (share / 'meshes').iterdir()) == [
-            '.gitkeep', 'l_finger.dae', 'l_finger_tip.dae']
-        assert f'package://{name}/meshes/l_finger.dae' in expanded.read_text()
+    if name.startswith(('urdf_', 'xacro_')):  # their mesh was copied in, the URIs rewritten
+        assert sorted(p.name for p in (share / 'meshes').iterdir()) == ['.gitkeep', 'cube.stl']
+        assert f'package://{name}/meshes/cube.stl' in expanded.read_text()
 
 
 @pytest.mark.parametrize('name', PACKAGES)
@@ -152,7 +148,7 @@ def test_the_verb_runs_as_ros2cli_drives_it(tmp_path: Path) -> None:
 def test_bad_names_are_one_line_and_nothing_is_written(
         arguments: list[str], words: str, tmp_path: Path,
         capsys: pytest.CaptureFixture[str]) -> None:
-    assert init([*arguments, '--destination-directory', str(tmp_path)]) == 1
+    assert init([*arguments, '--destination-directory', str(tmp_path)]) == 2
     error = capsys.readouterr().err
     assert error.count('\n') == 1 and words in error
     assert list(tmp_path.iterdir()) == []
@@ -163,7 +159,7 @@ def test_existing_files_are_never_overwritten_without_force(
     target = tmp_path / 'ptu_description'
     target.mkdir()
     (target / 'notes.txt').write_text('mine')
-    assert init(['ptu_description', '--destination-directory', str(tmp_path)]) == 1
+    assert init(['ptu_description', '--destination-directory', str(tmp_path)]) == 2
     assert 'exists and is not empty' in capsys.readouterr().err
     assert sorted(p.name for p in target.iterdir()) == ['notes.txt']
     assert init(['ptu_description', '--destination-directory', str(tmp_path), '--force']) == 0
@@ -174,7 +170,7 @@ def test_unwritable_destination_is_one_line_and_leaves_nothing(
         tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     blocker = tmp_path / 'a_file'
     blocker.write_text('x')
-    assert init(['ptu_description', '--destination-directory', str(blocker / 'sub')]) == 1
+    assert init(['ptu_description', '--destination-directory', str(blocker / 'sub')]) == 2
     error = capsys.readouterr().err
     assert error.count('\n') == 1 and 'cannot write' in error
     assert sorted(p.name for p in tmp_path.iterdir()) == ['a_file']

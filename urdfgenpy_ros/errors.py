@@ -24,6 +24,18 @@ class UrdfgenpyError(Exception):
     """Base class of every error this package raises on purpose."""
 
 
+class ModelError(UrdfgenpyError, ValueError):
+    """
+    A value the model refuses, raised where it is made (a constructor, a loader, an edit).
+
+    It is a ``ValueError`` too, so ``except ValueError`` keeps working.
+    """
+
+
+class ModelTypeError(UrdfgenpyError, TypeError):
+    """An object of the wrong kind handed to the model (``add_link(joint)``)."""
+
+
 class SourceLocation(NamedTuple):
     """Where an element was read from: file, line, column and element path."""
 

@@ -16,12 +16,13 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field, KW_ONLY
 import math
 
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.checks import Vec3
-from urdfgenpy_ros.errors import SourceLocation
+from urdfgenpy_ros.errors import ModelError, SourceLocation
 from urdfgenpy_ros.preserved import Preserved
 
 _ZERO: Vec3 = (0.0, 0.0, 0.0)
@@ -50,7 +51,7 @@ class Origin:
     source: SourceLocation | None = field(default=None, compare=False, repr=False)
     extras: Preserved | None = field(default=None, compare=False, repr=False)
 
-    def __init__(self, xyz: Vec3 = _ZERO, rpy: Vec3 = _ZERO, *,
+    def __init__(self, xyz: Sequence[float] = _ZERO, rpy: Sequence[float] = _ZERO, *,
                  source: SourceLocation | None = None, extras: Preserved | None = None) -> None:
         set_xyz, set_rpy, set_source, set_extras = _ORIGIN_SLOTS
         set_xyz(self, xyz if xyz is _ZERO else checks.vec3('origin', 'xyz', xyz))
@@ -183,16 +184,16 @@ class Mesh:
     def __post_init__(self) -> None:
         """Check the file name and coerce the scale."""
         if checks.enabled() and (not isinstance(self.filename, str) or not self.filename):
-            raise ValueError(f'mesh: filename must be a non-empty string, got {self.filename!r}')
+            raise ModelError(f'mesh: filename must be a non-empty string, got {self.filename!r}')
         if self.scale is not None:
             scale = checks.vec3('mesh', 'scale', self.scale)
             if checks.enabled() and 0.0 in scale:
-                raise ValueError(f'mesh {self.filename!r}: scale must not be 0, got {scale!r}')
+                raise ModelError(f'mesh {self.filename!r}: scale must not be 0, got {scale!r}')
             object.__setattr__(self, 'scale', scale)
 
     def half_height(self) -> float:
         """Refuse: a mesh's extent is not known without loading it."""
-        raise ValueError(
+        raise ModelError(
             f'Origin.above(): the height of mesh {self.filename!r} is unknown; '
             'give the origin explicitly, e.g. Origin(xyz=(0, 0, h / 2))')
 

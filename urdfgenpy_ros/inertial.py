@@ -20,7 +20,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field, KW_ONLY
 
 from urdfgenpy_ros import checks
-from urdfgenpy_ros.errors import SourceLocation
+from urdfgenpy_ros.errors import ModelError, ModelTypeError, SourceLocation
 from urdfgenpy_ros.geometry import (
     _positive, Box, Cylinder, Geometry, IDENTITY, Mesh, Origin, Sphere)
 from urdfgenpy_ros.preserved import Preserved
@@ -130,10 +130,10 @@ class Inertial:
         if isinstance(geometry, Sphere):
             return cls._of_solid('sphere', mass, (geometry.radius,), origin)
         if isinstance(geometry, Mesh):
-            raise ValueError(f'Inertial.from_geometry(): {geometry.filename!r} is a mesh; '
+            raise ModelError(f'Inertial.from_geometry(): {geometry.filename!r} is a mesh; '
                              'use Inertial.from_mesh(filename, mass=...)')
-        raise TypeError(f'Inertial.from_geometry(): expected Box, Cylinder, Sphere or Mesh, '
-                        f'got {type(geometry).__name__}')
+        raise ModelTypeError(f'Inertial.from_geometry(): expected Box, Cylinder, Sphere or Mesh, '
+                             f'got {type(geometry).__name__}')
 
     @classmethod
     def from_mesh(cls, filename: str, density: float | None = None, mass: float | None = None,

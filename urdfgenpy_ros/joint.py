@@ -16,13 +16,14 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field, KW_ONLY
 from enum import Enum
 from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.checks import Vec3
-from urdfgenpy_ros.errors import SourceLocation
+from urdfgenpy_ros.errors import ModelError, SourceLocation
 from urdfgenpy_ros.geometry import IDENTITY, Origin
 from urdfgenpy_ros.preserved import Preserved
 
@@ -192,12 +193,25 @@ class Joint:
     source: SourceLocation | None = _hidden()
     extras: Preserved | None = _hidden()
 
+    if TYPE_CHECKING:
+        # The generated __init__ accepts a type name too ('revolute'); say so to checkers.
+        def __init__(self, name: str, type: JointType | str,  # noqa: A002
+                     parent: str, child: str, *, origin: Origin = IDENTITY,
+                     axis: Sequence[float] | None = None, limit: JointLimit | None = None,
+                     dynamics: JointDynamics | None = None, mimic: JointMimic | None = None,
+                     safety_controller: SafetyController | None = None,
+                     calibration: JointCalibration | None = None,
+                     extensions: list[Extension] = ...,
+                     sensors: list[Sensor] = ...,
+                     source: SourceLocation | None = None,
+                     extras: Preserved | None = None) -> None: ...
+
     def __post_init__(self) -> None:
         """Check the name and type; coerce the axis."""
         checks.name('joint', self.name)
         kind = _TYPES.get(self.type)
         if kind is None:
-            raise ValueError(f'joint {self.name!r}: unknown type {self.type!r} '
+            raise ModelError(f'joint {self.name!r}: unknown type {self.type!r} '
                              f'(use one of {_TYPE_NAMES})')
         self.type = kind
         if not (type(self.parent) is str and self.parent and type(self.child) is str
@@ -207,7 +221,7 @@ class Joint:
         if self.axis is not None:
             self.axis = checks.vec3(f'joint {self.name!r}', 'axis', self.axis)
             if self.axis == (0.0, 0.0, 0.0) and kind in _ONE_DOF and checks.enabled():
-                raise ValueError(f'joint {self.name!r}: axis must not be zero for a {kind} '
+                raise ModelError(f'joint {self.name!r}: axis must not be zero for a {kind} '
                                  'joint (give the direction of motion, e.g. (0, 0, 1))')
 
     @property

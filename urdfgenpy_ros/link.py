@@ -20,7 +20,7 @@ from dataclasses import dataclass, field, KW_ONLY
 from typing import TYPE_CHECKING
 
 from urdfgenpy_ros import checks
-from urdfgenpy_ros.errors import SourceLocation
+from urdfgenpy_ros.errors import ModelTypeError, SourceLocation
 from urdfgenpy_ros.geometry import Geometry, IDENTITY, Origin
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.material import Material
@@ -56,6 +56,10 @@ class Collision:
     extras: Preserved | None = field(default=None, compare=False, repr=False)
 
 
+Shape = Visual | Collision
+"""A visual or a collision: a geometry placed at an origin in its link."""
+
+
 @dataclass(slots=True)
 class Link:
     """
@@ -88,24 +92,24 @@ class Link:
     def add_visual(self, visual: Visual) -> Link:
         """Append a visual and return the link, for chaining."""
         if not isinstance(visual, Visual):
-            raise TypeError(f'link {self.name!r}: add_visual() takes a Visual, '
-                            f'got {type(visual).__name__}')
+            raise ModelTypeError(f'link {self.name!r}: add_visual() takes a Visual, '
+                                 f'got {type(visual).__name__}')
         self.visuals.append(visual)
         return self
 
     def add_collision(self, collision: Collision) -> Link:
         """Append a collision and return the link, for chaining."""
         if not isinstance(collision, Collision):
-            raise TypeError(f'link {self.name!r}: add_collision() takes a Collision, '
-                            f'got {type(collision).__name__}')
+            raise ModelTypeError(f'link {self.name!r}: add_collision() takes a Collision, '
+                                 f'got {type(collision).__name__}')
         self.collisions.append(collision)
         return self
 
     def set_inertial(self, inertial: Inertial | None) -> Link:
         """Set (or clear, with None) the inertial and return the link."""
         if inertial is not None and not isinstance(inertial, Inertial):
-            raise TypeError(f'link {self.name!r}: set_inertial() takes an Inertial, '
-                            f'got {type(inertial).__name__}')
+            raise ModelTypeError(f'link {self.name!r}: set_inertial() takes an Inertial, '
+                                 f'got {type(inertial).__name__}')
         self.inertial = inertial
         return self
 

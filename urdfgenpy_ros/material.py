@@ -21,7 +21,7 @@ from dataclasses import dataclass, field, KW_ONLY
 import math
 
 from urdfgenpy_ros import checks
-from urdfgenpy_ros.errors import SourceLocation
+from urdfgenpy_ros.errors import ModelError, SourceLocation
 from urdfgenpy_ros.preserved import Preserved
 
 Rgba = tuple[float, float, float, float]
@@ -30,11 +30,11 @@ Rgba = tuple[float, float, float, float]
 def _rgba(name: str, value: Sequence[object]) -> Rgba:
     owner = f'material {name!r}'
     if len(value) != 4:
-        raise ValueError(f'{owner}: rgba must have 4 numbers (red, green, blue, alpha), '
+        raise ModelError(f'{owner}: rgba must have 4 numbers (red, green, blue, alpha), '
                          f'got {tuple(value)!r}')
     rgba = tuple(checks.to_float(owner, 'rgba', v) for v in value)
     if checks.enabled() and not all(math.isfinite(v) and 0.0 <= v <= 1.0 for v in rgba):
-        raise ValueError(f'{owner}: rgba components run from 0 to 1, got {rgba!r} '
+        raise ModelError(f'{owner}: rgba components run from 0 to 1, got {rgba!r} '
                          '(divide 0-255 values by 255)')
     return rgba  # type: ignore[return-value]
 

@@ -27,6 +27,7 @@ from pathlib import Path
 from typing import Any
 import warnings
 
+from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
 from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.inertial import Inertial
@@ -47,7 +48,7 @@ def load_triangles(path: str | PathLike[str]) -> Any:
     except ImportError:
         raise MissingDependencyError('trimesh', 'mesh', 'Inertial.from_mesh') from None
     try:
-        mesh = trimesh.load(str(path), force='mesh', process=False)
+        mesh: Any = trimesh.load(str(path), force='mesh', process=False)
     except (OSError, ValueError, KeyError) as error:
         raise UrdfgenpyError(f'{path}: cannot read the mesh ({error})') from None
     return mesh.vertices[mesh.faces]
@@ -151,8 +152,11 @@ def inertial_from_meshlab(mass: float, volume: float, tensor: Sequence[Sequence[
     mm^3, ``tensor`` (3x3) in mm^5 and the optional ``centre`` of mass in mm. Scaling by
     ``mass / volume`` and 1e-6 (mm^2 to m^2) gives kg m^2.
     """
+    mass = checks.non_negative('Inertial.from_meshlab', 'mass', mass, 'kg')
+    volume = checks.positive('Inertial.from_meshlab', 'volume', volume, 'mm^3')
     factor = mass / volume * 0.000001
-    values = [[float(value) * factor for value in row] for row in tensor]
+    values = [[checks.finite('Inertial.from_meshlab', 'tensor', value) * factor
+               for value in row] for row in tensor]
     origin = Origin(tuple(float(c) / 1000.0 for c in centre)) if centre else Origin()
     return Inertial(mass, values[0][0], values[0][1], values[0][2], values[1][1],
                     values[1][2], values[2][2], origin=origin)

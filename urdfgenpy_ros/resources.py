@@ -53,8 +53,8 @@ class PackageResolver:
 
     def __init__(self, search_paths: Iterable[str | PathLike[str]] = (),
                  packages: Mapping[str, str | PathLike[str]] | None = None) -> None:
-        self.packages = {name: Path(path) for name, path in (packages or {}).items()}
-        self.search_paths = [Path(path) for path in search_paths]
+        self.packages = {name: Path(path).absolute() for name, path in (packages or {}).items()}
+        self.search_paths = [Path(path).absolute() for path in search_paths]
         self._found: dict[str, Path | None] = {}
 
     def find(self, name: str) -> Path | None:

@@ -22,7 +22,8 @@ from os import PathLike
 from typing import Any
 
 from urdfgenpy_ros import checks
-from urdfgenpy_ros.errors import ReadWarning, SourceLocation, ValidationError
+from urdfgenpy_ros.errors import (
+    ModelError, ModelTypeError, ReadWarning, SourceLocation, ValidationError)
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.joint import Joint, JointMimic
 from urdfgenpy_ros.link import Link
@@ -74,10 +75,10 @@ class Robot:
     def add_link(self, link: Link) -> Robot:
         """Add a link and return the robot; its name must be new."""
         if not isinstance(link, Link):
-            raise TypeError(f'robot {self.name!r}: add_link() takes a Link, '
-                            f'got {type(link).__name__}')
+            raise ModelTypeError(f'robot {self.name!r}: add_link() takes a Link, '
+                                 f'got {type(link).__name__}')
         if link.name in self._links:
-            raise ValueError(f'robot {self.name!r}: link {link.name!r} already exists '
+            raise ModelError(f'robot {self.name!r}: link {link.name!r} already exists '
                              '(link names must be unique: rename one)')
         self._links[link.name] = link
         return self
@@ -85,21 +86,21 @@ class Robot:
     def add_joint(self, joint: Joint) -> Robot:
         """Add a joint between two links already added and return the robot."""
         if not isinstance(joint, Joint):
-            raise TypeError(f'robot {self.name!r}: add_joint() takes a Joint, '
-                            f'got {type(joint).__name__}')
+            raise ModelTypeError(f'robot {self.name!r}: add_joint() takes a Joint, '
+                                 f'got {type(joint).__name__}')
         if joint.name in self._joints:
-            raise ValueError(f'robot {self.name!r}: joint {joint.name!r} already exists '
+            raise ModelError(f'robot {self.name!r}: joint {joint.name!r} already exists '
                              '(joint names must be unique: rename one)')
         if checks.enabled():
             for role in ('parent', 'child'):
                 link = getattr(joint, role)
                 if link not in self._links:
-                    raise ValueError(
+                    raise ModelError(
                         f'joint {joint.name!r}: {role} link {link!r} is not in robot '
                         f'{self.name!r}{_suggest(link, self._links)} '
                         '(add the link before the joint)')
             if joint.parent == joint.child:
-                raise ValueError(f'joint {joint.name!r}: parent and child are both '
+                raise ModelError(f'joint {joint.name!r}: parent and child are both '
                                  f'{joint.child!r} (a joint connects two different links)')
         self._joints[joint.name] = joint
         return self
@@ -107,10 +108,10 @@ class Robot:
     def add_material(self, material: Material) -> Robot:
         """Add a robot-level material and return the robot; its name must be new."""
         if not isinstance(material, Material):
-            raise TypeError(f'robot {self.name!r}: add_material() takes a Material, '
-                            f'got {type(material).__name__}')
+            raise ModelTypeError(f'robot {self.name!r}: add_material() takes a Material, '
+                                 f'got {type(material).__name__}')
         if material.name in self._materials:
-            raise ValueError(f'robot {self.name!r}: material {material.name!r} already '
+            raise ModelError(f'robot {self.name!r}: material {material.name!r} already '
                              'exists (material names must be unique: rename one)')
         self._materials[material.name] = material
         return self
@@ -193,7 +194,7 @@ class Robot:
         roots = self.roots
         if len(roots) != 1:
             names = ', '.join(repr(link.name) for link in roots) or 'none (a loop?)'
-            raise ValueError(f'robot {self.name!r} must have exactly one root link, '
+            raise ModelError(f'robot {self.name!r} must have exactly one root link, '
                              f'found {names} (connect them with joints)')
         return roots[0]
 
@@ -254,11 +255,11 @@ class Robot:
             if joint is None:
                 if base_name is None:
                     break
-                raise ValueError(f'link {current!r} is not below {base_name!r}')
+                raise ModelError(f'link {current!r} is not below {base_name!r}')
             joints.append(joint)
             current = joint.parent
             if len(joints) > len(self._joints):
-                raise ValueError(f'robot {self.name!r}: the chain to {tip!r} has a loop')
+                raise ModelError(f'robot {self.name!r}: the chain to {tip!r} has a loop')
         return joints[::-1]
 
     # ---- editing -------------------------------------------------------------------
@@ -280,7 +281,7 @@ class Robot:
         below = self.subtree(link)
         if len(below) > 1 and not subtree:
             children = ', '.join(repr(child.name) for child in self.child_links(link))
-            raise ValueError(f'link {name!r} has child links {children}: pass '
+            raise ModelError(f'link {name!r} has child links {children}: pass '
                              'subtree=True to remove them too, or re-attach them first')
         doomed = {node.name for node in below}
         for joint in list(self._joints.values()):
@@ -300,7 +301,7 @@ class Robot:
         """Rename a link and every joint end and reference that names it."""
         link = self.get_link(old)
         if new in self._links and new != old:
-            raise ValueError(f'cannot rename link {old!r} to {new!r}: that name is taken')
+            raise ModelError(f'cannot rename link {old!r} to {new!r}: that name is taken')
         link.name = checks.name('link', new)
         self._links = {(new if key == old else key): value
                        for key, value in self._links.items()}
@@ -316,7 +317,7 @@ class Robot:
         """Rename a joint and every mimic and reference that names it."""
         joint = self.get_joint(old)
         if new in self._joints and new != old:
-            raise ValueError(f'cannot rename joint {old!r} to {new!r}: that name is taken')
+            raise ModelError(f'cannot rename joint {old!r} to {new!r}: that name is taken')
         joint.name = checks.name('joint', new)
         self._joints = {(new if key == old else key): value
                         for key, value in self._joints.items()}
@@ -332,7 +333,7 @@ class Robot:
         """Rename a robot-level material and every visual that uses it."""
         material = self.get_material(old)
         if new in self._materials and new != old:
-            raise ValueError(f'cannot rename material {old!r} to {new!r}: name taken')
+            raise ModelError(f'cannot rename material {old!r} to {new!r}: name taken')
         renamed = Material(new, material.rgba, material.texture,
                            source=material.source, extras=material.extras)
         self._materials = {(new if key == old else key): (renamed if key == old else value)

@@ -16,9 +16,6 @@
 
 from __future__ import annotations
 
-import sys
-import traceback
-
 import click
 
 from urdfgenpy_ros.cli.check import check
@@ -27,25 +24,22 @@ from urdfgenpy_ros.cli.example import example
 from urdfgenpy_ros.cli.inertia import inertia
 from urdfgenpy_ros.cli.init import init
 from urdfgenpy_ros.cli.tree import tree
-from urdfgenpy_ros.errors import UrdfgenpyError
-
-EXIT_UNREADABLE = 2
+from urdfgenpy_ros.report import known_errors_as_one_line
 
 
 class _Group(click.Group):
-    """A group that prints known errors as one line and exits 2."""
+    """A group that prints known errors as one line and exits 2; bugs keep their traceback."""
 
     def invoke(self, ctx: click.Context) -> object:
-        try:
+        def verbose() -> bool:  # set by main() below, once the options are parsed
+            return bool(ctx.obj and ctx.obj.get('verbose'))
+
+        with known_errors_as_one_line('urdfgenpy: ', say=_echo_error, verbose=verbose):
             return super().invoke(ctx)
-        except (UrdfgenpyError, OSError, ValueError) as error:
-            if ctx.obj and ctx.obj.get('verbose'):
-                traceback.print_exc()
-            message = str(error)
-            if isinstance(error, OSError) and error.filename:
-                message = f'{error.filename}: {error.strerror}'
-            click.echo(f'urdfgenpy: {message}', err=True)
-            sys.exit(EXIT_UNREADABLE)
+
+
+def _echo_error(line: str) -> None:
+    click.echo(line, err=True)
 
 
 @click.group(cls=_Group, context_settings={'help_option_names': ['-h', '--help']})

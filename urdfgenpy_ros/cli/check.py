@@ -22,8 +22,8 @@ from pathlib import Path
 import click
 
 from urdfgenpy_ros.cli._options import input_options, parse_mappings
-from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import load
+from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 
 
 @click.command()
@@ -47,10 +47,9 @@ def check(inputs: tuple[str, ...], output: str, strict: bool, no_meshes: bool,
     for path in files:
         try:
             robot = load(path, mappings, package_paths)
-        except (UrdfgenpyError, OSError, ValueError) as error:
+        except KNOWN_ERRORS as error:
             unreadable += 1
-            message = f'{path}: {error.strerror}' if isinstance(error, OSError) and \
-                error.strerror else str(error)
+            message = one_line(error)
             report.append({'file': str(path), 'readable': False, 'error': message,
                            'findings': []})
             if output == 'text':

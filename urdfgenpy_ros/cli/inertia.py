@@ -27,9 +27,10 @@ from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.robot import Robot
 
 
-@click.command()
-@click.argument('mesh', required=False,
-                type=click.Path(exists=True, dir_okay=False, path_type=Path))
+# MeshLab's figures are pasted as they are printed: "--tensor 8171479.5 -1091.58 ...". The
+# numbers after the first reach the command as extra arguments, negative ones included.
+@click.command(context_settings={'ignore_unknown_options': True})
+@click.argument('arguments', nargs=-1, type=click.UNPROCESSED, metavar='[MESH]')
 @click.option('--mass', type=float, help='Total mass in kg.')
 @click.option('--density', type=float, help='Uniform density in kg/m^3 (instead of --mass).')
 @click.option('--scale', type=float, default=1.0, show_default=True,
@@ -37,20 +38,29 @@ from urdfgenpy_ros.robot import Robot
 @click.option('--meshlab', is_flag=True,
               help="Convert MeshLab's Compute Geometric Measures output instead of a mesh.")
 @click.option('--volume', type=float, help='MeshLab: "Mesh Volume is" (mm^3).')
-@click.option('--tensor', help='MeshLab: the 9 numbers of "Inertia Tensor is", row by row.')
-def inertia(mesh: Path | None, mass: float | None, density: float | None, scale: float,
-            meshlab: bool, volume: float | None, tensor: str | None) -> None:
+@click.option('--tensor', help='MeshLab: the 9 numbers of "Inertia Tensor is", row by row '
+              '(one quoted argument, or pasted as they are printed).')
+def inertia(arguments: tuple[str, ...], mass: float | None, density: float | None,
+            scale: float, meshlab: bool, volume: float | None, tensor: str | None) -> None:
     """Print the <inertial> of MESH (STL, OBJ, DAE), or of MeshLab's figures (--meshlab)."""
     if meshlab:
-        numbers = [float(value) for value in (tensor or '').replace(',', ' ').split()]
+        pasted = ' '.join([tensor or '', *arguments]).replace(',', ' ').split()
+        try:
+            numbers = [float(value) for value in pasted]
+        except ValueError as error:
+            raise click.BadParameter(f'{" ".join(pasted)!r}: {error}',
+                                     param_hint='--tensor') from None
         if mass is None or volume is None or len(numbers) != 9:
             raise UrdfgenpyError('--meshlab needs --mass, --volume and --tensor with 9 '
                                  'numbers (row by row, as MeshLab prints them)')
         inertial = Inertial.from_meshlab(mass, volume, [numbers[0:3], numbers[3:6],
                                                         numbers[6:9]])
     else:
-        if mesh is None:
-            raise UrdfgenpyError('give a MESH file, or --meshlab with its figures')
+        if len(arguments) != 1:
+            raise UrdfgenpyError('give one MESH file, or --meshlab with its figures')
+        mesh = Path(arguments[0])
+        if not mesh.is_file():
+            raise click.BadParameter(f'{mesh} is not a file', param_hint='MESH')
         inertial = Inertial.from_mesh(str(mesh), density=density, mass=mass,
                                       scale=(scale, scale, scale))
     link = Link('part').set_inertial(inertial)

@@ -21,6 +21,8 @@ from os import PathLike
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from urdfgenpy_ros.errors import ModelError
+
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
 
@@ -35,7 +37,7 @@ def format_of(path: str | PathLike[str]) -> str:
         return WRITERS[suffix]
     except KeyError:
         known = ', '.join(WRITERS)
-        raise ValueError(f'{path}: unknown suffix {suffix!r} (use one of {known}, '
+        raise ModelError(f'{path}: unknown suffix {suffix!r} (use one of {known}, '
                          'or .urdf.xacro)') from None
 
 
@@ -53,7 +55,7 @@ def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
         return DHTable.from_file(path).to_robot(Path(path).name.split('.')[0])
     kind = format_of(path)
     if kind == 'sdf':
-        raise ValueError(f'{path}: reading SDF is not supported (convert from URDF or Xacro)')
+        raise ModelError(f'{path}: reading SDF is not supported (convert from URDF or Xacro)')
     if kind == 'urdf':
         return Robot.from_urdf(path)
     return Robot.from_xacro(path, dict(mappings or {}), search_paths=list(search_paths))

@@ -35,6 +35,7 @@ PARSER = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False
                          huge_tree=False, collect_ids=False)
 _DECLARATION = re.compile(rb'^\s*<\?xml\b[^>]*\?>')
 _DOCTYPE = re.compile(rb'<!DOCTYPE', re.IGNORECASE)
+_UNDECLARED = re.compile(r'Namespace prefix (\S+) (?:for \S+ )?on \S+ is not defined')
 
 
 @dataclass(slots=True)
@@ -98,6 +99,8 @@ def parse_xml(data: bytes, file: str | None) -> tuple[Any, Source, list[ReadWarn
     try:
         return etree.fromstring(data, PARSER), source, warnings
     except etree.XMLSyntaxError as error:
+        if _UNDECLARED.match(str(error.msg)):
+            return _with_undeclared_prefixes(data, source, warnings)
         declaration = _DECLARATION.match(data)
         if declaration is None or not _is_declaration_error(error, data, declaration):
             raise _syntax_error(error, source) from None
@@ -111,6 +114,33 @@ def parse_xml(data: bytes, file: str | None) -> tuple[Any, Source, list[ReadWarn
         return etree.fromstring(blanked + data[declaration.end():], PARSER), source, warnings
     except etree.XMLSyntaxError as error:
         raise _syntax_error(error, source) from None
+
+
+def _with_undeclared_prefixes(data: bytes, source: Source, warnings: list[ReadWarning]
+                              ) -> tuple[Any, Source, list[ReadWarning]]:
+    """
+    Read a file whose only fault is an undeclared prefix (``drake:acceleration="..."``).
+
+    urdfdom, yourdfpy and MuJoCo read such files: the prefixed names are kept as written
+    (``drake:member`` is an element of that literal name) and written back unchanged.
+    """
+    parser = etree.XMLParser(recover=True, resolve_entities=False, no_network=True,
+                             load_dtd=False, huge_tree=False, collect_ids=False)
+    root = etree.fromstring(data, parser)
+    errors = list(parser.error_log)
+    other = [entry for entry in errors if entry.type_name != 'NS_ERR_UNDEFINED_NAMESPACE']
+    if other or root is None:
+        first = other[0] if other else errors[0]
+        raise ParseError(f'XML syntax: {first.message}',
+                         SourceLocation(source.file, first.line, first.column or 1), 'P001')
+    prefixes = sorted({_UNDECLARED.match(entry.message).group(1)  # type: ignore[union-attr]
+                       for entry in errors})
+    first = errors[0]
+    warnings.append(ReadWarning(
+        SourceLocation(source.file, first.line, first.column or 1), 'P105',
+        f'undeclared namespace prefix(es) {", ".join(prefixes)} ({len(errors)} use(s)) kept '
+        'as written; declare them on <robot> (xmlns:PREFIX="...") for strict XML tools'))
+    return root, source, warnings
 
 
 def _is_declaration_error(error: Any, data: bytes, declaration: Any) -> bool:

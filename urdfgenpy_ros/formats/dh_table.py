@@ -92,7 +92,7 @@ def _origin(data: Any, degrees: bool, where: SourceLocation) -> Origin:
                          'D002') from None
     if degrees:
         rpy = tuple(math.radians(v) for v in rpy)
-    return Origin(xyz, rpy)  # type: ignore[arg-type]
+    return Origin(xyz, rpy)
 
 
 def _convention(value: Any, where: SourceLocation) -> DHConvention:
@@ -132,6 +132,8 @@ def _read_yaml(text: str, file: str) -> DHTable:
     where = SourceLocation(file, 1, 1)
     if not isinstance(data, dict) or 'rows' not in data or 'convention' not in data:
         raise ParseError("a DH table needs 'convention' and 'rows'", where, 'D001')
+    if not isinstance(data['rows'], list):
+        raise ParseError("'rows' is a list of rows (- {joint: 1, a: 0.0, ...})", where, 'D001')
     degrees = bool(data.get('degrees', False))
     rows = []
     lines = text.splitlines()
@@ -194,7 +196,7 @@ def write_table(table: DHTable, path: str | PathLike[str], degrees: bool = False
 
     rows = []
     for row in table.rows:
-        limits = (row.lower, row.upper)
+        limits: tuple[float | None, ...] = (row.lower, row.upper)
         if row.joint_type == 'revolute':
             limits = tuple(None if v is None else angle(v) for v in limits)
         rows.append({'joint': row.joint, 'a': row.a, 'alpha': angle(row.alpha), 'd': row.d,

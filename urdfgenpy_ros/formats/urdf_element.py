@@ -33,7 +33,8 @@ from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import esc, without_declared
 from urdfgenpy_ros.formats.urdf_fresh import FRESH
 from urdfgenpy_ros.formats.urdf_schema import (
-    Child, Element, ELEMENTS, FLOAT, INERTIAL, MATERIAL, OF_CLASS, REQUIRED, TEXT, values)
+    Child, Element, ELEMENTS, FLOAT, INERTIAL, MATERIAL, OF_CLASS, REQUIRED, slot_of, SLOTS,
+    TEXT, values)
 from urdfgenpy_ros.geometry import Box, Cylinder, Mesh, Origin, Sphere
 from urdfgenpy_ros.material import Material
 
@@ -42,9 +43,6 @@ if TYPE_CHECKING:
     from urdfgenpy_ros.link import Link
     from urdfgenpy_ros.robot import Robot
 
-_SLOTS: dict[str, dict[str, Child]] = {
-    tag: {name: child for child in element.children for name in child.tags}
-    for tag, element in ELEMENTS.items()}
 _LEAVES = frozenset((Origin, Box, Cylinder, Sphere, Mesh))
 _ATTRS = {tag: {attr.name: attr for attr in element.attrs} for tag, element in ELEMENTS.items()}
 
@@ -261,14 +259,16 @@ class ElementWriter:
                node: Any, pad: str | None, inner: str | None) -> str:
         """Return an edited element: known children in their source places, the rest kept."""
         tag = element.tag
-        slots = _SLOTS[tag]
         queues = dict(children)
         used = dict.fromkeys(queues, 0)
         items: list[tuple[str, str, Child | None]] = []
         space = node.text or ''
         seen: set[Child] = set()
         for sub in node:
-            child = slots.get(sub.tag)
+            child = slot_of(tag, sub)
+            declared = SLOTS[tag].get(sub.tag)
+            if child is None and declared is not None and queues.get(declared):
+                child = declared  # a value given since replaces the child urdfdom ignores
             if child is not None and not child.many:
                 if child in seen:
                     child = None
@@ -308,10 +308,9 @@ class ElementWriter:
 
 def _first_slots(element: Element, node: Any) -> dict[Child, Any]:
     """Return the first source child that fills each single child declaration."""
-    slots = _SLOTS[element.tag]
     found: dict[Child, Any] = {}
     for sub in node:
-        child = slots.get(sub.tag)
+        child = slot_of(element.tag, sub)
         if child is not None and not child.many and child not in found:
             found[child] = sub
     return found

@@ -33,7 +33,8 @@ from urdfgenpy_ros.errors import ParseError, ReadWarning, SourceLocation
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._parse import parse_xml, Source
 from urdfgenpy_ros.formats.urdf_schema import (
-    Child, Element, ELEMENTS, FLOAT, GEOMETRY, record, REQUIRED, TEXT, VEC3)
+    Child, Element, ELEMENTS, FLOAT, GEOMETRY, record, REQUIRED, slot_of, TEXT, unusable,
+    VEC3)
 from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.material import Material
@@ -45,9 +46,6 @@ _TYPES = ', '.join(kind.value for kind in JointType)
 _JOINT_TYPES = frozenset(kind.value for kind in JointType)
 _SHAPES = 'box, cylinder, sphere or mesh'
 _SHAPE_TAGS = GEOMETRY.children[0].tags
-_SLOTS: dict[str, dict[str, Child]] = {
-    tag: {name: child for child in element.children for name in child.tags}
-    for tag, element in ELEMENTS.items()}
 _EXPECTED = {'type': f'one of {_TYPES}',
              'filename': 'the mesh file, e.g. package://my_robot/meshes/part.stl'}
 _DECLARATION = re.compile(r'^\s*(<\?xml\b[^>]*\?>)')
@@ -126,11 +124,17 @@ class _Reader:
 
     def children(self, element: Element, node: Any, fields: dict[str, Any]) -> None:
         """Read the declared children of ``node`` into ``fields`` (first of each kind)."""
-        slots = _SLOTS[element.tag]
         filled: set[Child] = set()
         for child in node:
-            slot = slots.get(child.tag)
+            slot = slot_of(element.tag, child)
             if slot is None:
+                why = unusable(element.tag, child)
+                if why is not None:  # kept as written, as urdfdom drops it
+                    name = node.get('name')
+                    owner = f'{element.tag} {name!r}' if name else f'<{element.tag}>'
+                    self.warnings.append(ReadWarning(
+                        self.source.at(child), 'P106' if child.tag == 'inertial' else 'P107',
+                        f'{owner}: ignored, as urdfdom does: {why}'))
                 continue
             tag = child.tag
             if slot.many:

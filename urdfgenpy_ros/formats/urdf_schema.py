@@ -152,6 +152,46 @@ ELEMENTS: dict[str, Element] = {element.tag: element for element in (
     SAFETY_CONTROLLER, JOINT)}
 """Every URDF element below ``<robot>``, by tag."""
 
+SLOTS: dict[str, dict[str, Child]] = {
+    tag: {name: child for child in element.children for name in child.tags}
+    for tag, element in ELEMENTS.items()}
+"""Per element tag, the declaration each child tag fills."""
+
+
+def unusable(tag: str, node: Any) -> str | None:
+    """
+    Return why urdfdom drops the child ``node`` of a ``tag`` element, or None if it reads it.
+
+    urdfdom logs such a child and reads on; so does the reader (with a warning), and the
+    writer keeps the child as written, like an unknown one, until the model gets a value
+    for it, which then takes its place.
+    """
+    if node.tag == 'inertial' and tag == 'link' and node.find('inertia') is None:
+        return '<inertial> without <inertia> (MuJoCo refuses it): add <inertia ixx=... izz=.../>'
+    if node.tag == 'material' and tag == 'visual':
+        color = node.find('color')
+        rgba = color.get('rgba') if color is not None else None
+        if rgba is not None and not _numbers(rgba, 4):
+            return (f'<material> colour rgba {rgba!r} is not 4 numbers (MuJoCo refuses it): '
+                    'write red green blue alpha, each 0..1')
+    return None
+
+
+def _numbers(text: str, count: int) -> bool:
+    parts = text.split()
+    try:
+        return len([float(part) for part in parts]) == count
+    except ValueError:
+        return False
+
+
+def slot_of(tag: str, node: Any) -> Child | None:
+    """Return the declaration the source child ``node`` of a ``tag`` element fills, or None."""
+    if unusable(tag, node) is not None:
+        return None
+    return SLOTS[tag].get(node.tag)
+
+
 OF_CLASS: dict[type, Element] = {element.cls: element for element in ELEMENTS.values()
                                  if element.cls is not None}
 """The declaration of each model class."""

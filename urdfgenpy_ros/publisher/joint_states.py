@@ -27,7 +27,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 import math
 
-from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.errors import ModelError, UrdfgenpyError
 from urdfgenpy_ros.joint import JointType
 from urdfgenpy_ros.robot import Robot
 
@@ -86,8 +86,10 @@ class JointStates:
         if safety is not None and self.options.use_smallest_joint_limits and not continuous:
             lower = max(lower, safety.soft_lower_limit)
             upper = min(upper, safety.soft_upper_limit)
-        if joint.name in self.options.zeros:
+        if joint.name in self.options.zeros:  # clamped, as joint_state_publisher does
             zero = float(self.options.zeros[joint.name])
+            if not continuous:
+                zero = min(max(zero, lower), upper)
         elif lower > 0.0 or upper < 0.0:
             zero = (lower + upper) / 2.0
         else:
@@ -129,9 +131,9 @@ class JointStates:
         for label, values in (('position', positions), ('velocity', velocities),
                               ('effort', efforts)):
             if values and len(values) != len(names):
-                raise ValueError(f'{len(names)} names but {len(values)} {label} values')
+                raise ModelError(f'{len(names)} names but {len(values)} {label} values')
             if any(math.isnan(value) for value in values):
-                raise ValueError(f'{label} holds NaN')
+                raise ModelError(f'{label} holds NaN')
         unknown = []
         self.version += 1
         for index, name in enumerate(names):

@@ -42,6 +42,7 @@ from std_srvs.srv import Trigger
 from urdfgenpy_ros.errors import Severity, UrdfgenpyError
 from urdfgenpy_ros.model_source import load_model
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
+from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
 
 _STRINGS = ParameterType.PARAMETER_STRING_ARRAY
@@ -67,12 +68,36 @@ _PARAMETERS: dict[str, tuple[Any, int | None, str]] = {
 }
 
 
+_EXPECTED = {
+    ParameterType.PARAMETER_STRING: ('a string', lambda value: isinstance(value, str)),
+    ParameterType.PARAMETER_BOOL: ('true or false', lambda value: isinstance(value, bool)),
+    ParameterType.PARAMETER_DOUBLE: ('a number', lambda value: isinstance(value, (int, float))
+                                     and not isinstance(value, bool)),
+    _STRINGS: ("a list of strings, e.g. \"['a', 'b']\"", lambda value: isinstance(
+        value, (list, tuple)) and all(isinstance(item, str) for item in value)),
+}
+
+
+def _check_type(name: str, kind: int | None, value: Any) -> None:
+    """Refuse a parameter given with another type than declared (overrides keep theirs)."""
+    if kind is None:
+        return
+    expected, accepts = _EXPECTED[kind]
+    if not accepts(value):
+        raise UrdfgenpyError(f'parameter {name!r}: {value!r} is not {expected}')
+
+
 class PublisherNode(Node):
     """Publish a validated robot description and its joint states."""
 
     def __init__(self, **kwargs: Any) -> None:
-        super().__init__('urdfgenpy_publisher',
-                         automatically_declare_parameters_from_overrides=True, **kwargs)
+        try:
+            super().__init__('urdfgenpy_publisher',
+                             automatically_declare_parameters_from_overrides=True, **kwargs)
+        except ValueError as error:  # rclpy refusing an override it cannot type, e.g. []
+            raise UrdfgenpyError(
+                f'bad parameter: {error} (an empty list has no type in ROS 2: leave the '
+                'parameter out to get its default)') from None
         for name, (default, kind, description) in _PARAMETERS.items():
             descriptor = ParameterDescriptor(description=description)
             if kind is None:
@@ -82,6 +107,8 @@ class PublisherNode(Node):
             if not self.has_parameter(name):
                 self.declare_parameter(name, default, descriptor)
         self.values = {name: self.get_parameter(name).value for name in _PARAMETERS}
+        for name, (_, kind, _) in _PARAMETERS.items():
+            _check_type(name, kind, self.values[name])
         rate = self.values['rate']
         if isinstance(rate, bool) or not isinstance(rate, (int, float)) or not rate > 0:
             raise UrdfgenpyError(f"parameter 'rate': {rate!r} is not a positive number of Hz")
@@ -138,8 +165,16 @@ class PublisherNode(Node):
         return robot, watched
 
     def _joint_states(self, robot: Robot) -> JointStates:
-        zeros = {name: parameter.value
-                 for name, parameter in self.get_parameters_by_prefix('zeros').items()}
+        # rclpy annotates the values as plain values; they are Parameter objects.
+        parameters: dict[str, Any] = dict(self.get_parameters_by_prefix('zeros'))
+        zeros = {}
+        for name, parameter in parameters.items():
+            value = parameter.value
+            if isinstance(value, bool) or not isinstance(value, (int, float)) \
+                    or not math.isfinite(value):
+                raise UrdfgenpyError(f"parameter 'zeros.{name}': {value!r} is not a finite "
+                                     'number (the joint position, in rad or m)')
+            zeros[name] = float(value)
         options = JointStateOptions(
             zeros=zeros, use_mimic_tags=self.values['use_mimic_tags'],
             use_smallest_joint_limits=self.values['use_smallest_joint_limits'],
@@ -153,10 +188,10 @@ class PublisherNode(Node):
         try:
             robot, watched = self._load()
             states = self._joint_states(robot)
-        except UrdfgenpyError as error:
+        except KNOWN_ERRORS as error:
             self.get_logger().error(f'reload failed, still publishing the last good model: '
-                                    f'{error}')
-            return False, str(error)
+                                    f'{one_line(error)}')
+            return False, one_line(error)
         previous = dict(self.states.free)
         for name, joint in states.free.items():
             if name in previous:
@@ -192,7 +227,7 @@ class PublisherNode(Node):
         return response
 
     def _modification_times(self) -> dict[str, float]:
-        stamps = {}
+        stamps: dict[str, float] = {}
         for file in self.watched:
             try:
                 stamps[file] = os.stat(file).st_mtime_ns
@@ -295,8 +330,8 @@ def main(args: list[str] | None = None) -> int:
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
-    except UrdfgenpyError as error:
-        rclpy.logging.get_logger('urdfgenpy_publisher').error(str(error))
+    except KNOWN_ERRORS as error:
+        rclpy.logging.get_logger('urdfgenpy_publisher').error(one_line(error))
         return 1
     except rclpy.exceptions.InvalidParameterTypeException as error:
         rclpy.logging.get_logger('urdfgenpy_publisher').error(

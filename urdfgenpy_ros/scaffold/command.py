@@ -21,8 +21,8 @@ from collections.abc import Sequence
 from pathlib import Path
 import sys
 
-from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.model_source import load_model
+from urdfgenpy_ros.report import EXIT_KNOWN_ERROR, KNOWN_ERRORS, one_line
 from urdfgenpy_ros.scaffold.render import create_package
 from urdfgenpy_ros.scaffold.spec import BUILD_TYPES, PackageSpec
 
@@ -58,9 +58,9 @@ def run(args: argparse.Namespace) -> int:
         written, warnings = create_package(
             spec, robot, force=args.force, source=args.source or 'the built-in example',
             search_paths=args.package_path)
-    except (UrdfgenpyError, ValueError) as error:
-        print(f'error: {error}', file=sys.stderr)
-        return 1
+    except KNOWN_ERRORS as error:
+        print(f'error: {one_line(error)}', file=sys.stderr)
+        return EXIT_KNOWN_ERROR
     for warning in warnings:
         print(f'warning: {warning}', file=sys.stderr)
     print(f'created {spec.root} ({len(written)} files, {spec.build_type}): '

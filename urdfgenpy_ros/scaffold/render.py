@@ -27,6 +27,7 @@ from urdfgenpy_ros.formats._xml import fragment, INDENT
 from urdfgenpy_ros.formats.urdf import UrdfWriter
 from urdfgenpy_ros.formats.xacro import write_xacro, XACRO_NS
 from urdfgenpy_ros.geometry import Mesh
+from urdfgenpy_ros.link import Shape
 from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.resources import PackageResolver, ResourceError
 from urdfgenpy_ros.robot import Robot
@@ -76,7 +77,8 @@ def _meshes(spec: PackageSpec, robot: Robot, search_paths: list[str],
     files: dict[str, bytes] = {}
     renamed: dict[str, str] = {}
     for link in robot.links:
-        for item in (*link.visuals, *link.collisions):
+        items: tuple[Shape, ...] = (*link.visuals, *link.collisions)
+        for item in items:
             mesh = item.geometry
             if not isinstance(mesh, Mesh):
                 continue
@@ -136,7 +138,8 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
     files = _meshes(spec, robot, list(search_paths or ()), warnings)
     urdf_files, includes, xacro_file = _urdf_files(spec, robot)
     files.update(urdf_files)
-    sensors = [sensor for owner in (*robot.links, *robot.joints) for sensor in owner.sensors]
+    sensors = [sensor for owner in robot.links for sensor in owner.sensors]
+    sensors += [sensor for joint in robot.joints for sensor in joint.sensors]
     context = {
         'name': spec.name, 'robot_name': robot.name, 'root_link': robot.root.name,
         'build_type': spec.build_type, 'maintainer_name': spec.maintainer_name,

@@ -45,8 +45,8 @@ def validate(robot: Robot, strict: bool = False, *, check_meshes: bool = True,
     :raises ValidationError: with ``strict=True``, the first finding of severity error.
     """
     findings = Findings(robot)
-    for warning in robot.read_warnings:
-        findings.items.append(ValidationError(warning.code, Severity.WARNING,
+    for warning in robot.read_warnings:  # the reader's, as serious as CODES says
+        findings.items.append(ValidationError(warning.code, CODES[warning.code][0],
                                               f'robot {robot.name!r}', warning.location,
                                               warning.message, 'see the message'))
     check_topology(robot, findings)

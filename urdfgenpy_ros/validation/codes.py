@@ -30,6 +30,10 @@ CODES: dict[str, tuple[Severity, str]] = {
     'P102': (W, 'malformed or misplaced XML declaration'),
     'P103': (W, 'NUL bytes after the document'),
     'P104': (W, 'default namespace on <robot>'),
+    'P105': (W, 'undeclared namespace prefix, kept as written'),
+    'P106': (E, '<inertial> without <inertia> (urdfdom drops it, MuJoCo refuses it)'),
+    'P107': (E, 'visual material with a malformed colour (urdfdom ignores it, MuJoCo refuses '
+                'it)'),
     # structure
     'S001': (E, 'no root link'),
     'S002': (E, 'more than one root link'),
@@ -58,8 +62,9 @@ CODES: dict[str, tuple[Severity, str]] = {
     'I203': (E, 'inertia violates the triangle inequality'),
     'I204': (W, 'inertia implausible for the link geometry'),
     'I205': (W, 'inertia on the root link'),
-    'I206': (W, 'link without inertial above moving links'),
+    'I206': (W, 'link without inertial (or massless) above moving links'),
     'I207': (W, 'moving link without inertial (fine for RViz, not for simulation)'),
+    'I208': (W, 'inertia an engine could not use alone, on a link merged into its parent'),
     # references and values
     'R301': (W, 'material not defined'),
     'R302': (E, 'collision mesh file not found'),
@@ -67,6 +72,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'R304': (E, 'non-positive size or zero scale'),
     'R305': (E, 'not a finite number'),
     'R306': (W, 'visual mesh file not found'),
+    'R307': (W, 'non-positive size or zero scale on a visual (it draws nothing)'),
     # conventions
     'C401': (W, "no link called 'base_link'"),
 }

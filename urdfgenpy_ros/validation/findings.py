@@ -56,16 +56,17 @@ class Findings:
         if location.column is not None:
             return location._replace(path=path)
         tag = tag or path.rsplit('/', 1)[-1].split('[', 1)[0]
-        line, column = self._find(location, tag)
+        line, column = self._find(location.file, location.line, tag)
         return SourceLocation(location.file, line, column, path)
 
-    def _find(self, location: SourceLocation, tag: str) -> tuple[int, int]:
+    def _find(self, file: str | None, line: int, tag: str) -> tuple[int, int]:
         """Return line and column of ``<tag`` at or just after the element's line."""
-        file, line = location.file, location.line
+        if not file:
+            return line, 1
         if file not in self._lines:
             try:
                 self._lines[file] = Path(file).read_text(
-                    encoding='utf-8', errors='replace').splitlines() if file else None
+                    encoding='utf-8', errors='replace').splitlines()
             except OSError:
                 self._lines[file] = None
         lines = self._lines[file] or []

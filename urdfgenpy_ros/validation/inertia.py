@@ -17,16 +17,20 @@
 from __future__ import annotations
 
 import math
+import sys
 
 from urdfgenpy_ros.geometry import Box, Cylinder, Sphere
 from urdfgenpy_ros.inertial import box_tensor, cylinder_tensor, Inertial, sphere_tensor
 from urdfgenpy_ros.joint import JointType
-from urdfgenpy_ros.link import Link
+from urdfgenpy_ros.link import Link, Shape
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.transforms import symmetric_eigenvalues
 from urdfgenpy_ros.validation.findings import Findings, link_path
 
-TOLERANCE = 1e-9  # relative, for positive-definiteness and the triangle inequality
+# MuJoCo's mjMINVAL: the mass and every principal moment of a moving body must exceed it
+# (its compiler refuses the model otherwise); Gazebo's tools test the same things.
+MINIMUM = 1e-15
+ROUNDING = 8 * sys.float_info.epsilon  # relative error of the computed principal moments
 IMPLAUSIBLE = 100.0  # a tensor this many times off the geometry's is a unit slip
 
 
@@ -44,7 +48,7 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
             count = below.get(link.name, 0)
             dropped = "Gazebo's URDF conversion drops it with its joint" + (
                 f' and the {count} link(s) below it' if count else '')
-            if moves:
+            if joint is not None and moves:
                 findings.add('I207', link, element, link_path(link.name),
                              f'moves ({joint.type} joint {joint.name!r}) but has no '
                              '<inertial>', f'RViz does not mind; {dropped}, and MuJoCo '
@@ -58,13 +62,22 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
             findings.add('I205', inertial, element, where, 'the root link has an inertia',
                          'KDL ignores it (and warns): add a massless root link, e.g. '
                          'base_footprint, joined by a fixed joint', 'inertial')
-        if not inertial.mass > 0.0:
-            if moves:
+        if not inertial.mass > MINIMUM:
+            if moves and joint is not None:
                 findings.add('I201', inertial, element, where + '/mass',
-                             f'mass is {inertial.mass:g} on a link that moves',
-                             'give it a positive mass (kg)', 'mass')
+                             f'mass is {inertial.mass:g} on a link that moves '
+                             f'({joint.type} joint {joint.name!r})',
+                             'give it a positive mass (kg): MuJoCo refuses the model, and '
+                             "Gazebo's URDF conversion drops the link", 'mass')
+            elif joint is not None and moving_below.get(link.name, False):
+                count = below.get(link.name, 0)
+                findings.add('I206', inertial, element, where + '/mass',
+                             f'mass is {inertial.mass:g} above moving links',
+                             "Gazebo's URDF conversion drops a massless link with its joint "
+                             f'and the {count} link(s) below it: give it a mass and inertia',
+                             'mass')
             continue
-        if _check_tensor(inertial, element, where, findings):
+        if _check_tensor(inertial, element, where, findings, moves):
             _check_plausible(link, inertial, element, where, findings)
 
 
@@ -84,34 +97,48 @@ def _subtrees(robot: Robot) -> tuple[dict[str, int], dict[str, bool]]:
     return count, moving
 
 
-def _check_tensor(inertial: Inertial, element: str, where: str,
-                  findings: Findings) -> bool:
+def _check_tensor(inertial: Inertial, element: str, where: str, findings: Findings,
+                  moves: bool) -> bool:
+    """
+    Check the principal moments as the engines do; return whether the tensor is usable.
+
+    A link that moves needs a tensor MuJoCo accepts (I202, I203). A link on a fixed joint,
+    or the root, is merged into its parent by Gazebo's converter and MuJoCo, so there the
+    same defects are warnings (I208): point masses and frames often look like that.
+    """
     values = (inertial.ixx, inertial.ixy, inertial.ixz, inertial.iyy, inertial.iyz,
               inertial.izz)
     if not all(math.isfinite(value) for value in values):
         return False  # reported as R305
-    moments = symmetric_eigenvalues(inertial.tensor)
-    scale = max(abs(moment) for moment in moments) or 1.0
-    if moments[0] <= TOLERANCE * scale:
-        findings.add('I202', inertial, element, where + '/inertia',
-                     'principal moments ' + ', '.join(f'{m:.4g}' for m in moments)
-                     + ' are not all positive',
-                     'every body has positive moments: compute the tensor from the '
-                     'geometry (Inertial.from_geometry) or from CAD', 'inertia')
-        return False
-    small, middle, large = moments
-    if small + middle < large * (1.0 - TOLERANCE):
-        findings.add('I203', inertial, element, where + '/inertia',
-                     f'principal moments {small:.4g} + {middle:.4g} < {large:.4g}',
+    small, middle, large = moments = symmetric_eigenvalues(inertial.tensor)
+    listed = ', '.join(f'{m:.4g}' for m in moments)
+    if small <= MINIMUM:
+        problem = f'principal moments {listed} are not all above {MINIMUM:g}'
+    elif small + middle < large * (1.0 - ROUNDING):
+        problem = f'principal moments {small:.4g} + {middle:.4g} < {large:.4g}'
+    else:
+        return True
+    if not moves:
+        findings.add('I208', inertial, element, where + '/inertia', problem,
+                     'Gazebo and MuJoCo merge this link into its parent, so they accept '
+                     'it; compute the tensor from the geometry (Inertial.from_geometry) if '
+                     'the link will ever move', 'inertia')
+    elif small <= MINIMUM:
+        findings.add('I202', inertial, element, where + '/inertia', problem,
+                     'every body has positive moments (MuJoCo refuses the model): compute '
+                     'the tensor from the geometry (Inertial.from_geometry) or from CAD',
+                     'inertia')
+    else:
+        findings.add('I203', inertial, element, where + '/inertia', problem,
                      'no rigid body has that: check the tensor (MuJoCo refuses it)',
                      'inertia')
-        return False
-    return True
+    return False
 
 
 def _check_plausible(link: Link, inertial: Inertial, element: str, where: str,
                      findings: Findings) -> None:
-    shape = next((item.geometry for item in (*link.collisions, *link.visuals)
+    items: tuple[Shape, ...] = (*link.collisions, *link.visuals)
+    shape = next((item.geometry for item in items
                   if isinstance(item.geometry, (Box, Cylinder, Sphere))), None)
     if shape is None:
         return
@@ -123,6 +150,8 @@ def _check_plausible(link: Link, inertial: Inertial, element: str, where: str,
         expected = sphere_tensor(inertial.mass, shape.radius)
     trace = inertial.ixx + inertial.iyy + inertial.izz
     expected_trace = expected[0] + expected[3] + expected[5]
+    if not expected_trace > 0.0:
+        return  # a zero-size shape (R304) has no tensor to compare with
     ratio = trace / expected_trace
     if ratio > IMPLAUSIBLE or ratio < 1.0 / IMPLAUSIBLE:
         findings.add('I204', inertial, element, where + '/inertia',

@@ -22,6 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from urdfgenpy_ros.geometry import Box, Cylinder, Mesh, Sphere
+from urdfgenpy_ros.link import Shape
 from urdfgenpy_ros.resources import PackageResolver, ResourceError
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
@@ -31,11 +32,14 @@ def check_references(robot: Robot, findings: Findings, resolver: PackageResolver
                      base: Path | None) -> None:
     """Check materials, meshes (when a resolver is given), sizes and non-finite numbers."""
     for link in robot.links:
-        for kind, shapes in (('visual', link.visuals), ('collision', link.collisions)):
+        groups: tuple[tuple[str, list[Shape]], ...] = (
+            ('visual', list(link.visuals)), ('collision', list(link.collisions)))
+        for kind, shapes in groups:
             for number, shape in enumerate(shapes, start=1):
                 where = f'{link_path(link.name)}/{kind}[{number}]'
                 element = f'link {link.name!r}'
-                _check_geometry(shape.geometry, element, where, findings)
+                _check_geometry(shape.geometry, element, where, findings,
+                                'R304' if kind == 'collision' else 'R307')
                 if isinstance(shape.geometry, Mesh) and resolver is not None:
                     missing = 'R302' if kind == 'collision' else 'R306'
                     _check_mesh(shape.geometry, element, where, findings, resolver, base,
@@ -50,17 +54,21 @@ def check_references(robot: Robot, findings: Findings, resolver: PackageResolver
     _check_finite(robot, findings)
 
 
-def _check_geometry(geometry: Any, element: str, where: str, findings: Findings) -> None:
+def _check_geometry(geometry: Any, element: str, where: str, findings: Findings,
+                    code: str) -> None:
+    """Report a zero or negative size: an error on a collision, a warning on a visual."""
     sizes = {Box: ('length', 'width', 'height'), Cylinder: ('radius', 'length'),
              Sphere: ('radius',)}.get(type(geometry), ())
     for name in sizes:
         value = getattr(geometry, name)
         if math.isfinite(value) and value <= 0.0:
-            findings.add('R304', geometry, element, f'{where}/geometry',
+            findings.add(code, geometry, element, f'{where}/geometry',
                          f'{type(geometry).__name__.lower()} {name} is {value:g}',
-                         'sizes are positive lengths in metres')
+                         'sizes are positive lengths in metres' + (
+                             '' if code == 'R304' else ' (a zero-size visual draws nothing; '
+                             'remove it if it is a placeholder)'))
     if isinstance(geometry, Mesh) and geometry.scale is not None and 0.0 in geometry.scale:
-        findings.add('R304', geometry, element, f'{where}/geometry',
+        findings.add(code, geometry, element, f'{where}/geometry',
                      f'mesh scale {geometry.scale} has a zero',
                      'a zero scale flattens the mesh: use 1 (or 0.001 for millimetres)',
                      'mesh')

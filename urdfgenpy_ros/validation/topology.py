@@ -46,12 +46,16 @@ def check_topology(robot: Robot, findings: Findings) -> None:
                          f'is the child of {len(joints)} joints: '
                          + ', '.join(repr(name) for name in joints),
                          'URDF is a tree: keep one joint, or add a link per joint')
-    _check_loops(robot, findings)
+    looped = _check_loops(robot, findings)
     roots = robot.roots
-    if not roots and robot.links:
+    if not robot.links:
+        findings.add('S001', robot, f'robot {robot.name!r}', '/robot', 'has no link',
+                     'a robot needs at least one <link> (e.g. <link name="base_link"/>)')
+    elif not roots and looped:
         findings.add('S001', robot, f'robot {robot.name!r}', '/robot',
                      "every link is some joint's child, so there is no root",
                      "break the loop: one link must be no joint's child")
+    # Without a loop, a missing root is a joint's missing parent: S004 says so already.
     elif len(roots) > 1:
         names = ', '.join(repr(link.name) for link in roots)
         findings.add('S002', roots[1], f'robot {robot.name!r}', link_path(roots[1].name),
@@ -60,7 +64,9 @@ def check_topology(robot: Robot, findings: Findings) -> None:
     _check_names(robot, findings)
 
 
-def _check_loops(robot: Robot, findings: Findings) -> None:
+def _check_loops(robot: Robot, findings: Findings) -> bool:
+    """Report every loop of joints; return whether there was one."""
+    looped = False
     parent_of = {joint.child: joint for joint in robot.joints if joint.parent != joint.child}
     done: set[str] = set()  # links whose way up is known to end (or was reported)
     for start in parent_of:
@@ -79,6 +85,8 @@ def _check_loops(robot: Robot, findings: Findings) -> None:
                          f'joints form a loop: {names}',
                          'URDF is a tree: remove one joint of the loop (closed chains need '
                          'a simulator-specific constraint)')
+            looped = True
+    return looped
 
 
 def _check_names(robot: Robot, findings: Findings) -> None:

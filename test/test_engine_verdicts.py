@@ -1,0 +1,115 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+validate() judges small robots the way the engines do, one problem per fixture.
+
+Each fixture is something real robots contain; the engines' verdicts are taken from the
+engines themselves in the test (check_urdf, MuJoCo), never written down.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from helpers import check_urdf_verdict, FIXTURES, require_module
+import pytest
+
+from urdfgenpy_ros import Robot
+
+PROBLEMS = FIXTURES / 'problems'
+
+
+def mujoco_accepts(path: Path) -> bool:
+    """Return whether MuJoCo compiles the URDF (meshes are not involved here)."""
+    mujoco = require_module('mujoco')
+    try:
+        mujoco.MjModel.from_xml_path(str(path))
+    except ValueError:
+        return False
+    return True
+
+
+# fixture: the findings validate() gives, as (code, severity)
+EXPECTED = {
+    # A point mass on a fixed joint: both engines merge it into its parent.
+    'marker_on_fixed_joint.urdf': {('I208', 'warning')},
+    # A massless link between moving ones: MuJoCo merges it, Gazebo's converter drops it
+    # with everything below it (the finger).
+    'massless_adapter.urdf': {('I206', 'warning')},
+    # A joint's missing parent: the cause only, not an echo about loops or roots.
+    'missing_parent.urdf': {('S004', 'error'), ('C401', 'warning')},
+    'zero_sphere_with_inertial.urdf': {('R304', 'error')},
+    'tiny_moment.urdf': {('I202', 'error')},
+    'barely_impossible_disc.urdf': {('I203', 'error')},
+    'no_links.urdf': {('S001', 'error')},
+    # urdfdom drops the inertial; MuJoCo refuses the model (read, kept, reported).
+    'inertial_without_inertia.urdf': {('P106', 'error'), ('I207', 'warning')},
+    # urdfdom ignores a visual's own material whose colour is not 4 numbers; MuJoCo
+    # refuses the model.
+    'five_number_colour.urdf': {('P107', 'error')},
+}
+
+
+@pytest.mark.parametrize('name', sorted(EXPECTED))
+def test_findings_match_what_the_engines_do(name: str) -> None:
+    path = PROBLEMS / name
+    findings = {(finding.code, str(finding.severity))
+                for finding in Robot.from_urdf(path).validate()}
+    assert findings == EXPECTED[name]
+    errors = {code for code, severity in findings if severity == 'error'}
+    if check_urdf_verdict(path) and mujoco_accepts(path):
+        assert not errors, 'both consumers accept it: an error would be a false alarm'
+    if not mujoco_accepts(path) and name != 'no_links.urdf':
+        assert errors, 'MuJoCo refuses it: validate() must say why'
+
+
+@pytest.mark.parametrize('name, tag', [('inertial_without_inertia.urdf', 'inertial'),
+                                       ('five_number_colour.urdf', 'material')])
+def test_what_urdfdom_ignores_is_kept_until_replaced(name: str, tag: str) -> None:
+    from urdfgenpy_ros import Box, Inertial, Material, Visual
+    path = PROBLEMS / name
+    robot = Robot.from_urdf(path)
+    assert robot.to_urdf() == path.read_text()
+    link = robot.links[-1]
+    link.add_visual(Visual(Box(0.1, 0.1, 0.1)))  # an unrelated edit keeps it
+    assert robot.to_urdf().count(f'<{tag}') == path.read_text().count(f'<{tag}')
+    if tag == 'inertial':  # a value given takes its place, once
+        link.set_inertial(Inertial.from_sphere(1.0, 0.1))
+    else:
+        link.visuals[0].material = Material('grey', rgba=(0.5, 0.5, 0.5, 1.0))
+    written = robot.to_urdf()
+    assert written.count(f'<{tag}') == path.read_text().count(f'<{tag}')
+    again = Robot.from_urdf_string(written)
+    assert not again.read_warnings
+    if tag == 'inertial':
+        assert again.links[-1].inertial == link.inertial
+    else:
+        assert again.links[-1].visuals[0].material.rgba == (0.5, 0.5, 0.5, 1.0)
+
+
+def test_a_robot_without_links_fails_check(tmp_path: Path) -> None:
+    from click.testing import CliRunner
+    from urdfgenpy_ros.cli import main
+    result = CliRunner().invoke(main, ['check', str(PROBLEMS / 'no_links.urdf')])
+    assert result.exit_code == 1 and ' error S001 ' in result.stdout
+
+
+@pytest.mark.parametrize('lump_fixed', [False, True])
+def test_sdf_export_refuses_a_dangling_joint_with_the_finding(lump_fixed: bool) -> None:
+    from urdfgenpy_ros import ModelError
+    robot = Robot.from_urdf(PROBLEMS / 'missing_parent.urdf')
+    with pytest.raises(ModelError, match="joint 'shoulder': parent link 'torso' does not "
+                                         'exist .*S004'):
+        robot.to_sdf(lump_fixed=lump_fixed)

@@ -1,0 +1,45 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""The package's annotations hold, and README's examples type-check against them."""
+
+from __future__ import annotations
+
+from pathlib import Path
+import subprocess
+import sys
+
+from helpers import REPO
+import pytest
+
+from test_readme import BLOCKS
+
+
+def _mypy(*arguments: str) -> subprocess.CompletedProcess[str]:
+    pytest.importorskip('mypy')
+    return subprocess.run([sys.executable, '-m', 'mypy', '--no-error-summary', *arguments],
+                          cwd=REPO, capture_output=True, text=True, timeout=600)
+
+
+def test_package_type_checks() -> None:
+    result = _mypy('--config-file', 'setup.cfg')
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+def test_readme_examples_type_check(tmp_path: Path) -> None:
+    # One module, in order, as a user pasting them into one script would have it.
+    script = tmp_path / 'readme_examples.py'
+    script.write_text('\n\n'.join(BLOCKS))
+    result = _mypy('--config-file', 'setup.cfg', str(script))
+    assert result.returncode == 0, result.stdout + result.stderr
