@@ -25,7 +25,7 @@ sample looping until it lasts ``--sample`` seconds; the figure reported is the r
 bare lxml floor on the same file (parse, tostring, or both), summarised over files as
 median and 90th percentile.
 
-    python bench/bench_io.py [--corpus ../shared/corpus] [--repeat 5] [--per-file]
+    python bench/bench_io.py [--corpus DIR] [--repeat 5] [--per-file]
 """
 
 from __future__ import annotations
@@ -135,14 +135,15 @@ def _p90(values: list[float]) -> float:
 def main() -> None:
     """Print the per-file ratio table (and per-file figures on request)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
-    parser.add_argument('--corpus', type=Path,
-                        default=Path(__file__).resolve().parents[2] / 'shared' / 'corpus')
+    parser.add_argument('--corpus', type=Path, default=os.environ.get('URDFGENPY_CORPUS'),
+                        help='a folder of robots (default: $URDFGENPY_CORPUS; none: only '
+                             'the installed description packages)')
     parser.add_argument('--repeat', type=int, default=5)
     parser.add_argument('--sample', type=float, default=0.02)
     parser.add_argument('--per-file', action='store_true')
     args = parser.parse_args()
     libraries = _libraries()
-    files = corpus_files(args.corpus) + package_files()
+    files = (corpus_files(args.corpus) if args.corpus else []) + package_files()
     data = {path: re.sub(rb'^\s*<\?xml[^>]*\?>', b'', path.read_bytes()) for path in files}
     usable = []
     for path in files:

@@ -18,16 +18,13 @@
 from __future__ import annotations
 
 from collections.abc import Callable
-import os
-from pathlib import Path
 import shutil
 import socket
 import tempfile
 import time
 from typing import Any
 
-from helpers import require_module
-import pytest
+from helpers import require_module, require_tool
 
 try:
     from selenium.common.exceptions import StaleElementReferenceException
@@ -46,17 +43,6 @@ def free_port() -> int:
         return probe.getsockname()[1]
 
 
-def _need(name: str) -> str:
-    path = shutil.which(name) or next((p for p in (f'/usr/bin/{name}',) if Path(p).exists()),
-                                      None)
-    if path is None:
-        message = f'{name} not installed (apt install chromium chromium-driver)'
-        if os.environ.get('URDFGENPY_REQUIRE_TOOLS'):
-            pytest.fail(message)
-        pytest.skip(message)
-    return path
-
-
 class Browser:
     """One headless Chromium with a fresh profile; ``close`` ends it."""
 
@@ -64,12 +50,13 @@ class Browser:
         webdriver = require_module('selenium.webdriver')
         from selenium.webdriver.chrome.service import Service
         options = webdriver.ChromeOptions()
-        options.binary_location = _need('chromium')
+        options.binary_location = require_tool('chromium', 'chromium chromium-driver')
         self.profile = tempfile.mkdtemp(prefix='urdfgenpy-chromium-')
         for flag in (*FLAGS, f'--user-data-dir={self.profile}'):
             options.add_argument(flag)
         self.driver = webdriver.Chrome(options=options,
-                                       service=Service(_need('chromedriver')))
+                                       service=Service(require_tool(
+                                           'chromedriver', 'chromium chromium-driver')))
 
     def load(self, url: str) -> None:
         """Load ``url`` and wait until the viewer's controls are there."""

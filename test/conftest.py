@@ -16,6 +16,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from pathlib import Path
 import shutil
 import subprocess
@@ -64,6 +65,16 @@ def colcon_workspace(tmp_path_factory: pytest.TempPathFactory) -> Path:
                             cwd=root, capture_output=True, text=True, timeout=600)
     assert result.returncode == 0, result.stdout + result.stderr
     return root
+
+
+@pytest.fixture
+def browser() -> Iterator:
+    """Return a headless Chromium; quit it afterwards."""
+    pytest.importorskip('selenium')
+    from browser import Browser
+    instance = Browser()
+    yield instance
+    instance.close()
 
 
 @pytest.fixture

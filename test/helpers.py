@@ -61,11 +61,12 @@ def corpus_file(relative: str) -> Path:
     return path
 
 
-def require_tool(name: str) -> str:
+def require_tool(name: str, package: str = 'liburdfdom-tools') -> str:
     """Return the path of a command; skip locally, fail in CI when it is missing."""
-    path = shutil.which(name)
+    path = shutil.which(name) or (f'/usr/bin/{name}' if Path(f'/usr/bin/{name}').exists()
+                                  else None)
     if path is None:
-        message = f'{name} not installed (apt install liburdfdom-tools)'
+        message = f'{name} not installed (apt install {package})'
         if os.environ.get('URDFGENPY_REQUIRE_TOOLS'):
             pytest.fail(message)
         pytest.skip(message)

@@ -90,20 +90,11 @@ CORPUS_FILES = {'r2d2': 'urdf_tutorial/urdf/07-physics.urdf',
                 'minitaur': 'pybullet_data/quadruped/minitaur.urdf',
                 'test_robot': 'urdf/urdf/test/test_robot.urdf',
                 'cartpole_pybullet': 'pybullet_data/cartpole.urdf'}
-# Our SDF keeps a root link named 'world', a name SDFormat reserves (libsdformat: "The
-# supplied link name [world] is reserved"); its own conversion fixes the model to the world.
-WORLD_ROOT = 'SDF export writes the reserved link name world (libsdformat refuses the file)'
-# iCub (and gym-ignition's panda) ask, per fixed joint, <gazebo reference="...">
-# <preserveFixedJoint>true: SDFormat keeps those joints, our lump_fixed=True merges them anyway.
-PRESERVED = 'to_sdf(lump_fixed=True) ignores <preserveFixedJoint>, which SDFormat honours'
 
 
 def _registry(name: str) -> Robot:
-    """Return a registry robot; a root link named 'world' renamed (see WORLD_ROOT)."""
-    robot = _without_mimic(Robot.from_urdf(registry_robot(REGISTRY[name])))
-    if robot.root.name == 'world':
-        robot.rename_link('world', 'world_link')
-    return robot
+    """Return a registry robot (without mimic tags)."""
+    return _without_mimic(Robot.from_urdf(registry_robot(REGISTRY[name])))
 
 
 def _without_mimic(robot: Robot) -> Robot:
@@ -167,7 +158,8 @@ def test_sdf_loads_in_sdformat_and_link_poses_match_the_urdf(
     yourdfpy = require_module('yourdfpy')
     model = yourdfpy.URDF.load(str(urdf), load_meshes=False, build_scene_graph=True)
     root = robot.root.name
-    assert set(poses) == {link.name for link in robot.links}
+    # URDF's world link is the world frame, not a link, in SDF (as in SDFormat's conversion)
+    assert set(poses) == {link.name for link in robot.links} - {'world'}
     for link, pose in poses.items():
         assert _same_pose(pose, _yourdfpy_pose(model, link, root)), link
 
@@ -175,7 +167,7 @@ def test_sdf_loads_in_sdformat_and_link_poses_match_the_urdf(
 # (libsdformat's own conversion refuses the DH skeletons: their root link has no mass.)
 @pytest.mark.parametrize('name', [
     'ptu', 'upkie', 'cookie', 'so101', 'kinova_robotiq',
-    pytest.param('icub', marks=pytest.mark.xfail(reason=PRESERVED, strict=True)),
+    'icub', 'panda',
     *corpus_cases(['r2d2', 'minitaur', 'pr2_gripper'])])
 def test_lumped_fixed_joints_match_sdformats_own_conversion(
         name: str, check_sdf, tmp_path: Path) -> None:
@@ -268,12 +260,11 @@ def test_exported_urdfs_load_in_pybullet_and_mujoco(name: str, tmp_path: Path) -
     assert mujoco.MjModel.from_xml_path(str(path)).njnt == expected
 
 
-@pytest.mark.xfail(reason=WORLD_ROOT, strict=True)
 def test_a_root_link_named_world_gives_sdf_sdformat_loads(check_sdf, tmp_path: Path) -> None:
     robot = _without_mimic(Robot.from_urdf(registry_robot('panda.urdf')))
     assert robot.root.name == 'world'
     sdf, urdf = tmp_path / 'panda.sdf', tmp_path / 'panda.urdf'
-    robot.save(sdf)
+    robot.to_sdf(sdf, lump_fixed=True)
     robot.save(urdf)
     code, ours, _, _, errors = check_sdf(sdf)
     assert code == 0, errors

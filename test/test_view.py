@@ -17,7 +17,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 from pathlib import Path
 import sys
 import time
@@ -40,16 +39,6 @@ def _viewer(path: Path, search_paths: tuple = ()):
                          search_paths=search_paths, watched=lambda robot: [str(path)])
     viewer.watch(0.2)
     return viewer
-
-
-@pytest.fixture
-def browser() -> Iterator:
-    """Return a headless Chromium; quit it afterwards."""
-    pytest.importorskip('selenium')
-    from browser import Browser
-    instance = Browser()
-    yield instance
-    instance.close()
 
 
 def _toggle(browser, label: str) -> None:

@@ -17,7 +17,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 import re
 import signal
 import threading
@@ -26,16 +25,6 @@ from helpers import require_module
 import pytest
 
 from ros_helpers import Graph
-
-
-@pytest.fixture
-def browser() -> Iterator:
-    """Return a headless Chromium; quit it afterwards."""
-    pytest.importorskip('selenium')
-    from browser import Browser
-    instance = Browser()
-    yield instance
-    instance.close()
 
 
 def _lines(process) -> list[str]:

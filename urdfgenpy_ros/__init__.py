@@ -20,7 +20,7 @@ Build, read, check and publish robot descriptions for ROS 2.
 """
 
 from urdfgenpy_ros.errors import (
-    ParseError, Severity, SourceLocation, UrdfgenpyError, ValidationError)
+    ModelError, ParseError, Severity, SourceLocation, UrdfgenpyError, ValidationError)
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Mesh, Origin, Sphere
 from urdfgenpy_ros.inertial import Inertial
@@ -36,6 +36,7 @@ __version__ = '0.1.0'
 __all__ = [
     'Box', 'Collision', 'Cylinder', 'Extension', 'Geometry', 'Inertial', 'Joint',
     'JointCalibration', 'JointDynamics', 'JointLimit', 'JointMimic', 'JointType', 'Link',
-    'Material', 'Mesh', 'Origin', 'ParseError', 'Robot', 'SafetyController', 'SourceLocation',
-    'Severity', 'Sphere', 'UrdfgenpyError', 'ValidationError', 'Visual', '__version__',
+    'Material', 'Mesh', 'ModelError', 'Origin', 'ParseError', 'Robot', 'SafetyController',
+    'Severity', 'SourceLocation', 'Sphere', 'UrdfgenpyError', 'ValidationError', 'Visual',
+    '__version__',
 ]

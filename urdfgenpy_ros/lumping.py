@@ -27,11 +27,14 @@ import copy
 
 from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.link import Shape
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.transforms import (
     from_xyz_rpy, IDENTITY4, Matrix4, multiply, to_xyz_rpy)
+
+WORLD = 'world'
+"""The link name URDF uses for the world frame; SDF reserves it."""
 
 
 def _compose(outer: Origin, inner: Origin) -> Origin:
@@ -69,11 +72,28 @@ def combine(parts: list[tuple[Inertial, Matrix4]]) -> Inertial | None:
                     total[2][2], origin=Origin(tuple(centre)))
 
 
+def lumps(joint: Joint) -> bool:
+    """
+    Return whether SDFormat's URDF conversion merges ``joint``'s child into its parent.
+
+    It keeps a fixed joint to the ``world`` frame, and one its ``<gazebo reference>`` block
+    asks to keep (``preserveFixedJoint`` or ``disableFixedJointLumping`` set to true).
+    """
+    if joint.type is not JointType.FIXED or joint.parent == WORLD:
+        return False
+    for block in joint.extensions:
+        for tag in ('preserveFixedJoint', 'disableFixedJointLumping'):
+            value = block.element.findtext(tag)
+            if value is not None and value.strip().lower() in ('true', '1'):
+                return False
+    return True
+
+
 def lump_fixed_joints(robot: Robot) -> Robot:
-    """Return a copy of ``robot`` with every fixed joint's child merged into its parent."""
+    """Return a copy of ``robot`` with fixed joints' children merged into their parents."""
     merged = copy.deepcopy(robot)
     while True:
-        joint = next((j for j in merged.joints if j.type is JointType.FIXED), None)
+        joint = next((j for j in merged.joints if lumps(j)), None)
         if joint is None:
             return merged
         parent, child = merged.get_link(joint.parent), merged.get_link(joint.child)

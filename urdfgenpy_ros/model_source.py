@@ -21,7 +21,6 @@ import importlib
 from pathlib import Path
 
 from urdfgenpy_ros.errors import UrdfgenpyError
-from urdfgenpy_ros.examples import pan_tilt_unit
 from urdfgenpy_ros.formats import DH_SUFFIXES, load
 from urdfgenpy_ros.robot import Robot
 
@@ -52,6 +51,7 @@ def load_model(model: str, xacro_args: Sequence[str] = (),
     :raises UrdfgenpyError: with one line that says what is wrong and how to fix it.
     """
     if not model:
+        from urdfgenpy_ros.examples import pan_tilt_unit
         return pan_tilt_unit(), []
     path = Path(model).expanduser()
     if path.name.lower().endswith(_FILES):

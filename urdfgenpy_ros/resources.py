@@ -46,9 +46,12 @@ class PackageResolver:
     """
     Find a ROS package's directory by name.
 
-    Looked up in order: ``packages`` (name to directory), ``search_paths`` (directories
-    holding packages, found by folder name or package.xml up to three levels down), the
-    ament index of a sourced ROS 2 install, then ``ROS_PACKAGE_PATH``.
+    A package is a folder whose ``package.xml`` names it. Looked up in order: ``packages``
+    (name to directory), ``search_paths`` (directories holding packages, up to three levels
+    down), the ament index of a sourced ROS 2 install, then ``ROS_PACKAGE_PATH``. A folder
+    that only bears the name (a Python module folder of the same name, say) is passed by;
+    only when no package of that name exists anywhere is such a folder in the search
+    paths used, so that trees copied without their package.xml still resolve.
     """
 
     def __init__(self, search_paths: Iterable[str | PathLike[str]] = (),
@@ -70,6 +73,29 @@ class PackageResolver:
             found = _search(root, name, depth=3)
             if found is not None:
                 return found
+        found = self._installed(name)
+        if found is not None:
+            return found
+        for root in self._ros_package_path():
+            found = _search(root, name, depth=3)
+            if found is not None:
+                return found
+        for root in (*self.search_paths, *self._ros_package_path()):
+            found = _search(root, name, depth=3, by_folder_name=True)
+            if found is not None:
+                return found
+        return None
+
+    @staticmethod
+    def _ros_package_path() -> list[Path]:
+        return [Path(entry) for entry in os.environ.get('ROS_PACKAGE_PATH', '').split(
+            os.pathsep) if entry]
+
+    @staticmethod
+    def _installed(name: str) -> Path | None:
+        """Return the share folder of ``name`` in the ament index, or None."""
+        if not os.environ.get('AMENT_PREFIX_PATH'):
+            return None
         try:
             from ament_index_python.packages import (
                 get_package_share_directory, PackageNotFoundError)
@@ -80,11 +106,6 @@ class PackageResolver:
                 return Path(get_package_share_directory(name))
             except (PackageNotFoundError, ValueError, LookupError, OSError):
                 pass
-        for entry in os.environ.get('ROS_PACKAGE_PATH', '').split(os.pathsep):
-            if entry:
-                found = _search(Path(entry), name, depth=3)
-                if found is not None:
-                    return found
         return None
 
     def resolve(self, uri: str, relative_to: str | PathLike[str] | None = None) -> Path:
@@ -101,7 +122,12 @@ class PackageResolver:
                                     'its workspace, or pass its folder in search_paths)')
             path = directory / unquote(parsed.path).lstrip('/')
         elif parsed.scheme == 'file':
-            path = Path(unquote(parsed.path))
+            relative = relative_file_uri(uri)
+            if relative is None:
+                path = Path(unquote(parsed.path))
+            else:  # file://meshes/x.stl: a relative path, against the file's folder
+                path = Path(relative_to) / relative if relative_to is not None \
+                    else Path(relative)
         elif parsed.scheme in ('', ) or len(parsed.scheme) == 1:  # a path (or C:\\)
             path = Path(uri)
             if not path.is_absolute() and relative_to is not None:
@@ -114,23 +140,52 @@ class PackageResolver:
         return path
 
 
-def _search(root: Path, name: str, depth: int) -> Path | None:
+def relative_file_uri(uri: str) -> str | None:
+    """
+    Return the relative path a ``file:`` URI wrongly holds (``file://meshes/x.stl``), or None.
+
+    Exporters often write a path relative to the description as a file URI; read strictly,
+    ``meshes`` would be a host name.
+    """
+    parsed = urlparse(uri)
+    if parsed.scheme != 'file':
+        return None
+    if parsed.netloc and parsed.netloc != 'localhost':
+        return unquote(parsed.netloc + parsed.path)
+    if not parsed.netloc and parsed.path and not parsed.path.startswith('/'):
+        return unquote(parsed.path)  # file:meshes/x.stl
+    return None
+
+
+def uri_warning(uri: str) -> str | None:
+    """Return a one-line warning when ``uri`` resolves only by guessing, else None."""
+    relative = relative_file_uri(uri)
+    if relative is None:
+        return None
+    return (f'{uri!r} is a relative path written as a file URI, read against the folder of '
+            f'the file; it is not portable: write {relative!r} or '
+            f'package://<package>/{relative}')
+
+
+def _search(root: Path, name: str, depth: int, by_folder_name: bool = False) -> Path | None:
+    """Find the package ``name`` under ``root`` (or, ``by_folder_name``, a folder so named)."""
     if not root.is_dir():
         return None
-    if root.name == name or _package_name(root) == name:
+    own = _package_name(root)
+    if own == name or (by_folder_name and root.name == name):
         return root
-    if depth == 0:
+    if depth == 0 or own is not None:  # packages do not nest
         return None
     try:
         children = sorted(child for child in root.iterdir() if child.is_dir()
                           and not child.name.startswith('.'))
     except OSError:
         return None
-    for child in children:
-        if child.name == name:
+    for child in children:  # the likely place first: a folder bearing the name
+        if child.name == name and (by_folder_name or _package_name(child) == name):
             return child
     for child in children:
-        found = _search(child, name, depth - 1)
+        found = _search(child, name, depth - 1, by_folder_name)
         if found is not None:
             return found
     return None

@@ -311,6 +311,13 @@ class Robot:
             if joint.child == old:
                 joint.child = new
         self._rename_references(old, new, link.extensions)
+        # urdfdom's own <sensor> elements name the link they are on: <parent link="..."/>.
+        kept = self.extras.order if self.extras is not None and self.extras.order else []
+        for node in kept:
+            if getattr(node, 'tag', None) == 'sensor':
+                for parent in node.iter('parent'):
+                    if parent.get('link') == old:
+                        parent.set('link', new)
         return link
 
     def rename_joint(self, old: str, new: str) -> Joint:
@@ -379,7 +386,9 @@ class Robot:
 
         :raises ParseError: when the file is not a readable URDF (one line, located).
         """
+        from urdfgenpy_ros.formats.detect import refuse_xacro
         from urdfgenpy_ros.formats.urdf_read import read_urdf
+        refuse_xacro(path)  # one line naming Robot.from_xacro (X002)
         return read_urdf(path)
 
     @classmethod

@@ -69,8 +69,8 @@ def tree_string(robot: Robot, colour: bool = False) -> str:
         for number, joint in enumerate(kids):
             last = number == len(kids) - 1
             branch = paint('line', '└── ' if last else '├── ')
-            child = robot._links.get(joint.child)
-            shape = _shape(child, paint) if child is not None else ' (missing link)'
+            shape = (_shape(robot.get_link(joint.child), paint) if robot.has_link(joint.child)
+                     else ' (missing link)')
             lines.append(f'{prefix}{branch}{paint("joint", joint.name)} '
                          f'{paint(joint.type.value, "[" + joint.type.value + "]")} → '
                          f'{paint("link", joint.child)}{shape}')

@@ -24,6 +24,8 @@ from typing import TYPE_CHECKING
 from urdfgenpy_ros.errors import ModelError
 
 if TYPE_CHECKING:
+    from urdfgenpy_ros.errors import ReadWarning
+    from urdfgenpy_ros.formats.detect import XacroEvidence
     from urdfgenpy_ros.robot import Robot
 
 WRITERS = {'.urdf': 'urdf', '.xacro': 'xacro', '.sdf': 'sdf'}
@@ -47,7 +49,9 @@ def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
     Read a robot from ``path`` in the format its suffix names.
 
     ``mappings`` are Xacro arguments; ``search_paths`` folders holding ROS packages. A DH
-    table (.yaml, .yml, .csv) gives its skeleton.
+    table (.yaml, .yml, .csv) gives its skeleton. A ``.urdf`` file that is Xacro
+    (TurtleBot3's are) is expanded with xacro, as ROS launch files do, and the robot gets a
+    read warning (X101) saying so.
     """
     from urdfgenpy_ros.robot import Robot
     if Path(path).suffix.lower() in DH_SUFFIXES:
@@ -57,8 +61,23 @@ def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
     if kind == 'sdf':
         raise ModelError(f'{path}: reading SDF is not supported (convert from URDF or Xacro)')
     if kind == 'urdf':
-        return Robot.from_urdf(path)
+        from urdfgenpy_ros.formats.detect import xacro_evidence
+        evidence = xacro_evidence(path)
+        if evidence is None:
+            return Robot.from_urdf(path)
+        robot = Robot.from_xacro(path, dict(mappings or {}), search_paths=list(search_paths))
+        robot.read_warnings.insert(0, _read_as_xacro(evidence, mappings))
+        return robot
     return Robot.from_xacro(path, dict(mappings or {}), search_paths=list(search_paths))
+
+
+def _read_as_xacro(evidence: XacroEvidence, mappings: Mapping[str, str] | None) -> ReadWarning:
+    from urdfgenpy_ros.errors import ReadWarning
+    given = ' '.join(f'{name}:={value}' for name, value in (mappings or {}).items())
+    return ReadWarning(evidence.location, 'X101', (
+        f'the file is Xacro ({evidence.what}): expanded with xacro '
+        f'({"arguments " + given if given else "no arguments"}); plain URDF tools cannot '
+        'read it, so name it .urdf.xacro'))
 
 
 def save(robot: Robot, path: str | PathLike[str]) -> None:

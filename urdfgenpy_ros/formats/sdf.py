@@ -36,6 +36,7 @@ from urdfgenpy_ros.formats._xml import write_text
 from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Mesh, Origin, Sphere
 from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.link import Link, Visual
+from urdfgenpy_ros.lumping import WORLD
 from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.sensors import Camera, ForceTorque, Lidar, Sensor
 
@@ -179,9 +180,26 @@ def _link(model: Any, link: Link, robot: Robot, pose: tuple[Origin, str] | None)
     return element
 
 
+def _fixed_to_world(robot: Robot) -> bool:
+    """
+    Return whether the robot's root is URDF's ``world`` link, an empty frame.
+
+    SDFormat's conversion does not make it a link (SDF reserves the name): its joints fix
+    the model to the world frame. A ``world`` link with a body is refused.
+    """
+    if not robot.has_link(WORLD) or robot.parent_joint(WORLD) is not None:
+        return False
+    world = robot.get_link(WORLD)
+    if world.inertial is not None or world.visuals or world.collisions or world.sensors:
+        raise ModelError("link 'world' has a body, but SDF reserves the name for the world "
+                         'frame: rename the link (robot.rename_link)')
+    return True
+
+
 def _joint(model: Any, joint: Joint, name: str) -> None:
     element = etree.SubElement(model, 'joint', name=name, type=_TYPES[joint.type])
-    _pose(element, joint.origin, joint.parent)
+    # A joint from URDF's world link: the model frame is where the model meets the world.
+    _pose(element, joint.origin, '__model__' if joint.parent == WORLD else joint.parent)
     _text(element, 'parent', joint.parent)
     _text(element, 'child', joint.child)
     for sensor in joint.sensors:
@@ -215,6 +233,13 @@ def write_sdf(robot: Robot, path: str | PathLike[str] | None = None,
     :raises ValueError: for a planar joint, which SDF cannot express (make it two
         prismatic joints and a revolute one).
     """
+    for joint in robot.joints:
+        for role in ('parent', 'child'):
+            if not robot.has_link(getattr(joint, role)):
+                raise ModelError(f'joint {joint.name!r}: {role} link '
+                                 f'{getattr(joint, role)!r} does not exist (validate() reports '
+                                 'it as S004/S005): define the link or fix the name')
+    fixed_to_world = _fixed_to_world(robot)
     if lump_fixed:
         from urdfgenpy_ros.lumping import lump_fixed_joints
         robot = lump_fixed_joints(robot)
@@ -233,6 +258,8 @@ def write_sdf(robot: Robot, path: str | PathLike[str] | None = None,
                              'two prismatic joints and a revolute one)')
     for link in robot.links:
         parent = parent_joint.get(link.name)
+        if fixed_to_world and link.name == WORLD:
+            continue  # the world frame itself, which SDF reserves
         if parent is None:
             pose = None
         elif parent.type is JointType.FLOATING:

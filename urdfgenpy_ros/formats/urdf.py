@@ -25,6 +25,7 @@ is one changed line. Elements built in Python are written in the file's indentat
 
 from __future__ import annotations
 
+from itertools import chain
 from os import PathLike
 import re
 from typing import Any, TYPE_CHECKING
@@ -157,7 +158,7 @@ class UrdfWriter(ElementWriter):
         opening = self._opening()
         if not items:
             return opening[:-1] + '/>'
-        return opening + ''.join(space + text for space, text in items) + trailing + '</robot>'
+        return ''.join([opening, *chain.from_iterable(items), trailing, '</robot>'])
 
     def _untouched(self) -> bool:
         """Return whether the robot holds exactly what was read: write the tree as it is."""

@@ -20,12 +20,20 @@ from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from os import PathLike
 from pathlib import Path
+import threading
 from typing import Any
 
 from urdfgenpy_ros.errors import MissingDependencyError, ParseError, SourceLocation
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
 from urdfgenpy_ros.resources import PackageResolver
 from urdfgenpy_ros.robot import Robot
+
+
+class _PackageMissing(LookupError):
+    """A ``$(find pkg)`` nothing answers; its message is the whole story."""
+
+
+_LOCK = threading.Lock()  # xacro keeps its state in module globals: one read at a time
 
 
 def _xacro() -> Any:
@@ -37,6 +45,26 @@ def _xacro() -> Any:
 
 
 @contextmanager
+def _fresh_state(xacro: Any) -> Iterator[list[str]]:
+    """
+    Give one expansion xacro's module state of its own; yield the list of its includes.
+
+    xacro appends every file it includes to the module-level ``all_includes`` and never
+    empties it, so in a long-running process each read would report (and the node watch)
+    the files of every earlier read. Reset it, and the file and macro stacks, around
+    each read, so that nothing grows with the number of reads.
+    """
+    included: list[str] = []
+    xacro.all_includes = included
+    try:
+        yield included
+    finally:
+        xacro.all_includes = []
+        xacro.init_stacks(None)
+        xacro.substitution_args_context.clear()
+
+
+@contextmanager
 def _finding_with(resolver: PackageResolver) -> Iterator[None]:
     """Answer xacro's ``$(find pkg)`` from ``resolver`` first, then as xacro would."""
     from xacro import substitution_args
@@ -44,7 +72,15 @@ def _finding_with(resolver: PackageResolver) -> Iterator[None]:
 
     def find(package: str) -> str:
         found = resolver.find(package)
-        return str(found) if found is not None else original(package)
+        if found is not None:
+            return str(found)
+        try:
+            return original(package)
+        except Exception:  # noqa: B902 - ament's, rospkg's or an unset AMENT_PREFIX_PATH
+            raise _PackageMissing(
+                f'$(find {package}): package {package!r} not found (source the workspace '
+                'that holds it, or pass its folder in search_paths / --package-path)'
+            ) from None
 
     substitution_args._eval_find = find
     try:
@@ -64,14 +100,18 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
     resolver = resolver or PackageResolver()
     where = SourceLocation(str(path))
     try:
-        with _finding_with(resolver):
+        with _LOCK, _fresh_state(xacro) as includes, _finding_with(resolver):
             document = xacro.process_file(str(path), mappings=dict(mappings or {}))
+            names = list(dict.fromkeys(includes))
     except Exception as error:  # noqa: B902 - xacro raises many types; all are one line
-        message = ' '.join(str(error).split()) or type(error).__name__
-        if 'ament_index_python' in message or 'PackageNotFound' in type(error).__name__:
+        cause = getattr(error, 'exc', None)  # xacro wraps what substitutions raise
+        shown = cause if isinstance(cause, _PackageMissing) else error
+        message = ' '.join(str(shown).split()) or type(error).__name__
+        if ('ament_index_python' in message or 'PackageNotFound' in type(error).__name__) \
+                and 'search_paths' not in message:
             message += ' (pass the package folders in search_paths)'
         raise ParseError(f'xacro: {message}', where, 'X001') from None
-    included = [str(Path(name).resolve()) for name in getattr(xacro, 'all_includes', [])]
+    included = [str(Path(name).resolve()) for name in names]
     return document.toprettyxml(indent='  '), included
 
 

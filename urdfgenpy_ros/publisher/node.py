@@ -27,7 +27,7 @@ import math
 import os
 import sys
 import time
-from typing import Any
+from typing import Any, TYPE_CHECKING
 
 from rcl_interfaces.msg import ParameterDescriptor, ParameterType, SetParametersResult
 import rclpy
@@ -35,15 +35,18 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
-from sensor_msgs.msg import JointState
 from std_msgs.msg import String
-from std_srvs.srv import Trigger
 
 from urdfgenpy_ros.errors import Severity, UrdfgenpyError
 from urdfgenpy_ros.model_source import load_model
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
-from urdfgenpy_ros.robot import Robot
+
+if TYPE_CHECKING:  # imported when needed: sensor_msgs brings numpy, not needed to start
+    from sensor_msgs.msg import JointState
+    from std_srvs.srv import Trigger
+
+    from urdfgenpy_ros.robot import Robot
 
 _STRINGS = ParameterType.PARAMETER_STRING_ARRAY
 _PARAMETERS: dict[str, tuple[Any, int | None, str]] = {
@@ -84,7 +87,7 @@ _EXPECTED = {
 
 def _check_type(name: str, kind: int | None, value: Any) -> None:
     """Refuse a parameter given with another type than declared (overrides keep theirs)."""
-    if kind is None:
+    if kind not in _EXPECTED:  # None: dynamically typed ('rate': int or double)
         return
     expected, accepts = _EXPECTED[kind]
     if not accepts(value):
@@ -130,13 +133,20 @@ class PublisherNode(Node):
             self.description_publisher = self.create_publisher(String, 'robot_description',
                                                                latched)
             self.description_publisher.publish(String(data=self.description))
+        # Only now what the description does not need (sensor_msgs imports numpy).
+        from sensor_msgs.msg import JointState
+        from std_srvs.srv import Trigger
         self.joint_publisher = self.create_publisher(JointState, 'joint_states', 10)
         self.message = JointState()
         self._message_states: JointStates | None = None
         self._message_version = -1
         self._delta = float(self.values['delta'])
         for topic in self.values['source_list']:
-            self.create_subscription(JointState, topic, self._merge, 10)
+            try:
+                self.create_subscription(JointState, topic, self._merge, 10)
+            except (rclpy.exceptions.InvalidTopicNameException, ValueError) as error:
+                raise UrdfgenpyError(f"parameter 'source_list': {topic!r} is not a topic "
+                                     f'name ({error})') from None
         self.create_service(Trigger, '~/reload', self._reload_service)
         self.tf = _TfPublisher(self) if self.values['publish_tf'] else None
         self.create_timer(1.0 / float(rate), self._publish_joint_states)

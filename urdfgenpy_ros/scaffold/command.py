@@ -55,6 +55,8 @@ def run(args: argparse.Namespace) -> int:
                            args.maintainer_name, args.maintainer_email, args.license,
                            args.description, list(args.dependencies))
         robot, _ = load_model(args.source, args.xacro_args, args.package_path)
+        for note in robot.read_warnings:  # e.g. X101: a .urdf file expanded as Xacro
+            print(note, file=sys.stderr)
         written, warnings = create_package(
             spec, robot, force=args.force, source=args.source or 'the built-in example',
             search_paths=args.package_path)

@@ -29,9 +29,11 @@ from urdfgenpy_ros.formats.xacro import write_xacro, XACRO_NS
 from urdfgenpy_ros.geometry import Mesh
 from urdfgenpy_ros.link import Shape
 from urdfgenpy_ros.material import Material
-from urdfgenpy_ros.resources import PackageResolver, ResourceError
+from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
 from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.scaffold.sensors_read import sensors_of
 from urdfgenpy_ros.scaffold.spec import PackageSpec
+from urdfgenpy_ros.scaffold.templates import template_root
 
 # What the launch files run; package.xml must name each of them.
 LAUNCH_DEPENDS = ('joint_state_publisher', 'joint_state_publisher_gui', 'launch',
@@ -42,20 +44,8 @@ _BRIDGE_TYPES = {'camera': ('sensor_msgs/msg/Image', 'gz.msgs.Image'),
                  'imu': ('sensor_msgs/msg/Imu', 'gz.msgs.IMU'),
                  'force_torque': ('geometry_msgs/msg/Wrench', 'gz.msgs.Wrench')}
 
-
-def template_root() -> Path:
-    """Return the templates: the installed share folder first, then the source tree."""
-    try:
-        from ament_index_python.packages import get_package_share_directory
-        installed = Path(get_package_share_directory('urdfgenpy_ros')) / 'templates'
-        if installed.is_dir():
-            return installed
-    except (ImportError, LookupError, OSError, ValueError):
-        pass
-    source = Path(__file__).resolve().parents[2] / 'templates'
-    if source.is_dir():
-        return source
-    raise UrdfgenpyError('the package templates are missing: reinstall urdfgenpy_ros')
+# RViz displays for what the sensors publish through the bridge (off until Gazebo runs).
+_DISPLAYS = {'camera': 'Image', 'gpu_lidar': 'LaserScan'}
 
 
 def _escape(text: str) -> str:
@@ -72,8 +62,10 @@ def _meshes(spec: PackageSpec, robot: Robot, search_paths: list[str],
     """Copy every resolvable mesh into meshes/ and point the robot's URIs at it."""
     resolver = PackageResolver(search_paths)
     base = None
-    if robot.source is not None and robot.source.file and Path(robot.source.file).is_file():
-        base = Path(robot.source.file).parent
+    origin = robot.included_files[0] if robot.included_files else (
+        robot.source.file if robot.source is not None else None)  # Xacro: the main file
+    if origin and Path(origin).is_file():
+        base = Path(origin).parent
     files: dict[str, bytes] = {}
     renamed: dict[str, str] = {}
     for link in robot.links:
@@ -83,6 +75,9 @@ def _meshes(spec: PackageSpec, robot: Robot, search_paths: list[str],
             if not isinstance(mesh, Mesh):
                 continue
             if mesh.filename not in renamed:
+                note = uri_warning(mesh.filename)
+                if note is not None:
+                    warnings.append(note)
                 try:
                     data = resolver.resolve(mesh.filename, base).read_bytes()
                 except (ResourceError, OSError) as error:
@@ -140,8 +135,7 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
     files.update(pictures)
     urdf_files, includes, xacro_file = _urdf_files(spec, robot)
     files.update(urdf_files)
-    sensors = [sensor for owner in robot.links for sensor in owner.sensors]
-    sensors += [sensor for joint in robot.joints for sensor in joint.sensors]
+    sensors = sensors_of(robot)  # built, or read back from <gazebo> blocks
     context = {
         'name': spec.name, 'robot_name': robot.name, 'root_link': robot.root.name,
         'build_type': spec.build_type, 'maintainer_name': spec.maintainer_name,
@@ -151,6 +145,10 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
         'includes': includes, 'mesh_count': sum(p.startswith('meshes/') for p in files),
         'year': datetime.date.today().year,
         'exec_depends': sorted(set(LAUNCH_DEPENDS) | set(spec.dependencies)),
+        'sensor_displays': [{'plugin': _DISPLAYS[sensor.kind], 'name': sensor.name,
+                             'topic': sensor.topic if sensor.topic.startswith('/')
+                             else f'/{sensor.topic}'}
+                            for sensor in sensors if sensor.kind in _DISPLAYS],
         'bridge_topics': [{'name': sensor.topic or sensor.name,
                            'ros_type': _BRIDGE_TYPES[sensor.kind][0],
                            'gz_type': _BRIDGE_TYPES[sensor.kind][1]}

@@ -31,9 +31,11 @@ CODES: dict[str, tuple[Severity, str]] = {
     'P103': (W, 'NUL bytes after the document'),
     'P104': (W, 'default namespace on <robot>'),
     'P105': (W, 'undeclared namespace prefix, kept as written'),
-    'P106': (E, '<inertial> without <inertia> (urdfdom drops it, MuJoCo refuses it)'),
-    'P107': (E, 'visual material with a malformed colour (urdfdom ignores it, MuJoCo refuses '
+    'P106': (W, '<inertial> without <inertia> (urdfdom drops it, MuJoCo refuses it)'),
+    'P107': (W, 'visual material with a malformed colour (urdfdom ignores it, MuJoCo refuses '
                 'it)'),
+    'X002': (E, 'Xacro file given to the URDF reader'),
+    'X101': (W, 'Xacro in a .urdf file, expanded with xacro'),
     # structure
     'S001': (E, 'no root link'),
     'S002': (E, 'more than one root link'),
@@ -73,6 +75,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'R305': (E, 'not a finite number'),
     'R306': (W, 'visual mesh file not found'),
     'R307': (W, 'non-positive size or zero scale on a visual (it draws nothing)'),
+    'R308': (W, 'relative path written as a file:// URI (not portable)'),
     # conventions
     'C401': (W, "no link called 'base_link'"),
 }

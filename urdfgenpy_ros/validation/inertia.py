@@ -46,8 +46,10 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
         where, element = link_path(link.name) + '/inertial', f'link {link.name!r}'
         if inertial is None:
             count = below.get(link.name, 0)
+            sensors = _sensor_names(link)
             dropped = "Gazebo's URDF conversion drops it with its joint" + (
-                f' and the {count} link(s) below it' if count else '')
+                f' and the {count} link(s) below it' if count else '') + (
+                f" and its sensor(s) {', '.join(sensors)}" if sensors else '')
             if joint is not None and moves:
                 findings.add('I207', link, element, link_path(link.name),
                              f'moves ({joint.type} joint {joint.name!r}) but has no '
@@ -79,6 +81,14 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
             continue
         if _check_tensor(inertial, element, where, findings, moves):
             _check_plausible(link, inertial, element, where, findings)
+
+
+def _sensor_names(link: Link) -> list[str]:
+    """Return the names of the sensors on ``link``: built, or in its ``<gazebo>`` blocks."""
+    names = [repr(sensor.name) for sensor in link.sensors]
+    for block in link.extensions:
+        names += [repr(node.get('name', '')) for node in block.element.iter('sensor')]
+    return names
 
 
 def _subtrees(robot: Robot) -> tuple[dict[str, int], dict[str, bool]]:

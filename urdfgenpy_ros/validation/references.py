@@ -23,7 +23,7 @@ from typing import Any
 
 from urdfgenpy_ros.geometry import Box, Cylinder, Mesh, Sphere
 from urdfgenpy_ros.link import Shape
-from urdfgenpy_ros.resources import PackageResolver, ResourceError
+from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
 
@@ -46,7 +46,7 @@ def check_references(robot: Robot, findings: Findings, resolver: PackageResolver
                                 missing)
                 material = getattr(shape, 'material', None)
                 if (material is not None and material.is_reference
-                        and not robot._materials.get(material.name)):
+                        and not robot.has_material(material.name)):
                     findings.add('R301', material, element, where + '/material',
                                  f'material {material.name!r} is not defined',
                                  f'add <material name="{material.name}"><color rgba=.../>'
@@ -87,6 +87,10 @@ def _check_mesh(mesh: Mesh, element: str, where: str, findings: Findings,
             code, hint = missing, 'fix the file name or add the file'
         findings.add(code, mesh, element, f'{where}/geometry/mesh', message, hint, 'mesh')
         return
+    warning = uri_warning(mesh.filename)
+    if warning is not None:
+        findings.add('R308', mesh, element, f'{where}/geometry/mesh', warning,
+                     'use a path relative to the file, or package://', 'mesh')
     if not os.access(path, os.R_OK) or not path.is_file():
         findings.add(missing, mesh, element, f'{where}/geometry/mesh',
                      f'{mesh.filename!r} resolves to {path}, which is not a readable file',
