@@ -76,10 +76,10 @@ _PARAMETERS: dict[str, tuple[Any, int | None, str]] = {
 _EXPECTED = {
     ParameterType.PARAMETER_STRING: ('a string', lambda value: isinstance(value, str)),
     ParameterType.PARAMETER_BOOL: ('true or false', lambda value: isinstance(value, bool)),
-    ParameterType.PARAMETER_DOUBLE: ('a number', lambda value: isinstance(value, (int, float))
-                                     and not isinstance(value, bool)),
     ParameterType.PARAMETER_INTEGER: ('an integer', lambda value: isinstance(value, int)
                                       and not isinstance(value, bool)),
+    ParameterType.PARAMETER_DOUBLE: ('a number', lambda value: isinstance(value, (int, float))
+                                     and not isinstance(value, bool)),
     _STRINGS: ("a list of strings, e.g. \"['a', 'b']\"", lambda value: isinstance(
         value, (list, tuple)) and all(isinstance(item, str) for item in value)),
 }
