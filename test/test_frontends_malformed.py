@@ -170,3 +170,11 @@ def test_node_with_malformed_parameters(graph, parameters: dict[str, str],
         if process.returncode == 1:
             errors = [line for line in output.splitlines() if '[ERROR]' in line]
             assert errors, output
+
+
+def test_a_dh_row_with_a_number_for_a_column_name_is_one_line(tmp_path: Path) -> None:
+    table = tmp_path / 'arm.yaml'
+    table.write_text('convention: standard\nrows:\n  - {joint:, 1, a: 0}\n')
+    result = CliRunner().invoke(main, ['check', str(table)])
+    _assert_no_bug(result, {2})
+    assert 'unknown column(s) 1' in result.stdout

@@ -22,7 +22,7 @@ import shutil
 import subprocess
 
 from helpers import (
-    corpus_cases, corpus_file, full_robot, load_yourdfpy, pybullet_load, REPO, require_module,
+    CORPUS, corpus_cases, corpus_file, full_robot, load_yourdfpy, pybullet_load, REPO, require_module,
     require_tool)
 import pytest
 from registry_robots import absolute_meshes, robot as registry_robot
@@ -271,3 +271,39 @@ def test_a_root_link_named_world_gives_sdf_sdformat_loads(check_sdf, tmp_path: P
     code, theirs, _, _, errors = check_sdf(urdf)  # libsdformat's own conversion
     assert code == 0, errors
     assert set(ours) == set(theirs)
+
+
+def _every_urdf() -> list:
+    from registry_robots import robot_id, robots
+    corpus = sorted(CORPUS.rglob('*.urdf')) if CORPUS.is_dir() else []
+    return [*[pytest.param(path, id=robot_id(path)) for path in robots()],
+            *corpus_cases(corpus, [str(path.relative_to(CORPUS)) for path in corpus])]
+
+
+@pytest.mark.parametrize('path', _every_urdf())
+def test_what_sdformat_converts_we_convert_and_what_it_drops_validate_names(
+        path: Path, check_sdf, tmp_path: Path) -> None:
+    from urdfgenpy_ros import ParseError, Severity
+    from urdfgenpy_ros.formats import load
+    code, _, theirs, _, _ = check_sdf(path)  # libsdformat's own URDF conversion
+    if code != 0:
+        pytest.skip('libsdformat does not convert the original')
+    try:
+        robot = load(path)
+    except ParseError as error:
+        pytest.skip(f'not a URDF we read: {error}')
+    if any(warning.code == 'X101' for warning in robot.read_warnings):
+        pytest.skip('Xacro: libsdformat converted the unexpanded file')
+    errors = [f for f in robot.validate(check_meshes=False) if f.severity is Severity.ERROR]
+    if errors:
+        pytest.skip(f'validate() refuses it first: {errors[0]}')
+    lumped = _without_mimic(robot).to_sdf(tmp_path / 'ours.sdf', lump_fixed=True)
+    code, _, ours, _, message = check_sdf(tmp_path / 'ours.sdf')
+    assert code == 0, message
+    dropped = set(ours) - set(theirs)
+    # Every link libsdformat leaves out is one validate() says Gazebo drops.
+    said = {f.element for f in robot.validate(check_meshes=False)
+            if f.code in ('I201', 'I206', 'I207')}
+    assert {f'link {name!r}' for name in dropped} <= said, lumped
+    for link in set(ours) & set(theirs):
+        assert ours[link][0] == pytest.approx(theirs[link][0], rel=1e-9), link

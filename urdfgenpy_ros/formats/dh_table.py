@@ -49,8 +49,9 @@ def _yaml() -> Any:
 def _row(values: dict[str, Any], degrees: bool, where: SourceLocation) -> DHRow:
     unknown = set(values) - set(COLUMNS)
     if unknown:
-        raise ParseError(f'DH row: unknown column(s) {", ".join(sorted(unknown))} (columns '
-                         f'are {", ".join(COLUMNS)})', where, 'D001')
+        names = ', '.join(sorted(map(str, unknown)))
+        raise ParseError(f'DH row: unknown column(s) {names} (columns are '
+                         f'{", ".join(COLUMNS)})', where, 'D001')
     if 'joint' not in values:
         raise ParseError("DH row: missing 'joint' (a number or a name)", where, 'D001')
     kind = str(values.get('type') or 'revolute')
