@@ -22,8 +22,8 @@ import shutil
 import subprocess
 
 from helpers import (
-    CORPUS, corpus_cases, corpus_file, full_robot, load_yourdfpy, pybullet_load, REPO, require_module,
-    require_tool)
+    CORPUS, corpus_cases, corpus_file, full_robot, load_yourdfpy, pybullet_load, REPO,
+    require_module, require_tool)
 import pytest
 from registry_robots import absolute_meshes, robot as registry_robot
 
