@@ -25,7 +25,7 @@ from __future__ import annotations
 from pathlib import Path
 import tempfile
 
-from helpers import CORPUS, load_yourdfpy, pose_matrix, require_module, snapshot
+from helpers import CORPUS, corpus_cases, load_yourdfpy, pose_matrix, require_module, snapshot
 import pytest
 
 from urdfgenpy_ros import Box, Cylinder, Origin, Robot, Sphere, Visual
@@ -168,7 +168,8 @@ def _corpus_files() -> list[Path]:
     return sorted(path for path in CORPUS.rglob('*.urdf') if 'fail' not in path.name)
 
 
-@pytest.mark.parametrize('path', _corpus_files(), ids=lambda path: path.name)
+@pytest.mark.parametrize('path', corpus_cases(_corpus_files(),
+                                              [path.name for path in _corpus_files()]))
 def test_random_edits_on_corpus(path: Path, corpus: Path) -> None:
     """The same on every real robot of the corpus that both readers accept."""
     try:

