@@ -26,7 +26,7 @@ from urdfgenpy_ros import Box, Material, Origin, Robot, Visual
 
 FIXTURES = Path(__file__).parent / 'fixtures' / 'io'
 LAYOUTS = sorted(FIXTURES.glob('*.urdf'))
-ARM = [path for path in LAYOUTS if path.name != 'one_line.urdf']
+ARM = [path for path in LAYOUTS if path.name not in ('one_line.urdf', 'exporter_style.urdf')]
 
 
 def _changed(before: str, after: str) -> tuple[list[str], list[str]]:
@@ -93,6 +93,20 @@ def test_a_scalar_edit_changes_one_line(path: Path, edit, tmp_path: Path) -> Non
     assert needle in added[0] and value in added[0]
     assert added[0].replace(value, '') != removed[0]
     load_yourdfpy(tmp_path / 'out.urdf')  # and another reader accepts it
+
+
+def test_an_edit_in_an_exporter_style_file_touches_only_the_edited_element(
+        tmp_path: Path) -> None:
+    """Attributes on lines of their own (as CAD exporters write them) stay so elsewhere."""
+    path = FIXTURES / 'exporter_style.urdf'
+    robot = Robot.from_urdf(path)
+    robot.get_link('arm').inertial.mass = 0.75
+    text = robot.to_urdf(tmp_path / 'out.urdf')
+    removed, added = _changed(_source(path), text)
+    assert [line.strip() for line in removed] == ['<mass', 'value="0.5" />']
+    assert [line.strip() for line in added] == ['<mass value="0.75"/>']
+    arm = next(link for link in load_yourdfpy(tmp_path / 'out.urdf').links if link.name == 'arm')
+    assert arm.inertial.mass == 0.75
 
 
 def test_renaming_a_link_changes_only_the_lines_naming_it(tmp_path: Path) -> None:

@@ -199,10 +199,9 @@ def test_missing_attribute_names_element_and_line() -> None:
 
 def test_unedited_elements_keep_their_text_and_edited_ones_are_written_anew() -> None:
     path = corpus_file('kdl_parser/kdl_parser/test/testInertiaRPYmodel1.urdf')
-    # lxml writes "<a />" as "<a/>", and each top-level element starts at our indent;
-    # everything else of an unedited element stays: the attribute order, each number's
-    # spelling ("0.0", "-0"), the indentation inside it.
-    original = [line.strip() for line in path.read_text().replace(' />', '/>').splitlines()]
+    # Everything of an unedited element stays: its start tags as written ("<a />"), the
+    # attribute order, each number's spelling ("0.0", "-0"), the indentation inside it.
+    original = [line.strip() for line in path.read_text().splitlines()]
     robot = Robot.from_urdf(path)
     untouched = robot.to_urdf().splitlines()
     first = original.index('<robot name="testInertialRPYmodel1">')

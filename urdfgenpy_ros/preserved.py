@@ -47,6 +47,7 @@ class Preserved:
     order: list[Any] | None = None
     outside: tuple[list[Any], list[Any]] = ([], [])
     layout: Layout = Layout()
+    start_tags: dict[Any, tuple[str, tuple[tuple[str, str], ...]]] = {}
 
     def __init__(self, node: Any, snapshot: tuple | None = None) -> None:
         self.node = node
@@ -60,11 +61,15 @@ class Preserved:
 class DocumentPreserved(Preserved):
     """What a reader kept of the ``<robot>`` element: its items' order, layout, comments."""
 
-    __slots__ = ('order', 'outside', 'layout')
+    __slots__ = ('order', 'outside', 'layout', 'start_tags')
 
     def __init__(self, node: Any, order: list[Any], outside: tuple[list[Any], list[Any]],
-                 layout: Layout) -> None:
+                 layout: Layout,
+                 start_tags: dict[Any, tuple[str, tuple[tuple[str, str], ...]]] | None = None
+                 ) -> None:
         super().__init__(node)
         self.order = order
         self.outside = outside
         self.layout = layout
+        # the source start tags lxml would write otherwise (formats/start_tags.py)
+        self.start_tags = start_tags or {}

@@ -35,6 +35,7 @@ from lxml import etree
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._xml import esc, fragment, write_text
 from urdfgenpy_ros.formats.sdf import sensor_element
+from urdfgenpy_ros.formats.start_tags import restore_start_tags, tag_end
 from urdfgenpy_ros.formats.urdf_element import ElementWriter, prefixed
 from urdfgenpy_ros.formats.urdf_schema import MATERIAL, OF_CLASS, values
 from urdfgenpy_ros.joint import Joint
@@ -89,7 +90,8 @@ class UrdfWriter(ElementWriter):
             declaration = layout.declaration
             before, after = ([self.source_text(node) for node in nodes]
                              for nodes in extras.outside)
-        text = '\n'.join([declaration, *before, self.write_robot(), *after]) + '\n'
+        first = [declaration] if declaration else []
+        text = '\n'.join([*first, *before, self.write_robot(), *after]) + '\n'
         if layout.quote == "'":
             text = _single_quotes(text)
         if layout.newline != '\n':
@@ -117,8 +119,10 @@ class UrdfWriter(ElementWriter):
         if extras is not None and self._untouched():
             head = extras.layout.head
             assert head is not None
-            text = etree.tostring(extras.node, encoding='unicode', with_tail=False)
-            return head + text[text.index('>') + 1:] if len(extras.node) else head[:-1] + '/>'
+            text = restore_start_tags(
+                etree.tostring(extras.node, encoding='unicode', with_tail=False),
+                extras.node, extras.start_tags)
+            return head + text[tag_end(text, 0):] if len(extras.node) else head[:-1] + '/>'
         items = [(fresh, text) for text in self.prologue()]
         materials, links, joints = self.materials, robot.links, robot.joints
         written: set[int] = set()

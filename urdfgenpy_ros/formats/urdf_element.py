@@ -31,6 +31,7 @@ from lxml import etree
 
 from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import esc, without_declared
+from urdfgenpy_ros.formats.start_tags import restore_start_tags, source_tag
 from urdfgenpy_ros.formats.urdf_fresh import FRESH
 from urdfgenpy_ros.formats.urdf_schema import (
     Child, Element, ELEMENTS, FLOAT, INERTIAL, MATERIAL, OF_CLASS, REQUIRED, slot_of, SLOTS,
@@ -112,8 +113,11 @@ class ElementWriter:
 
     def source_text(self, node: Any) -> str:
         """Return a source node exactly as it was read (namespaces the root declares aside)."""
-        return without_declared(etree.tostring(node, encoding='unicode', with_tail=False),
-                                self.declared)
+        text = etree.tostring(node, encoding='unicode', with_tail=False)
+        extras = self.robot.extras
+        if extras is not None and extras.start_tags:
+            text = restore_start_tags(text, node, extras.start_tags)
+        return without_declared(text, self.declared)
 
     # ---- any element, from its declaration -------------------------------------------
 
@@ -155,6 +159,8 @@ class ElementWriter:
         """Return ``element`` with the fields of ``item``, laid out like ``node`` if any."""
         tag = element.tag
         attrs = self._attributes(element, item, node)
+        if node is not None:
+            attrs = self._as_written(tag, node, attrs)
         if not element.children:
             if node is None or not len(node):
                 return f'<{tag}{attrs}/>'
@@ -170,6 +176,16 @@ class ElementWriter:
             space = '\n' + inner
             return f'<{tag}{attrs}>{"".join(space + text for text in texts)}\n{pad}</{tag}>'
         return self._merge(element, attrs, children, node, pad, inner)
+
+    def _as_written(self, tag: str, node: Any, attrs: str) -> str:
+        """Return the source's own attribute text (line breaks and all) if none changed."""
+        extras = self.robot.extras
+        source = source_tag(extras.start_tags, node) if extras is not None else None
+        if source is None or attrs != ''.join(
+                f' {prefixed(node, key)}="{esc(value)}"' for key, value in node.attrib.items()):
+            return attrs
+        body = source[len(tag) + 1:]
+        return body[:-2] if body.endswith('/>') else body[:-1]
 
     def _inner(self, node: Any, pad: str | None) -> str | None:
         """Return the indentation of children (None: written on one line)."""

@@ -32,6 +32,7 @@ from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import ParseError, ReadWarning, SourceLocation
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._parse import parse_xml, Source
+from urdfgenpy_ros.formats.start_tags import tag_end, unusual_start_tags
 from urdfgenpy_ros.formats.urdf_schema import (
     Child, Element, ELEMENTS, FLOAT, GEOMETRY, record, REQUIRED, slot_of, TEXT, unusable,
     VEC3)
@@ -209,7 +210,8 @@ class _Reader:
                 record(item)
         robot.extras = DocumentPreserved(
             root, order, (list(root.itersiblings(preceding=True))[::-1],
-                          list(root.itersiblings())), self._layout(root, root is top))
+                          list(root.itersiblings())), self._layout(root, root is top),
+            unusual_start_tags(top, self.source.data.decode('utf-8', 'replace')))
         return robot
 
     def _layout(self, root: Any, is_document: bool) -> Layout:
@@ -222,8 +224,11 @@ class _Reader:
         quote = "'" if data.count(b"='") > data.count(b'="') else '"'
         text = data[:4096].decode('utf-8', 'replace')
         match = _DECLARATION.match(text)
-        declaration = match.group(1) if match and not any(
-            warning.code == 'P102' for warning in self.warnings) else '<?xml version="1.0"?>'
+        if match is None and is_document and text.lstrip().startswith('<'):
+            declaration = ''  # the file has none: it gets none
+        else:
+            declaration = match.group(1) if match and not any(
+                warning.code == 'P102' for warning in self.warnings) else '<?xml version="1.0"?>'
         head = _opening_tag(self.source, root) if is_document else None
         return Layout(unit, newline, quote, declaration, head)
 
@@ -261,29 +266,25 @@ class _Reader:
 
 
 def _opening_tag(source: Source, root: Any) -> str | None:
-    """Return the root's opening tag exactly as the file wrote it, if it can be found."""
+    """
+    Return the root's opening tag exactly as the file wrote it, if it can be found.
+
+    lxml's ``sourceline`` is the line a start tag ends on: look back from its end.
+    """
     if root.sourceline is None:
         return None
-    offset = 0
-    data = source.data
-    for _ in range(root.sourceline - 1):
-        offset = data.find(b'\n', offset) + 1
-        if offset == 0:
-            return None
-    start = data.find(b'<robot', offset)
+    text = source.data.decode('utf-8', 'replace')
+    end = -1
+    for _ in range(root.sourceline):
+        end = text.find('\n', end + 1)
+        if end < 0:
+            end = len(text)
+            break
+    start = text.rfind('<robot', 0, end)
     if start < 0:
         return None
-    quote = None
-    for end in range(start, min(len(data), start + 65536)):
-        char = data[end:end + 1]
-        if quote is not None:
-            quote = None if char == quote else quote
-        elif char in (b'"', b"'"):
-            quote = char
-        elif char == b'>':
-            head = data[start:end + 1].decode('utf-8', 'replace')
-            return None if head.endswith('/>') else head.replace('\r\n', '\n')
-    return None
+    head = text[start:tag_end(text, start)]
+    return None if head.endswith('/>') else head.replace('\r\n', '\n')
 
 
 def _share_materials(robot: Robot) -> None:

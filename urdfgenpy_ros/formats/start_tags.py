@@ -1,0 +1,116 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Start tags as the source wrote them, where lxml would write them otherwise.
+
+lxml writes every start tag on one line with single spaces; CAD exporters (SolidWorks's
+among them) put each attribute on its own line. An unedited element keeps its source
+tags: the reader records the unusual ones, the writer puts them back.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+_SKIP = {'<!--': '-->', '<![CDATA[': ']]>', '<?': '?>', '<!': '>'}
+_PLAIN = re.compile(r'<[^\s<>/]+(?: [^\s=<>]+="[^"<>]*")*/?>')  # as lxml writes it
+
+
+def tag_end(text: str, start: int) -> int:
+    """Return the index just after the ``>`` closing the start tag at ``start``."""
+    quote = ''
+    for index in range(start + 1, len(text)):
+        char = text[index]
+        if quote:
+            if char == quote:
+                quote = ''
+        elif char in '"\'':
+            quote = char
+        elif char == '>':
+            return index + 1
+    return len(text)
+
+
+SourceTags = dict[Any, tuple[str, tuple[tuple[str, str], ...]]]
+"""Per element, its source start tag and the attributes it had when read."""
+
+
+def source_tag(tags: SourceTags, node: Any) -> str | None:
+    """Return ``node``'s recorded start tag while its attributes are still as read."""
+    recorded = tags.get(node)
+    if recorded is None or tuple(node.attrib.items()) != recorded[1]:
+        return None
+    return recorded[0]
+
+
+def unusual_start_tags(document: Any, text: str) -> SourceTags:
+    """
+    Return the source start tags of the document's elements that lxml would write otherwise.
+
+    That is: line breaks, tabs, runs of spaces or single quotes inside the tag. ``text`` is
+    the whole source; its start tags come in the elements' order.
+    """
+    found: SourceTags = {}
+    elements = [node for node in document.iter() if isinstance(node.tag, str)]
+    position, index = 0, 0
+    while index < len(elements):
+        start = _next_start(text, position)
+        if start < 0:
+            break
+        end = tag_end(text, start)
+        tag = text[start:end].replace('\r\n', '\n')  # the writer puts the file's line ends
+        if not _PLAIN.fullmatch(tag):
+            found[elements[index]] = (tag, tuple(elements[index].attrib.items()))
+        index += 1
+        position = end
+    return found
+
+
+def restore_start_tags(serialized: str, node: Any, tags: SourceTags) -> str:
+    """Return lxml's serialisation of ``node`` with its elements' source start tags."""
+    if not tags:
+        return serialized
+    elements = [item for item in node.iter() if isinstance(item.tag, str)]
+    if not any(item in tags for item in elements):
+        return serialized
+    parts, position = [], 0
+    for item in elements:
+        start = _next_start(serialized, position)
+        if start < 0:
+            return serialized  # not the shape expected: keep lxml's text
+        end = tag_end(serialized, start)
+        parts.append(serialized[position:start])
+        parts.append(source_tag(tags, item) or serialized[start:end])
+        position = end
+    parts.append(serialized[position:])
+    return ''.join(parts)
+
+
+def _next_start(text: str, position: int) -> int:
+    """Return where the next start tag begins: comments, CDATA, end tags skipped."""
+    while True:
+        found = text.find('<', position)
+        if found < 0:
+            return -1
+        skipped = next((end for opening, end in _SKIP.items()
+                        if text.startswith(opening, found)), None)
+        if skipped is not None:
+            close = text.find(skipped, found + 2)
+            position = len(text) if close < 0 else close + len(skipped)
+        elif text.startswith('</', found):
+            position = found + 2
+        else:
+            return found
