@@ -67,18 +67,19 @@ EXPECTED = {
 @pytest.mark.parametrize('name', sorted(EXPECTED))
 def test_findings_match_what_the_engines_do(name: str) -> None:
     path = PROBLEMS / name
-    findings = {(finding.code, str(finding.severity))
-                for finding in Robot.from_urdf(path).validate()}
+    found = Robot.from_urdf(path).validate()
+    findings = {(finding.code, str(finding.severity)) for finding in found}
     assert findings == EXPECTED[name]
     errors = {code for code, severity in findings if severity == 'error'}
-    if check_urdf_verdict(path) and mujoco_accepts(path):
+    urdfdom, mujoco = check_urdf_verdict(path), mujoco_accepts(path)
+    if urdfdom and mujoco:
         assert not errors, 'both consumers accept it: an error would be a false alarm'
-    if not check_urdf_verdict(path):
+    if not urdfdom:
         assert errors, 'urdfdom refuses it: validate() must report an error'
-    if not mujoco_accepts(path):
+    if not mujoco:
         # An error when it also breaks ROS tools; what only a simulator refuses (RViz and
         # robot_state_publisher read it) is a warning that names the simulator.
-        said = ' '.join(str(finding) for finding in Robot.from_urdf(path).validate())
+        said = ' '.join(str(finding) for finding in found)
         assert errors or 'MuJoCo' in said, said
 
 
