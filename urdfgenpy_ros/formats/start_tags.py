@@ -56,26 +56,44 @@ def source_tag(tags: SourceTags, node: Any) -> str | None:
     return recorded[0]
 
 
+# One token of XML text: what is skipped (comments, CDATA, processing instructions,
+# declarations, end tags) or a start tag (group 1), and whether an end tag follows it at
+# once (group 2: the element is empty and was written ``<x></x>``).
+_TOKEN = re.compile(r'<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<![^>]*>|</[^>]*>|'
+                    r'(<[^\s<>/!?](?:"[^"]*"|\'[^\']*\'|[^>"\'])*+>)(</)?', re.DOTALL)
+# A whole document whose start tags all are as lxml writes them, none of them empty
+# with an end tag: then nothing needs recording (one C-level match, no Python per tag).
+_ALL_PLAIN = re.compile(r'(?:[^<]++|<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<![^>]*>|'
+                        r'</[^>]*>|<[^\s<>/!?]+(?: [^\s=<>]+="[^"<>]*")*(?:/>|>(?!</)))*+',
+                        re.DOTALL)
+
+
 def unusual_start_tags(document: Any, text: str) -> SourceTags:
     """
     Return the source start tags of the document's elements that lxml would write otherwise.
 
-    That is: line breaks, tabs, runs of spaces or single quotes inside the tag. ``text`` is
-    the whole source; its start tags come in the elements' order.
+    That is: line breaks, tabs, runs of spaces or single quotes inside the tag, and the
+    start tag of an empty element written with an end tag (``<link></link>``, which lxml
+    writes ``<link/>``). ``text`` is the whole source; its start tags come in the
+    elements' order.
     """
+    if _ALL_PLAIN.fullmatch(text):
+        return {}
     found: SourceTags = {}
-    elements = [node for node in document.iter() if isinstance(node.tag, str)]
-    position, index = 0, 0
-    while index < len(elements):
-        start = _next_start(text, position)
-        if start < 0:
-            break
-        end = tag_end(text, start)
-        tag = text[start:end].replace('\r\n', '\n')  # the writer puts the file's line ends
-        if not _PLAIN.fullmatch(tag):
-            found[elements[index]] = (tag, tuple(elements[index].attrib.items()))
+    elements = None
+    index = 0
+    for tag, closed in _TOKEN.findall(text):
+        if not tag:
+            continue
+        if (closed and tag[-2:] != '/>') or not _PLAIN.fullmatch(tag):
+            if elements is None:
+                elements = [node for node in document.iter() if isinstance(node.tag, str)]
+            if index >= len(elements):
+                break
+            element = elements[index]
+            found[element] = (tag.replace('\r\n', '\n'),  # the writer puts the file's ends
+                              tuple(element.attrib.items()))
         index += 1
-        position = end
     return found
 
 
@@ -93,10 +111,25 @@ def restore_start_tags(serialized: str, node: Any, tags: SourceTags) -> str:
             return serialized  # not the shape expected: keep lxml's text
         end = tag_end(serialized, start)
         parts.append(serialized[position:start])
-        parts.append(source_tag(tags, item) or serialized[start:end])
+        parts.append(_as_source(source_tag(tags, item), serialized[start:end]))
         position = end
     parts.append(serialized[position:])
     return ''.join(parts)
+
+
+def _as_source(recorded: str | None, written: str) -> str:
+    """Return the recorded start tag in place of lxml's ``written`` one, end tag and all."""
+    if recorded is None:
+        return written
+    empty = written.endswith('/>')
+    if recorded.endswith('/>') == empty:
+        return recorded
+    if empty:  # <x></x>: lxml writes <x/>
+        return f'{recorded}</{_NAME.match(recorded).group(1)}>'  # type: ignore[union-attr]
+    return written  # children added since it was read: lxml's tag, open
+
+
+_NAME = re.compile(r'<([^\s/>]+)')
 
 
 def _next_start(text: str, position: int) -> int:
