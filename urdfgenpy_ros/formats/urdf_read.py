@@ -33,22 +33,18 @@ from urdfgenpy_ros.errors import ParseError, ReadWarning, SourceLocation
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._parse import parse_xml, Source
 from urdfgenpy_ros.formats.start_tags import tag_end, unusual_start_tags
-from urdfgenpy_ros.formats.urdf_schema import (
-    Child, Element, ELEMENTS, FLOAT, GEOMETRY, record, REQUIRED, slot_of, TEXT, unusable,
-    VEC3)
+from urdfgenpy_ros.formats.urdf_readers import READERS
+from urdfgenpy_ros.formats.urdf_schema import GEOMETRY, record, unusable
 from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.material import Material
-from urdfgenpy_ros.preserved import DocumentPreserved, Layout, Preserved
+from urdfgenpy_ros.preserved import DocumentPreserved, Layout
 from urdfgenpy_ros.robot import Robot
 
 EXTENSION_TAGS = frozenset(('gazebo', 'transmission', 'ros2_control'))
 _TYPES = ', '.join(kind.value for kind in JointType)
-_JOINT_TYPES = frozenset(kind.value for kind in JointType)
 _SHAPES = 'box, cylinder, sphere or mesh'
 _SHAPE_TAGS = GEOMETRY.children[0].tags
-_EXPECTED = {'type': f'one of {_TYPES}',
-             'filename': 'the mesh file, e.g. package://my_robot/meshes/part.stl'}
 _DECLARATION = re.compile(r'^\s*(<\?xml\b[^>]*\?>)')
 
 
@@ -59,6 +55,8 @@ class _Reader:
         self.source = source
         self.file = source.file
         self.warnings = warnings
+        self.materials: dict[str, Material] = {}  # robot-level materials read so far
+        self.unresolved = False  # a visual refers to a material not (yet) defined
 
     def fail(self, node: Any, message: str, code: str = 'P002',
              attribute: str | None = None) -> ParseError:
@@ -69,102 +67,59 @@ class _Reader:
         """Return the location of ``node`` (file and line)."""
         return SourceLocation(self.file, node.sourceline)
 
-    # ---- generic: one declaration ---------------------------------------------------
+    # ---- what the compiled readers (formats/urdf_readers.py) call -----------------
 
-    def read(self, element: Element, node: Any) -> Any:
-        """Return the model object of ``node``, declared by ``element``."""
-        fields: dict[str, Any] = {}
-        self.attributes(element, node, fields)
-        if element.tag == 'joint' and fields['type'] not in _JOINT_TYPES:
-            raise self.fail(node, f'joint {fields["name"]!r}: unknown type '
-                                  f'{fields["type"]!r} (use one of {_TYPES})', 'P004', 'type')
-        if element.children:
-            self.children(element, node, fields)
-        make = element.make or element.cls
-        assert make is not None
-        return make(**fields, source=self.where(node), extras=Preserved(node))
+    def missing(self, node: Any, name: str, expected: str) -> ParseError:
+        """Return the error of a required attribute the file leaves out."""
+        return self.fail(node, f'{_describe(node)}: missing {name!r} ({expected})')
 
-    def attributes(self, element: Element, node: Any, fields: dict[str, Any]) -> None:
-        """Read the declared attributes of ``node`` into ``fields``."""
-        get = node.get
-        for attr in element.attrs:
-            text = get(attr.name)
-            if text is None or (not text and attr.name == 'filename' and
-                                attr.default is REQUIRED):
-                if attr.default is REQUIRED:
-                    expected = attr.expected or _EXPECTED.get(attr.name) or (
-                        'a number' if attr.kind == FLOAT else
-                        f'{3 if attr.kind == VEC3 else 4} numbers')
-                    raise self.fail(node, f'{_describe(node)}: missing {attr.name!r} '
-                                          f'({expected})')
-                fields[attr.field] = attr.default
-            elif attr.kind == TEXT:
-                fields[attr.field] = text
-            elif attr.kind == FLOAT:
-                try:
-                    fields[attr.field] = float(text)
-                except ValueError:
-                    raise self.fail(node, f'{_describe(node)}: {attr.name} {text!r} is not a '
-                                          'number (write e.g. 0.5 or 1e-3)', 'P003',
-                                    attr.name) from None
-            else:
-                fields[attr.field] = self.vector(node, attr.name, text,
-                                                 3 if attr.kind == VEC3 else 4)
+    def not_number(self, node: Any, name: str, text: str) -> ParseError:
+        """Return the error of a number attribute that does not read as one."""
+        return self.fail(node, f'{_describe(node)}: {name} {text!r} is not a number (write '
+                               'e.g. 0.5 or 1e-3)', 'P003', name)
 
-    def vector(self, node: Any, name: str, text: str, count: int) -> tuple[float, ...]:
-        """Return a space-separated vector attribute of ``count`` floats."""
-        parts = text.split()
-        try:
-            values = tuple([float(part) for part in parts])
-        except ValueError:
-            values = ()
-        if len(values) != count:
-            raise self.fail(node, f'{_describe(node)}: {name} {text!r} must be {count} '
-                                  'numbers separated by spaces', 'P003', name)
-        return values
+    def not_vector(self, node: Any, name: str, text: str, count: int) -> ParseError:
+        """Return the error of a vector attribute that is not ``count`` numbers."""
+        return self.fail(node, f'{_describe(node)}: {name} {text!r} must be {count} '
+                               'numbers separated by spaces', 'P003', name)
 
-    def children(self, element: Element, node: Any, fields: dict[str, Any]) -> None:
-        """Read the declared children of ``node`` into ``fields`` (first of each kind)."""
-        filled: set[Child] = set()
+    def bad_type(self, node: Any, name: str, kind: str) -> ParseError:
+        """Return the error of an unknown joint type."""
+        return self.fail(node, f'joint {name!r}: unknown type {kind!r} (use one of '
+                               f'{_TYPES})', 'P004', 'type')
+
+    def ignored(self, tag: str, node: Any, child: Any) -> None:
+        """Warn about a child urdfdom drops: it is kept as written."""
+        name = node.get('name')
+        owner = f'{tag} {name!r}' if name else f'<{tag}>'
+        self.warnings.append(ReadWarning(
+            self.source.at(child), 'P106' if child.tag == 'inertial' else 'P107',
+            f'{owner}: ignored, as urdfdom does: {unusable(tag, child)}'))
+
+    def shape(self, node: Any) -> Any:
+        """Return the shape of a ``<geometry>``: its first element, which must be one."""
         for child in node:
-            slot = slot_of(element.tag, child)
-            if slot is None:
-                why = unusable(element.tag, child)
-                if why is not None:  # kept as written, as urdfdom drops it
-                    name = node.get('name')
-                    owner = f'{element.tag} {name!r}' if name else f'<{element.tag}>'
-                    self.warnings.append(ReadWarning(
-                        self.source.at(child), 'P106' if child.tag == 'inertial' else 'P107',
-                        f'{owner}: ignored, as urdfdom does: {why}'))
-                continue
-            tag = child.tag
-            if slot.many:
-                fields.setdefault(str(slot.field), []).append(self.read(ELEMENTS[tag], child))
-            elif slot not in filled:
-                filled.add(slot)
-                if tag == 'geometry':
-                    self.check_geometry(child)
-                if slot.field is None:
-                    inner = ELEMENTS[tag]
-                    self.attributes(inner, child, fields)
-                    if inner.children:
-                        self.children(inner, child, fields)
-                else:
-                    fields[slot.field] = self.read(ELEMENTS[tag], child)
-        for slot in element.children:
-            if slot.missing and slot not in filled:
-                owner = (f'joint {node.get("name")!r}' if element.tag == 'joint'
-                         else f'<{element.tag}>')
-                raise self.fail(node, f'{owner}: {slot.missing}')
+            if isinstance(child.tag, str):
+                if child.tag not in _SHAPE_TAGS:
+                    raise self.fail(child, f'unknown geometry <{child.tag}> (URDF has '
+                                           f'{_SHAPES})', 'P006')
+                return child
+        raise self.fail(node, f'<geometry> has no shape (use {_SHAPES})', 'P006')
 
-    def check_geometry(self, node: Any) -> None:
-        """Refuse a ``<geometry>`` whose first element is not a URDF shape."""
-        shapes = [child for child in node if isinstance(child.tag, str)]
-        if not shapes:
-            raise self.fail(node, f'<geometry> has no shape (use {_SHAPES})', 'P006')
-        if shapes[0].tag not in _SHAPE_TAGS:
-            raise self.fail(shapes[0], f'unknown geometry <{shapes[0].tag}> (URDF has '
-                                       f'{_SHAPES})', 'P006')
+    def shared(self, material: Material, node: Any) -> Material:
+        """
+        Return the robot-level material a plain reference (``<material name="x"/>``) names.
+
+        A reference to a material defined further down is resolved when the robot is
+        read (:func:`_share_materials`).
+        """
+        if len(node.attrib) != 1 or len(node):
+            return material
+        defined = self.materials.get(material.name)
+        if defined is None:
+            self.unresolved = True
+            return material
+        return defined
 
     # ---- the robot ----------------------------------------------------------------
 
@@ -183,7 +138,7 @@ class _Reader:
         for node in root:
             tag = node.tag
             if tag in ('link', 'joint', 'material'):
-                item = self.read(ELEMENTS[tag], node)
+                item = READERS[tag](self, node)
                 first = seen.setdefault((tag, item.name), node.sourceline)
                 if first != node.sourceline:
                     raise self.fail(node, f'{tag} {item.name!r} is defined twice (first at '
@@ -195,6 +150,7 @@ class _Reader:
                     joints.append(item)
                 else:
                     robot.add_material(item)
+                    self.materials[item.name] = item
                 order.append(item)
             elif tag in EXTENSION_TAGS:
                 block = Extension(node, self.where(node))
@@ -204,10 +160,9 @@ class _Reader:
                 order.append(node)
         for joint in joints:
             robot.add_joint(joint)
-        _share_materials(robot)
-        for item in order:
-            if isinstance(item, (Link, Joint, Material)):
-                record(item)
+        if self.unresolved:
+            for link in _share_materials(robot):
+                record(link)
         robot.extras = DocumentPreserved(
             root, order, (list(root.itersiblings(preceding=True))[::-1],
                           list(root.itersiblings())), self._layout(root, root is top),
@@ -287,16 +242,21 @@ def _opening_tag(source: Source, root: Any) -> str | None:
     return None if head.endswith('/>') else head.replace('\r\n', '\n')
 
 
-def _share_materials(robot: Robot) -> None:
+def _share_materials(robot: Robot) -> list[Link]:
     """Point plain references (``<material name="x"/>``) at the robot-level material."""
+    changed = []
     for link in robot.links:
         for visual in link.visuals:
             material = visual.material
             if (material is not None and material.is_reference
-                    and robot.has_material(material.name)):
+                    and robot.has_material(material.name)
+                    and material is not robot.get_material(material.name)):
                 node = material.extras.node if material.extras is not None else None
                 if node is None or (len(node.attrib) == 1 and not len(node)):
                     visual.material = robot.get_material(material.name)
+                    if not changed or changed[-1] is not link:
+                        changed.append(link)
+    return changed
 
 
 def _describe(node: Any) -> str:

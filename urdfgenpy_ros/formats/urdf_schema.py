@@ -158,6 +158,10 @@ SLOTS: dict[str, dict[str, Child]] = {
 """Per element tag, the declaration each child tag fills."""
 
 
+MAY_BE_UNUSABLE = frozenset((('link', 'inertial'), ('visual', 'material')))
+"""The (owner, child) tags for which :func:`unusable` can find a reason."""
+
+
 def unusable(tag: str, node: Any) -> str | None:
     """
     Return why urdfdom drops the child ``node`` of a ``tag`` element, or None if it reads it.
@@ -222,6 +226,11 @@ def _plan(element: Element) -> tuple[tuple[str, ...], tuple[str, ...], tuple[str
 
 
 _PLANS = {cls: _plan(element) for cls, element in OF_CLASS.items()}
+
+
+def plan(cls: type) -> tuple[tuple[str, ...], tuple[str, ...], tuple[str, ...]]:
+    """Return the fields a snapshot of a ``cls`` holds: values, nested objects, lists."""
+    return _PLANS[cls]
 
 
 def values(item: Any) -> tuple:
