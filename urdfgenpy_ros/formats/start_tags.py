@@ -25,6 +25,8 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from lxml import etree
+
 _SKIP = {'<!--': '-->', '<![CDATA[': ']]>', '<?': '?>', '<!': '>'}
 _PLAIN = re.compile(r'<[^\s<>/]+(?: [^\s=<>]+="[^"<>]*")*/?>')  # as lxml writes it
 
@@ -61,24 +63,18 @@ def source_tag(tags: SourceTags, node: Any) -> str | None:
 # once (group 2: the element is empty and was written ``<x></x>``).
 _TOKEN = re.compile(r'<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<![^>]*>|</[^>]*>|'
                     r'(<[^\s<>/!?](?:"[^"]*"|\'[^\']*\'|[^>"\'])*+>)(</)?', re.DOTALL)
-# A whole document whose start tags all are as lxml writes them, none of them empty
-# with an end tag: then nothing needs recording (one C-level match, no Python per tag).
-_ALL_PLAIN = re.compile(r'(?:[^<]++|<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<![^>]*>|'
-                        r'</[^>]*>|<[^\s<>/!?]+(?: [^\s=<>]+="[^"<>]*")*(?:/>|>(?!</)))*+',
-                        re.DOTALL)
-
-
-def unusual_start_tags(document: Any, text: str) -> SourceTags:
+def unusual_start_tags(document: Any, text: str, start: int | None = None) -> SourceTags:
     """
     Return the source start tags of the document's elements that lxml would write otherwise.
 
     That is: line breaks, tabs, runs of spaces or single quotes inside the tag, and the
     start tag of an empty element written with an end tag (``<link></link>``, which lxml
     writes ``<link/>``). ``text`` is the whole source; its start tags come in the
-    elements' order.
+    elements' order; ``start`` is where the document element starts in it, if known.
     """
-    if _ALL_PLAIN.fullmatch(text):
-        return {}
+    if start is not None and text.startswith(
+            etree.tostring(document, encoding='unicode', with_tail=False), start):
+        return {}  # lxml writes the whole element as the source has it
     found: SourceTags = {}
     elements = None
     index = 0

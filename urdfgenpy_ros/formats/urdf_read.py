@@ -57,6 +57,7 @@ class _Reader:
         self.warnings = warnings
         self.materials: dict[str, Material] = {}  # robot-level materials read so far
         self.unresolved = False  # a visual refers to a material not (yet) defined
+        self.vectors: dict[str, tuple[float, ...]] = {}  # vectors read, by their text
 
     def fail(self, node: Any, message: str, code: str = 'P002',
              attribute: str | None = None) -> ParseError:
@@ -163,28 +164,28 @@ class _Reader:
         if self.unresolved:
             for link in _share_materials(robot):
                 record(link)
+        text = self.source.data.decode('utf-8', 'replace')
+        head, start = _opening_tag(text, root) if root is top else (None, None)
         robot.extras = DocumentPreserved(
             root, order, (list(root.itersiblings(preceding=True))[::-1],
-                          list(root.itersiblings())), self._layout(root, root is top),
-            unusual_start_tags(top, self.source.data.decode('utf-8', 'replace')))
+                          list(root.itersiblings())), self._layout(root, head, text),
+            unusual_start_tags(top, text, start))
         return robot
 
-    def _layout(self, root: Any, is_document: bool) -> Layout:
+    def _layout(self, root: Any, head: str | None, text: str) -> Layout:
         """Return how the file is written: indentation, line ends, quotes, first lines."""
         data = self.source.data
         ws = root.text or ''
         unit = ws.rsplit('\n', 1)[-1] if '\n' in ws else ''
         unit = unit if unit and not unit.strip() else '  '
-        newline = '\r\n' if b'\r\n' in data else '\n'
-        quote = "'" if data.count(b"='") > data.count(b'="') else '"'
-        text = data[:4096].decode('utf-8', 'replace')
-        match = _DECLARATION.match(text)
-        if match is None and is_document and text.lstrip().startswith('<'):
+        newline = '\r\n' if b'\r' in data and b'\r\n' in data else '\n'
+        quote = "'" if b"'" in data and data.count(b"='") > data.count(b'="') else '"'
+        match = _DECLARATION.match(text, 0, 4096)
+        if match is None and root.getparent() is None and text[:4096].lstrip().startswith('<'):
             declaration = ''  # the file has none: it gets none
         else:
             declaration = match.group(1) if match and not any(
                 warning.code == 'P102' for warning in self.warnings) else '<?xml version="1.0"?>'
-        head = _opening_tag(self.source, root) if is_document else None
         return Layout(unit, newline, quote, declaration, head)
 
     def _attach(self, robot: Robot, block: Extension, joints: list[Joint]) -> None:
@@ -220,15 +221,14 @@ class _Reader:
         return inner
 
 
-def _opening_tag(source: Source, root: Any) -> str | None:
+def _opening_tag(text: str, root: Any) -> tuple[str | None, int | None]:
     """
-    Return the root's opening tag exactly as the file wrote it, if it can be found.
+    Return the root's opening tag exactly as the file wrote it and where, if found.
 
     lxml's ``sourceline`` is the line a start tag ends on: look back from its end.
     """
     if root.sourceline is None:
-        return None
-    text = source.data.decode('utf-8', 'replace')
+        return None, None
     end = -1
     for _ in range(root.sourceline):
         end = text.find('\n', end + 1)
@@ -237,9 +237,9 @@ def _opening_tag(source: Source, root: Any) -> str | None:
             break
     start = text.rfind('<robot', 0, end)
     if start < 0:
-        return None
+        return None, None
     head = text[start:tag_end(text, start)]
-    return None if head.endswith('/>') else head.replace('\r\n', '\n')
+    return (None if head.endswith('/>') else head.replace('\r\n', '\n')), start
 
 
 def _share_materials(robot: Robot) -> list[Link]:

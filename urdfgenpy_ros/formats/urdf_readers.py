@@ -105,13 +105,15 @@ def _attributes(code: _Code, element: Element, node: str, indent: int) -> None:
         else:
             count = 3 if attr.kind == VEC3 else 4
             parts = ', '.join(f'float(p[{index}])' for index in range(count))
-            code.add(indent + 1, 'p = t.split()')
-            code.add(indent + 1, 'try:')
-            code.add(indent + 2, f'if len(p) != {count}:')
-            code.add(indent + 3, 'raise ValueError')
-            code.add(indent + 2, f'{target} = ({parts})')
-            code.add(indent + 1, 'except ValueError:')
-            code.add(indent + 2, f'raise r.not_vector({node}, {attr.name!r}, t, {count}) '
+            code.add(indent + 1, f'{target} = vectors.get(t)')  # the same text, the same tuple
+            code.add(indent + 1, f'if {target} is None or len({target}) != {count}:')
+            code.add(indent + 2, 'p = t.split()')
+            code.add(indent + 2, 'try:')
+            code.add(indent + 3, f'if len(p) != {count}:')
+            code.add(indent + 4, 'raise ValueError')
+            code.add(indent + 3, f'{target} = vectors[t] = ({parts})')
+            code.add(indent + 2, 'except ValueError:')
+            code.add(indent + 3, f'raise r.not_vector({node}, {attr.name!r}, t, {count}) '
                                  'from None')
         code.have.add(attr.field)
 
@@ -211,6 +213,7 @@ def _compile(element: Element, namespace: dict[str, Any]) -> Reader:
     assert element.cls is not None
     code = _Code(namespace, element.cls)
     code.add(0, 'def read(r, node):')
+    code.add(1, 'vectors = r.vectors')
     _attributes(code, element, 'node', 1)
     if element.tag == 'joint':
         code.add(1, 'kind = TYPES.get(f_type)')

@@ -170,10 +170,12 @@ def unusable(tag: str, node: Any) -> str | None:
     writer keeps the child as written, like an unknown one, until the model gets a value
     for it, which then takes its place.
     """
-    if node.tag == 'inertial' and tag == 'link' and node.find('inertia') is None:
+    if node.tag == 'inertial' and tag == 'link':
+        if any(child.tag == 'inertia' for child in node):
+            return None
         return '<inertial> without <inertia> (MuJoCo refuses it): add <inertia ixx=... izz=.../>'
     if node.tag == 'material' and tag == 'visual':
-        color = node.find('color')
+        color = next((child for child in node if child.tag == 'color'), None)
         rgba = color.get('rgba') if color is not None else None
         if rgba is not None and not _numbers(rgba, 4):
             return (f'<material> colour rgba {rgba!r} is not 4 numbers (MuJoCo refuses it): '
