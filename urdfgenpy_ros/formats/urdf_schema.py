@@ -171,11 +171,11 @@ def unusable(tag: str, node: Any) -> str | None:
     for it, which then takes its place.
     """
     if node.tag == 'inertial' and tag == 'link':
-        if any(child.tag == 'inertia' for child in node):
+        for _ in node.iterchildren('inertia'):
             return None
         return '<inertial> without <inertia> (MuJoCo refuses it): add <inertia ixx=... izz=.../>'
-    if node.tag == 'material' and tag == 'visual':
-        color = next((child for child in node if child.tag == 'color'), None)
+    if node.tag == 'material' and tag == 'visual' and len(node):
+        color = next(node.iterchildren('color'), None)
         rgba = color.get('rgba') if color is not None else None
         if rgba is not None and not _numbers(rgba, 4):
             return (f'<material> colour rgba {rgba!r} is not 4 numbers (MuJoCo refuses it): '
@@ -235,6 +235,24 @@ def plan(cls: type) -> tuple[tuple[str, ...], tuple[str, ...], tuple[str, ...]]:
     return _PLANS[cls]
 
 
+def _compile_values() -> dict[type, Callable[[Any], tuple]]:
+    """Return, per model class, a function that takes a by-value snapshot of an object."""
+    namespace: dict[str, Any] = {}
+    for number, (cls, (fields, nested, lists)) in enumerate(_PLANS.items()):
+        parts = [f'item.{name}' for name in fields]
+        parts += [f'(None if (part := item.{name}) is None else V[type(part)](part))'
+                  for name in nested]
+        parts += [f'tuple([V[type(part)](part) for part in item.{name}])' for name in lists]
+        code = f'def values_{number}(item):\n    return ({", ".join(parts)},)'
+        exec(compile(code, f'<values {cls.__name__}>', 'exec'), namespace)  # noqa: S102
+    functions = {cls: namespace[f'values_{number}'] for number, cls in enumerate(_PLANS)}
+    namespace['V'] = functions
+    return functions
+
+
+_VALUES = _compile_values()
+
+
 def values(item: Any) -> tuple:
     """
     Return a by-value snapshot of a model element: equal snapshots, nothing was edited.
@@ -242,14 +260,7 @@ def values(item: Any) -> tuple:
     Frozen parts (origins, shapes, materials) compare by value as they are; mutable ones
     (inertials, limits, visuals ...) are taken apart, so a later edit shows.
     """
-    fields, nested, lists = _PLANS[type(item)]
-    snapshot = [getattr(item, name) for name in fields]
-    for name in nested:
-        part = getattr(item, name)
-        snapshot.append(None if part is None else values(part))
-    for name in lists:
-        snapshot.append(tuple(values(part) for part in getattr(item, name)))
-    return tuple(snapshot)
+    return _VALUES[type(item)](item)
 
 
 def record(item: Any) -> tuple:
