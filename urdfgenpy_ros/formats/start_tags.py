@@ -27,7 +27,6 @@ from typing import Any
 
 from lxml import etree
 
-_SKIP = {'<!--': '-->', '<![CDATA[': ']]>', '<?': '?>', '<!': '>'}
 _PLAIN = re.compile(r'<[^\s<>/]+(?: [^\s=<>]+="[^"<>]*")*/?>')  # as lxml writes it
 
 
@@ -100,15 +99,21 @@ def restore_start_tags(serialized: str, node: Any, tags: SourceTags) -> str:
     elements = [item for item in node.iter() if isinstance(item.tag, str)]
     if not any(item in tags for item in elements):
         return serialized
-    parts, position = [], 0
-    for item in elements:
-        start = _next_start(serialized, position)
+    parts, position, index = [], 0, 0
+    for match in _TOKEN.finditer(serialized):
+        start, end = match.span(1)
         if start < 0:
+            continue
+        if index == len(elements):
             return serialized  # not the shape expected: keep lxml's text
-        end = tag_end(serialized, start)
-        parts.append(serialized[position:start])
-        parts.append(_as_source(source_tag(tags, item), serialized[start:end]))
-        position = end
+        recorded = source_tag(tags, elements[index])
+        index += 1
+        if recorded is not None:
+            parts.append(serialized[position:start])
+            parts.append(_as_source(recorded, serialized[start:end]))
+            position = end
+    if index != len(elements):
+        return serialized
     parts.append(serialized[position:])
     return ''.join(parts)
 
@@ -126,20 +131,3 @@ def _as_source(recorded: str | None, written: str) -> str:
 
 
 _NAME = re.compile(r'<([^\s/>]+)')
-
-
-def _next_start(text: str, position: int) -> int:
-    """Return where the next start tag begins: comments, CDATA, end tags skipped."""
-    while True:
-        found = text.find('<', position)
-        if found < 0:
-            return -1
-        skipped = next((end for opening, end in _SKIP.items()
-                        if text.startswith(opening, found)), None)
-        if skipped is not None:
-            close = text.find(skipped, found + 2)
-            position = len(text) if close < 0 else close + len(skipped)
-        elif text.startswith('</', found):
-            position = found + 2
-        else:
-            return found
