@@ -34,7 +34,7 @@ from urdfgenpy_ros.errors import ParseError, ReadWarning, SourceLocation
 PARSER = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
                          huge_tree=False, collect_ids=False)
 _DECLARATION = re.compile(rb'^\s*<\?xml\b[^>]*\?>')
-_DOCTYPE = re.compile(rb'<!DOCTYPE', re.IGNORECASE)
+_DOCTYPE = re.compile(rb'<!DOCTYPE', re.IGNORECASE)  # searched for where a '<!' is
 _UNDECLARED = re.compile(r'Namespace prefix (\S+) (?:for \S+ )?on \S+ is not defined')
 
 
@@ -83,7 +83,7 @@ def parse_xml(data: bytes, file: str | None) -> tuple[Any, Source, list[ReadWarn
     """
     source = Source(file, data)
     warnings: list[ReadWarning] = []
-    match = _DOCTYPE.search(data)
+    match = _DOCTYPE.search(data) if b'<!' in data else None
     if match:
         line = data.count(b'\n', 0, match.start()) + 1
         raise ParseError('<!DOCTYPE> is not allowed in a robot description (it can declare '
