@@ -36,9 +36,12 @@ def _setters(cls: type, *names: str) -> tuple:
 def _positive(owner: str, names: tuple[str, ...], *values: float) -> tuple[float, ...]:
     """Return sizes unchanged when they are positive floats, else check them in full."""
     for value in values:
-        if type(value) is not float or not 0.0 < value < math.inf:
+        if type(value) is not float or not 0.0 < value < _INF:
             return checks.numbers(owner, names, values, 0.0, strict=True)
     return values
+
+
+_INF = math.inf
 
 
 @dataclass(slots=True, frozen=True, init=False)
@@ -53,11 +56,10 @@ class Origin:
 
     def __init__(self, xyz: Sequence[float] = _ZERO, rpy: Sequence[float] = _ZERO, *,
                  source: SourceLocation | None = None, extras: Preserved | None = None) -> None:
-        set_xyz, set_rpy, set_source, set_extras = _ORIGIN_SLOTS
-        set_xyz(self, xyz if xyz is _ZERO else checks.vec3('origin', 'xyz', xyz))
-        set_rpy(self, rpy if rpy is _ZERO else checks.vec3('origin', 'rpy', rpy))
-        set_source(self, source)
-        set_extras(self, extras)
+        _ORIGIN_SLOTS[0](self, xyz if xyz is _ZERO else checks.vec3('origin', 'xyz', xyz))
+        _ORIGIN_SLOTS[1](self, rpy if rpy is _ZERO else checks.vec3('origin', 'rpy', rpy))
+        _ORIGIN_SLOTS[2](self, source)
+        _ORIGIN_SLOTS[3](self, extras)
 
     @property
     def is_identity(self) -> bool:
@@ -98,13 +100,15 @@ class Box:
 
     def __init__(self, length: float, width: float, height: float, *,
                  source: SourceLocation | None = None, extras: Preserved | None = None) -> None:
-        length, width, height = _positive('box', _BOX_SIZES, length, width, height)
-        set_length, set_width, set_height, set_source, set_extras = _BOX_SLOTS
-        set_length(self, length)
-        set_width(self, width)
-        set_height(self, height)
-        set_source(self, source)
-        set_extras(self, extras)
+        if not (type(length) is float and type(width) is float and type(height) is float
+                and 0.0 < length < _INF and 0.0 < width < _INF and 0.0 < height < _INF):
+            length, width, height = checks.numbers('box', _BOX_SIZES, (length, width, height),
+                                                   0.0, strict=True)
+        _BOX_SLOTS[0](self, length)
+        _BOX_SLOTS[1](self, width)
+        _BOX_SLOTS[2](self, height)
+        _BOX_SLOTS[3](self, source)
+        _BOX_SLOTS[4](self, extras)
 
     @property
     def size(self) -> Vec3:
@@ -131,7 +135,10 @@ class Cylinder:
 
     def __init__(self, radius: float, length: float, *, source: SourceLocation | None = None,
                  extras: Preserved | None = None) -> None:
-        radius, length = _positive('cylinder', ('radius', 'length'), radius, length)
+        if not (type(radius) is float and type(length) is float
+                and 0.0 < radius < _INF and 0.0 < length < _INF):
+            radius, length = checks.numbers('cylinder', ('radius', 'length'), (radius, length),
+                                            0.0, strict=True)
         set_radius, set_length, set_source, set_extras = _CYLINDER_SLOTS
         set_radius(self, radius)
         set_length(self, length)
@@ -157,7 +164,8 @@ class Sphere:
 
     def __init__(self, radius: float, *, source: SourceLocation | None = None,
                  extras: Preserved | None = None) -> None:
-        (radius,) = _positive('sphere', ('radius',), radius)
+        if not (type(radius) is float and 0.0 < radius < _INF):
+            (radius,) = checks.numbers('sphere', ('radius',), (radius,), 0.0, strict=True)
         set_radius, set_source, set_extras = _SPHERE_SLOTS
         set_radius(self, radius)
         set_source(self, source)

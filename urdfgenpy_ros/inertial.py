@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field, KW_ONLY
+import math
 
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import ModelError, ModelTypeError, SourceLocation
@@ -92,9 +93,20 @@ class Inertial:
     @classmethod
     def _of_solid(cls, kind: str, mass: float, dims: tuple[float, ...],
                   origin: Origin | None) -> Inertial:
-        if not (checks.are_finite_floats(mass) and mass >= 0.0):
+        if not (type(mass) is float and 0.0 <= mass < _INF):
             mass = checks.non_negative(f'Inertial.from_{kind}', 'mass', mass, 'kg')
-        inertial = cls(mass, *_SOLID_TENSORS[kind](mass, *dims), origin=origin or IDENTITY)
+        tensor = _SOLID_TENSORS[kind](mass, *dims)
+        total = sum(tensor)
+        if cls is not Inertial or total - total != 0.0 or (
+                origin is not None and type(origin) is not Origin):
+            inertial = cls(mass, *tensor, origin=origin or IDENTITY)
+        else:  # finite floats computed from checked ones: nothing left to check
+            inertial = _new(cls)
+            inertial.mass = mass
+            (inertial.ixx, inertial.ixy, inertial.ixz, inertial.iyy, inertial.iyz,
+             inertial.izz) = tensor
+            inertial.origin = origin or IDENTITY
+            inertial.source = inertial.extras = None
         inertial.solid = (kind, mass, *dims)
         return inertial
 
@@ -154,5 +166,7 @@ class Inertial:
         return inertial_from_meshlab(mass, volume, tensor, centre)
 
 
+_INF = math.inf
+_new = object.__new__
 _SOLID_TENSORS: dict[str, Callable[..., tuple[float, ...]]] = {
     'box': box_tensor, 'cylinder': cylinder_tensor, 'sphere': sphere_tensor}

@@ -60,6 +60,7 @@ class JointType(str, Enum):
 _ONE_DOF = frozenset((JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC))
 _TYPES: dict[object, JointType] = {**{t.value: t for t in JointType}, **{t: t for t in JointType}}
 _LIMIT_FIELDS = ('lower', 'upper', 'effort', 'velocity')
+_INF = float('inf')
 _TYPE_NAMES = ', '.join(t.value for t in JointType)
 
 
@@ -83,13 +84,14 @@ class JointLimit:
     def __post_init__(self) -> None:
         """Coerce to floats; reject negative effort or velocity."""
         try:
-            self.lower, self.upper = float(self.lower), float(self.upper)
-            self.effort, self.velocity = float(self.effort), float(self.velocity)
+            lower, upper = self.lower, self.upper = float(self.lower), float(self.upper)
+            effort, velocity = self.effort, self.velocity = (float(self.effort),
+                                                             float(self.velocity))
+            if (lower - lower == 0.0 and upper - upper == 0.0 and 0.0 <= effort < _INF
+                    and 0.0 <= velocity < _INF):
+                return
         except (TypeError, ValueError):
             pass
-        if (checks.are_finite_floats(self.lower, self.upper, self.effort, self.velocity)
-                and self.effort >= 0.0 and self.velocity >= 0.0):
-            return
         self.lower, self.upper, self.effort, self.velocity = checks.numbers(
             'limit', _LIMIT_FIELDS, (self.lower, self.upper, self.effort, self.velocity))
         if not (self.effort >= 0.0 and self.velocity >= 0.0):

@@ -62,6 +62,8 @@ def source_tag(tags: SourceTags, node: Any) -> str | None:
 # once (group 2: the element is empty and was written ``<x></x>``).
 _TOKEN = re.compile(r'<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<![^>]*>|</[^>]*>|'
                     r'(<[^\s<>/!?](?:"[^"]*"|\'[^\']*\'|[^>"\'])*+>)(</)?', re.DOTALL)
+
+
 def unusual_start_tags(document: Any, text: str, start: int | None = None) -> SourceTags:
     """
     Return the source start tags of the document's elements that lxml would write otherwise.

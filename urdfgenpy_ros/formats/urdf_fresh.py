@@ -105,14 +105,18 @@ def _body(element: Element, lines: list[str], indent: str, depth: int) -> None:
     lines.append(f"{indent}    t = '<{element.tag}' + a + '/>'")
 
 
+_BINDINGS = {'unit': 'writer.unit', 'number': 'writer.number', 'vector': 'writer.vector',
+             'known': 'writer.known_number', 'obj': 'writer.object_text'}
+
+
 def _compile(element: Element) -> Writer:
-    lines = ['def fresh(writer, item, p0):',
-             '    unit = writer.unit',
-             '    number = writer.number',
-             '    vector = writer.vector',
-             '    known = writer.known_number',
-             '    obj = writer.object_text']
-    _body(element, lines, '    ', 0)
+    body: list[str] = []
+    _body(element, body, '    ', 0)
+    used = '\n'.join(body)
+    lines = ['def fresh(writer, item, p0):']
+    lines += [f'    {name} = {value}' for name, value in _BINDINGS.items()
+              if f'{name}(' in used or f'+ {name}' in used]  # only what the body uses
+    lines += body
     lines.append('    return t')
     namespace: dict[str, Any] = {'esc': esc}
     exec(compile('\n'.join(lines), f'<fresh {element.tag}>', 'exec'), namespace)  # noqa: S102

@@ -244,7 +244,7 @@ def _opening_tag(text: str, root: Any) -> tuple[str | None, int | None]:
 
 def _share_materials(robot: Robot) -> list[Link]:
     """Point plain references (``<material name="x"/>``) at the robot-level material."""
-    changed = []
+    changed: list[Link] = []
     for link in robot.links:
         for visual in link.visuals:
             material = visual.material

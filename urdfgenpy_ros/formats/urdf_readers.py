@@ -67,7 +67,7 @@ class _Code:
         self.lines.append('    ' * indent + line)
 
     def default(self, name: str) -> str:
-        """Return the expression of field ``name``'s default (None for a required field)."""
+        """Return the expression of a field's default value (None for a required field)."""
         item = self.fields[name]
         if item.default_factory is list:
             return '[]'
