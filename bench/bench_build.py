@@ -17,8 +17,9 @@ Build and write robots of 10 to 10,000 links with three libraries, side by side.
 
 Each link has a box visual, a box collision and a box inertial; links hang from a
 revolute joint with limits, as a chain or as a wide tree (every link on the root). For
-each library, shape and size the script reports the median wall time of build + write
-over several runs and the peak Python memory of one run (tracemalloc).
+each library, shape and size the script reports the median wall times of building and of
+writing over several interleaved runs (each round runs every library once) and the peak
+Python memory of one build + write (tracemalloc).
 
     python bench/bench_build.py [--repeat 7] [--json out.json]
 """
@@ -26,6 +27,7 @@ over several runs and the peak Python memory of one run (tracemalloc).
 from __future__ import annotations
 
 import argparse
+from collections.abc import Callable
 import functools
 import gc
 import importlib
@@ -33,14 +35,15 @@ import json
 import statistics
 import time
 import tracemalloc
+from typing import Any
 
 
 def _parent(shape: str, index: int) -> int:
     return index - 1 if shape == 'chain' else 0
 
 
-def seed_api(library: str, count: int, shape: str) -> str:
-    """Build and write with the seeds' API, which urdfgenpy_ros and urdfgenpy 0.4.0 share."""
+def seed_build(library: str, count: int, shape: str) -> Any:
+    """Build with the seeds' API, which urdfgenpy_ros and urdfgenpy 0.4.0 share."""
     m = importlib.import_module(library)
     robot = m.Robot('bench')
     for index in range(count):
@@ -56,11 +59,11 @@ def seed_api(library: str, count: int, shape: str) -> str:
                                     f'link_{_parent(shape, index)}', f'link_{index}',
                                     origin=m.Origin(xyz=(0, 0, 0.2)), axis=(0, 0, 1),
                                     limit=m.JointLimit(-1.57, 1.57, effort=10, velocity=1)))
-    return robot.to_urdf()
+    return robot
 
 
-def yourdfpy_(count: int, shape: str) -> str:
-    """Build and write with yourdfpy's dataclasses and its XML writer."""
+def yourdfpy_build(count: int, shape: str) -> Any:
+    """Build with yourdfpy's dataclasses."""
     import numpy
     import yourdfpy as y
     links, joints = [], []
@@ -85,31 +88,56 @@ def yourdfpy_(count: int, shape: str) -> str:
                                   axis=numpy.array([0.0, 0.0, 1.0]),
                                   limit=y.Limit(effort=10, velocity=1, lower=-1.57,
                                                 upper=1.57)))
-    urdf = y.URDF(y.Robot(name='bench', links=links, joints=joints),
+    return y.URDF(y.Robot(name='bench', links=links, joints=joints),
                   build_scene_graph=False, load_meshes=False)
-    return urdf.write_xml_string().decode()
 
 
-LIBRARIES = {'urdfgenpy_ros': functools.partial(seed_api, 'urdfgenpy_ros'),
-             'urdfgenpy 0.4.0': functools.partial(seed_api, 'urdfgenpy'),
-             'yourdfpy': yourdfpy_}
+LIBRARIES: dict[str, tuple[Callable[[int, str], Any], Callable[[Any], str]]] = {
+    'urdfgenpy_ros': (functools.partial(seed_build, 'urdfgenpy_ros'),
+                      lambda robot: robot.to_urdf()),
+    'urdfgenpy 0.4.0': (functools.partial(seed_build, 'urdfgenpy'),
+                        lambda robot: robot.to_urdf()),
+    'yourdfpy': (yourdfpy_build, lambda urdf: urdf.write_xml_string().decode())}
 
 
-def measure(function, count: int, shape: str, repeat: int) -> tuple[float, float]:
-    """Return (median seconds, peak MiB) of build + write."""
-    function(10, shape)  # warm up imports
-    times = []
-    for _ in range(repeat):
-        gc.collect()
-        start = time.perf_counter()
-        function(count, shape)
-        times.append(time.perf_counter() - start)
+def _once(library: tuple[Callable[[int, str], Any], Callable[[Any], str]], count: int,
+          shape: str) -> tuple[float, float]:
+    """Return the seconds of one build and of writing what it built."""
+    build, write = library
     gc.collect()
-    tracemalloc.start()
-    function(count, shape)
-    peak = tracemalloc.get_traced_memory()[1]
-    tracemalloc.stop()
-    return statistics.median(times), peak / 2 ** 20
+    start = time.perf_counter()
+    model = build(count, shape)
+    built = time.perf_counter()
+    write(model)
+    return built - start, time.perf_counter() - built
+
+
+def measure(count: int, shape: str, repeat: int) -> dict[str, tuple[float, float, float]]:
+    """
+    Return, per library, the median build and write seconds and the peak MiB.
+
+    The runs are interleaved (each round runs every library once), so that the load of a
+    shared machine falls on all of them alike; the peak memory of build + write comes
+    from one more run each, under tracemalloc.
+    """
+    for build, write in LIBRARIES.values():
+        write(build(10, shape))  # warm up imports
+    times: dict[str, list[tuple[float, float]]] = {name: [] for name in LIBRARIES}
+    for _ in range(repeat):
+        for name, library in LIBRARIES.items():
+            times[name].append(_once(library, count, shape))
+    figures = {}
+    for name, (build, write) in LIBRARIES.items():
+        gc.collect()
+        tracemalloc.start()
+        write(build(count, shape))
+        peak = tracemalloc.get_traced_memory()[1]
+        tracemalloc.stop()
+        runs = times[name]
+        figures[name] = (statistics.median(b for b, _ in runs),
+                         statistics.median(w for _, w in runs),
+                         peak / 2 ** 20)
+    return figures
 
 
 def main() -> None:
@@ -120,19 +148,21 @@ def main() -> None:
     parser.add_argument('--json', help='also write the figures to this file')
     args = parser.parse_args()
     rows = []
-    print('| shape | links | library | median build+write (ms) | us/link | peak MiB |'
-          ' vs urdfgenpy 0.4.0 |')
-    print('|---|---:|---|---:|---:|---:|---:|')
+    print('| shape | links | library | median build (ms) | median write (ms) | build+write (ms) |'
+          ' us/link | peak MiB | vs urdfgenpy 0.4.0 |')
+    print('|---|---:|---|---:|---:|---:|---:|---:|---:|')
     for shape in ('chain', 'wide'):
         for count in args.sizes:
-            figures = {name: measure(function, count, shape, args.repeat)
-                       for name, function in LIBRARIES.items()}
-            base = figures['urdfgenpy 0.4.0'][0]
-            for name, (seconds, peak) in figures.items():
+            figures = measure(count, shape, args.repeat)
+            base = sum(figures['urdfgenpy 0.4.0'][:2])
+            for name, (build, write, peak) in figures.items():
+                seconds = build + write
                 rows.append({'shape': shape, 'links': count, 'library': name,
+                             'build_seconds': build, 'write_seconds': write,
                              'seconds': seconds, 'peak_mib': peak})
-                print(f'| {shape} | {count} | {name} | {seconds * 1e3:.2f} | '
-                      f'{seconds / count * 1e6:.1f} | {peak:.1f} | {base / seconds:.2f}x |')
+                print(f'| {shape} | {count} | {name} | {build * 1e3:.1f} | {write * 1e3:.1f} | '
+                      f'{seconds * 1e3:.1f} | {seconds / count * 1e6:.1f} | {peak:.1f} | '
+                      f'{base / seconds:.2f}x |')
     if args.json:
         with open(args.json, 'w', encoding='utf-8') as stream:
             json.dump(rows, stream, indent=1)

@@ -183,3 +183,49 @@ def test_an_edited_block_of_a_copied_robot_is_written(tmp_path: Path) -> None:
     removed, added = _changed(_source(FIXTURES / 'two_space.urdf'), robot.to_urdf())
     assert removed == ['  <transmission name="pan_transmission">']
     assert added == ['  <transmission name="wrist_transmission">']
+
+
+_END_TAGS = """<?xml version="1.0"?>
+<robot name="end_tags">
+  <link name="world"></link>
+  <link name="base">
+    <visual>
+      <geometry><box size="0.1 0.2 0.3"></box></geometry>
+    </visual>
+  </link>
+  <joint name="fixed_base" type="fixed">
+    <parent link="world"></parent>
+    <child link="base"/>
+    <origin xyz="0 0 0.5"></origin>
+  </joint>
+  <gazebo reference="base">
+    <self_collide>true</self_collide>
+    <sensor_hint></sensor_hint>
+  </gazebo>
+</robot>
+"""
+
+
+def test_empty_elements_written_with_end_tags_survive(tmp_path: Path) -> None:
+    """``<link></link>`` comes back as written (lxml alone writes ``<link/>``); edits too."""
+    robot = Robot.from_urdf_string(_END_TAGS)
+    assert robot.to_urdf() == _END_TAGS
+    robot.get_joint('fixed_base').origin = Origin((0.0, 0.0, 0.75))
+    text = robot.to_urdf(tmp_path / 'out.urdf')
+    removed, added = _changed(_END_TAGS, text)
+    assert removed == ['    <origin xyz="0 0 0.5"></origin>']
+    assert added == ['    <origin xyz="0 0 0.75"></origin>']
+    theirs = load_yourdfpy(tmp_path / 'out.urdf')
+    assert [link.name for link in theirs.links] == ['world', 'base']
+    assert theirs.joints[0].origin[2][3] == 0.75
+
+
+def test_an_empty_block_element_given_children_is_written_open() -> None:
+    """An element read as ``<x></x>`` that gets a child is written with it, as valid XML."""
+    from lxml import etree
+    robot = Robot.from_urdf_string(_END_TAGS)
+    hint = robot.get_link('base').extensions[0].element.find('sensor_hint')
+    etree.SubElement(hint, 'rate').text = '10'
+    written = etree.fromstring(robot.to_urdf().encode())
+    assert written.find('gazebo/sensor_hint/rate').text == '10'
+    assert written.find('link').get('name') == 'world'

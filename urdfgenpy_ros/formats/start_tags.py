@@ -32,18 +32,11 @@ _PLAIN = re.compile(r'<[^\s<>/]+(?: [^\s=<>]+="[^"<>]*")*/?>')  # as lxml writes
 
 def tag_end(text: str, start: int) -> int:
     """Return the index just after the ``>`` closing the start tag at ``start``."""
-    quote = ''
-    for index in range(start + 1, len(text)):
-        char = text[index]
-        if quote:
-            if char == quote:
-                quote = ''
-        elif char in '"\'':
-            quote = char
-        elif char == '>':
-            return index + 1
-    return len(text)
+    match = _TAG_REST.match(text, start + 1)
+    return len(text) if match is None else match.end()
 
+
+_TAG_REST = re.compile(r'(?:"[^"]*"|\'[^\']*\'|[^>"\'])*+>')  # a start tag after its '<'
 
 SourceTags = dict[Any, tuple[str, tuple[tuple[str, str], ...]]]
 """Per element, its source start tag and the attributes it had when read."""
@@ -76,7 +69,7 @@ def unusual_start_tags(document: Any, text: str, start: int | None = None) -> So
     if start is not None and text.startswith(
             etree.tostring(document, encoding='unicode', with_tail=False), start):
         return {}  # lxml writes the whole element as the source has it
-    found: SourceTags = {}
+    found = _Recorded()
     elements = None
     index = 0
     for tag, closed in _TOKEN.findall(text):
@@ -94,10 +87,30 @@ def unusual_start_tags(document: Any, text: str, start: int | None = None) -> So
     return found
 
 
+class _Recorded(dict[Any, tuple[str, tuple[tuple[str, str], ...]]]):
+    """The recorded start tags, and the last text they were put back into (``memo``)."""
+
+    __slots__ = ('memo',)
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.memo: tuple[Any, str, str] | None = None  # node, lxml's text, restored text
+
+
 def restore_start_tags(serialized: str, node: Any, tags: SourceTags) -> str:
     """Return lxml's serialisation of ``node`` with its elements' source start tags."""
     if not tags:
         return serialized
+    memo = getattr(tags, 'memo', None)
+    if memo is not None and memo[0] is node and memo[1] == serialized:
+        return memo[2]  # written again unchanged (a node republishing, say): same text
+    restored = _restore(serialized, node, tags)
+    if isinstance(tags, _Recorded):
+        tags.memo = (node, serialized, restored)
+    return restored
+
+
+def _restore(serialized: str, node: Any, tags: SourceTags) -> str:
     elements = [item for item in node.iter() if isinstance(item.tag, str)]
     if not any(item in tags for item in elements):
         return serialized

@@ -163,7 +163,7 @@ class ElementWriter:
             attrs = self._as_written(tag, node, attrs)
         if not element.children:
             if node is None or not len(node):
-                return f'<{tag}{attrs}/>'
+                return self._empty(tag, attrs, node)
             return self._merge(element, attrs, [], node, pad, pad)
         inner = self._inner(node, pad)
         children = self._children(element, item, node, inner)
@@ -186,6 +186,15 @@ class ElementWriter:
             return attrs
         body = source[len(tag) + 1:]
         return body[:-2] if body.endswith('/>') else body[:-1]
+
+    def _empty(self, tag: str, attrs: str, node: Any) -> str:
+        """Return an element without content: ``<x/>``, or ``<x></x>`` as its source had it."""
+        extras = self.robot.extras
+        recorded = extras.start_tags.get(node) if extras is not None and node is not None \
+            else None
+        if recorded is not None and not recorded[0].endswith('/>'):
+            return f'<{tag}{attrs}></{tag}>'
+        return f'<{tag}{attrs}/>'
 
     def _inner(self, node: Any, pad: str | None) -> str | None:
         """Return the indentation of children (None: written on one line)."""
@@ -317,7 +326,7 @@ class ElementWriter:
                                      if entry[2] is not None), len(items))
                 items.insert(position, (fresh, text, child))
         if not items and not trailing.strip():
-            return f'<{tag}{attrs}/>'
+            return self._empty(tag, attrs, node)
         body = ''.join(space + text for space, text, _ in items)
         return f'<{tag}{attrs}>{body}{trailing}</{tag}>'
 
