@@ -23,12 +23,15 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from os import PathLike
+from pathlib import Path
 import re
 from typing import Any, TYPE_CHECKING
 
+from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import esc, write_text
+from urdfgenpy_ros.formats.start_tags import tag_end
 from urdfgenpy_ros.formats.urdf import UrdfWriter
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.link import Link
@@ -167,3 +170,107 @@ def write_xacro(robot: Robot, path: str | PathLike[str] | None = None, *,
     if path is not None:
         write_text(path, text)
     return text
+
+
+# ---- reusable macros ------------------------------------------------------------------
+
+PREFIX_MARK = 'urdfgenpyprefixmark'
+"""Stands for ``${prefix}`` while the macro body is written (a valid name, no ``$``)."""
+
+
+class _MacroBody(XacroWriter):
+    """The Xacro writer for a robot whose names start with PREFIX_MARK."""
+
+    def __init__(self, robot: Robot) -> None:
+        super().__init__(robot, materials=False)
+        taken: set[str] = set()  # mass properties are named after the unprefixed links
+        self.mass_names = {link.name: _identifier(link.name.replace(PREFIX_MARK, ''), taken)
+                           for link in robot.links if link.inertial is not None}
+
+
+def macro_name(robot: Robot) -> str:
+    """Return the name of the robot's Xacro macro: its name as an identifier."""
+    name = re.sub(r'\W', '_', robot.name)
+    return name if name and not name[0].isdigit() else f'_{name}'
+
+
+def macro_xacro(robot: Robot) -> str:
+    """
+    Return ``<name>.macro.xacro``: the robot as ``<xacro:macro params="prefix parent *origin">``.
+
+    Every link, joint and reference gets ``${prefix}`` (as :meth:`Robot.prefixed` does);
+    a non-empty ``parent`` adds the fixed joint ``${parent}_to_${prefix}<root>`` placed by
+    the ``origin`` block, as :meth:`Robot.attach` names it. Robot-level materials stand
+    outside the macro, so a file that includes it once can call it many times.
+    """
+    from urdfgenpy_ros.assembly import prefixed
+    marked = prefixed(robot, PREFIX_MARK)
+    writer = _MacroBody(marked)
+    text = writer.document().replace('\r\n', '\n')
+    opening = re.search(r'<robot\b', text)
+    assert opening is not None
+    start = tag_end(text, opening.start())
+    end = text.rfind('</robot>')
+    body = text[start:end].strip('\n') if end > start else ''
+    unit = writer.unit
+    body = '\n'.join(unit + line if line.strip() else line for line in body.split('\n'))
+    body = body.replace(PREFIX_MARK, '${prefix}')
+    root = _dollars(esc(marked.root.name)).replace(PREFIX_MARK, '${prefix}')
+    materials = [_dollars(writer.write_material(material, unit))
+                 for material in robot.materials]
+    e, inner = '$', unit * 2
+    mount = [f'{inner}<xacro:if value="{e}{{parent != \'\'}}">',
+             f'{inner}{unit}<joint name="{e}{{parent}}_to_{root}" type="fixed">',
+             f'{inner}{unit * 2}<parent link="{e}{{parent}}"/>',
+             f'{inner}{unit * 2}<child link="{root}"/>',
+             f'{inner}{unit * 2}<xacro:insert_block name="origin"/>',
+             f'{inner}{unit}</joint>', f'{inner}</xacro:if>']
+    lines = ['<?xml version="1.0"?>',
+             f'<!-- {_comment(robot.name)} as a macro: include this file, then call '
+             f'<xacro:{macro_name(robot)} prefix="..." parent="..."><origin .../>'
+             f'</xacro:{macro_name(robot)}> -->',
+             f'<robot xmlns:xacro="{XACRO_NS}">', *materials,
+             f'{unit}<xacro:macro name="{macro_name(robot)}" params="prefix parent *origin">',
+             *mount, *([body] if body else []), f'{unit}</xacro:macro>', '</robot>', '']
+    return '\n'.join(lines)
+
+
+def top_level_xacro(robot: Robot, macro_file: str) -> str:
+    """Return a robot file that includes ``macro_file`` and calls the macro once."""
+    name = macro_name(robot)
+    return '\n'.join([
+        '<?xml version="1.0"?>',
+        f'<robot name="{_dollars(esc(robot.name))}" xmlns:xacro="{XACRO_NS}">',
+        '  <xacro:arg name="prefix" default=""/>',
+        f'  <xacro:include filename="{esc(macro_file)}"/>',
+        f'  <xacro:{name} prefix="$(arg prefix)" parent="">',
+        '    <origin xyz="0 0 0" rpy="0 0 0"/>',
+        f'  </xacro:{name}>',
+        '</robot>', ''])
+
+
+def write_macro_xacro(robot: Robot, path: str | PathLike[str] | None = None) -> str:
+    """
+    Return the macro file's text (:func:`macro_xacro`).
+
+    With ``path``, write the file that instantiates the macro there (its ``prefix``
+    argument defaults to ''), and the macro beside it as ``<robot name>.macro.xacro``.
+    """
+    text = macro_xacro(robot)
+    if path is not None:
+        target = Path(path)
+        macro_file = target.with_name(f'{robot.name}.macro.xacro')
+        if macro_file.name == target.name:
+            raise ModelError(f'{path}: that is the macro file\'s own name; give the top-level '
+                             f'file another one, e.g. {robot.name}.urdf.xacro')
+        write_text(macro_file, text)
+        write_text(target, top_level_xacro(robot, f'$(dirname)/{macro_file.name}'))
+    return text
+
+
+def _dollars(text: str) -> str:
+    return text.replace('${', '$${').replace('$(', '$$(')
+
+
+def _comment(text: str) -> str:
+    return text.replace('--', '- -')
