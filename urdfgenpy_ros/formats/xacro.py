@@ -264,7 +264,7 @@ def write_macro_xacro(robot: Robot, path: str | PathLike[str] | None = None) -> 
             raise ModelError(f'{path}: that is the macro file\'s own name; give the top-level '
                              f'file another one, e.g. {robot.name}.urdf.xacro')
         write_text(macro_file, text)
-        write_text(target, top_level_xacro(robot, f'$(dirname)/{macro_file.name}'))
+        write_text(target, top_level_xacro(robot, macro_file.name))
     return text
 
 
