@@ -50,9 +50,9 @@ def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
 
     ``mappings`` are Xacro arguments; ``search_paths`` folders holding ROS packages. An
     assembly file (``*.assembly.yaml``, or YAML with a top-level ``parts:``) gives the
-    robot its parts make; another DH table (.yaml, .yml, .csv) gives its skeleton. A ``.urdf`` file that is Xacro
-    (TurtleBot3's are) is expanded with xacro, as ROS launch files do, and the robot gets a
-    read warning (X101) saying so.
+    robot its parts make; any other .yaml, .yml or .csv file is a DH table and gives its
+    skeleton. A ``.urdf`` file that is Xacro (TurtleBot3's are) is expanded with xacro, as
+    ROS launch files do, and the robot gets a read warning (X101) saying so.
     """
     from urdfgenpy_ros.robot import Robot
     if Path(path).suffix.lower() in DH_SUFFIXES:

@@ -181,8 +181,8 @@ PREFIX_MARK = 'urdfgenpyprefixmark'
 class _MacroBody(XacroWriter):
     """The Xacro writer for a robot whose names start with PREFIX_MARK."""
 
-    def __init__(self, robot: Robot) -> None:
-        super().__init__(robot, materials=False)
+    def __init__(self, robot: Robot, extensions: list[Extension] | None) -> None:
+        super().__init__(robot, materials=False, extensions=extensions)
         taken: set[str] = set()  # mass properties are named after the unprefixed links
         self.mass_names = {link.name: _identifier(link.name.replace(PREFIX_MARK, ''), taken)
                            for link in robot.links if link.inertial is not None}
@@ -194,7 +194,13 @@ def macro_name(robot: Robot) -> str:
     return name if name and not name[0].isdigit() else f'_{name}'
 
 
-def macro_xacro(robot: Robot) -> str:
+def with_prefix(text: str) -> str:
+    """Return Xacro text written for a ``prefixed(PREFIX_MARK)`` robot with ``${prefix}``."""
+    return _dollars(text).replace(PREFIX_MARK, '${prefix}')
+
+
+def macro_xacro(robot: Robot, *, includes: Sequence[str] = (), materials: bool = True,
+                skip: Sequence[str] = (), calls: Sequence[str] = ()) -> str:
     """
     Return ``<name>.macro.xacro``: the robot as ``<xacro:macro params="prefix parent *origin">``.
 
@@ -202,10 +208,16 @@ def macro_xacro(robot: Robot) -> str:
     a non-empty ``parent`` adds the fixed joint ``${parent}_to_${prefix}<root>`` placed by
     the ``origin`` block, as :meth:`Robot.attach` names it. Robot-level materials stand
     outside the macro, so a file that includes it once can call it many times.
+
+    ``includes`` are included first; ``materials=False`` leaves the materials out;
+    robot-level blocks whose tag is in ``skip`` are left out and ``calls`` (Xacro lines,
+    ``$`` as written) end the macro's body: the scaffolder puts those blocks in macros of
+    their own files.
     """
     from urdfgenpy_ros.assembly import prefixed
     marked = prefixed(robot, PREFIX_MARK)
-    writer = _MacroBody(marked)
+    blocks = [block for block in marked.extensions if block.tag not in skip]
+    writer = _MacroBody(marked, blocks)
     text = writer.document().replace('\r\n', '\n')
     opening = re.search(r'<robot\b', text)
     assert opening is not None
@@ -214,11 +226,11 @@ def macro_xacro(robot: Robot) -> str:
     body = text[start:end].strip('\n') if end > start else ''
     unit = writer.unit
     body = '\n'.join(unit + line if line.strip() else line for line in body.split('\n'))
-    body = body.replace(PREFIX_MARK, '${prefix}')
-    root = _dollars(esc(marked.root.name)).replace(PREFIX_MARK, '${prefix}')
-    materials = [_dollars(writer.write_material(material, unit))
-                 for material in robot.materials]
-    e, inner = '$', unit * 2
+    body = body.replace(PREFIX_MARK, '${prefix}')  # the writer escaped every other '$'
+    root = with_prefix(esc(marked.root.name))
+    defined = [_dollars(writer.write_material(material, unit))
+               for material in robot.materials] if materials else []
+    e, inner, name = '$', unit * 2, macro_name(robot)
     mount = [f'{inner}<xacro:if value="{e}{{parent != \'\'}}">',
              f'{inner}{unit}<joint name="{e}{{parent}}_to_{root}" type="fixed">',
              f'{inner}{unit * 2}<parent link="{e}{{parent}}"/>',
@@ -227,22 +239,23 @@ def macro_xacro(robot: Robot) -> str:
              f'{inner}{unit}</joint>', f'{inner}</xacro:if>']
     lines = ['<?xml version="1.0"?>',
              f'<!-- {_comment(robot.name)} as a macro: include this file, then call '
-             f'<xacro:{macro_name(robot)} prefix="..." parent="..."><origin .../>'
-             f'</xacro:{macro_name(robot)}> -->',
-             f'<robot xmlns:xacro="{XACRO_NS}">', *materials,
-             f'{unit}<xacro:macro name="{macro_name(robot)}" params="prefix parent *origin">',
-             *mount, *([body] if body else []), f'{unit}</xacro:macro>', '</robot>', '']
+             f'<xacro:{name} prefix="..." parent="..."><origin .../></xacro:{name}> -->',
+             f'<robot xmlns:xacro="{XACRO_NS}">',
+             *(f'{unit}<xacro:include filename="{esc(file)}"/>' for file in includes),
+             *defined, f'{unit}<xacro:macro name="{name}" params="prefix parent *origin">',
+             *mount, *([body] if body else []), *(inner + call for call in calls),
+             f'{unit}</xacro:macro>', '</robot>', '']
     return '\n'.join(lines)
 
 
-def top_level_xacro(robot: Robot, macro_file: str) -> str:
-    """Return a robot file that includes ``macro_file`` and calls the macro once."""
+def top_level_xacro(robot: Robot, includes: Sequence[str]) -> str:
+    """Return a robot file that includes ``includes`` (the macro's last) and calls it once."""
     name = macro_name(robot)
     return '\n'.join([
         '<?xml version="1.0"?>',
         f'<robot name="{_dollars(esc(robot.name))}" xmlns:xacro="{XACRO_NS}">',
         '  <xacro:arg name="prefix" default=""/>',
-        f'  <xacro:include filename="{esc(macro_file)}"/>',
+        *(f'  <xacro:include filename="{esc(file)}"/>' for file in includes),
         f'  <xacro:{name} prefix="$(arg prefix)" parent="">',
         '    <origin xyz="0 0 0" rpy="0 0 0"/>',
         f'  </xacro:{name}>',
@@ -264,7 +277,7 @@ def write_macro_xacro(robot: Robot, path: str | PathLike[str] | None = None) -> 
             raise ModelError(f'{path}: that is the macro file\'s own name; give the top-level '
                              f'file another one, e.g. {robot.name}.urdf.xacro')
         write_text(macro_file, text)
-        write_text(target, top_level_xacro(robot, macro_file.name))
+        write_text(target, top_level_xacro(robot, [macro_file.name]))
     return text
 
 
