@@ -73,8 +73,8 @@ def test_assembly_file_is_found_by_content_and_equals_python(tmp_path: Path) -> 
     path = _files(tmp_path)
     robot = load(path, {}, [PACKAGES])
     assert robot.to_urdf() == _in_python(tmp_path).to_urdf()
-    assert robot.included_files[:2] == [str(path.resolve()), str((tmp_path / 'rover.urdf')
-                                                                  .resolve())]
+    rover = tmp_path / 'rover.urdf'
+    assert robot.included_files[:2] == [str(path.resolve()), str(rover.resolve())]
     assert str((PACKAGES / 'fixture_description/urdf/arm_parts.xacro').resolve()) in \
         robot.included_files
     assert str(Path(__file__).with_name('assembly_parts.py').resolve()) in robot.included_files
@@ -158,7 +158,8 @@ def test_attach_command_writes_what_attach_does(tmp_path: Path) -> None:
     assert clash.output.startswith("urdfgenpy: cannot attach 'rover' to 'rover': 9 names "
                                    "taken: link 'base_link', ")
     assert not (tmp_path / 'x.urdf').exists()
-    bad = CliRunner().invoke(main, [*arguments[:5], '--xyz', '1 2', '-o', str(tmp_path / 'y.urdf')])
+    bad = CliRunner().invoke(main, [*arguments[:5], '--xyz', '1 2', '-o',
+                                    str(tmp_path / 'y.urdf')])
     assert bad.exit_code == 2 and "'1 2' is not 3 numbers" in bad.output
 
 

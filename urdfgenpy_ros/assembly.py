@@ -232,8 +232,8 @@ def _merge_materials(base: Robot, piece: Robot, prefix: str) -> None:
     renames: dict[str, str] = {}
     for material in theirs:
         known = ours.get(material.name)
-        if known is not None and (known.rgba, known.texture) != (material.rgba,
-                                                               material.texture):
+        if known is not None and (known.rgba, known.texture) != (
+                material.rgba, material.texture):
             new, number = prefix + material.name, 2
             while new in names:
                 new, number = f'{prefix}{material.name}_{number}', number + 1
@@ -250,4 +250,3 @@ def _merge_materials(base: Robot, piece: Robot, prefix: str) -> None:
                         visual.material = shared
         else:
             base.add_material(material)
-

@@ -276,4 +276,4 @@ def _origin(file: _File, entry: _Mapping) -> Origin:
             raise file.error(line, f'origin.{key}', f'expected 3 numbers [a, b, c], got '
                              f'{vector!r}')
         vectors.append(tuple(float(number) for number in vector))
-    return Origin(vectors[0], vectors[1])  # type: ignore[arg-type]
+    return Origin(vectors[0], vectors[1])

@@ -274,7 +274,7 @@ def write_macro_xacro(robot: Robot, path: str | PathLike[str] | None = None) -> 
         target = Path(path)
         macro_file = target.with_name(f'{robot.name}.macro.xacro')
         if macro_file.name == target.name:
-            raise ModelError(f'{path}: that is the macro file\'s own name; give the top-level '
+            raise ModelError(f"{path}: that is the macro file's own name; give the top-level "
                              f'file another one, e.g. {robot.name}.urdf.xacro')
         write_text(macro_file, text)
         write_text(target, top_level_xacro(robot, [macro_file.name]))
