@@ -85,26 +85,26 @@ def test_assembly_file_is_found_by_content_and_equals_python(tmp_path: Path) -> 
 
 @pytest.mark.parametrize('text, where, words', [
     ('parts: []\n', ':1:1: error A001', "'parts': an assembly file is a mapping with a "),
-    ('parts:\n  - file: rover.urdf\n    at: base_link\n', ':3:1: error A001',
+    ('parts:\n  - file: rover.urdf\n    at: base_link\n', ':3:5: error A001',
      "'at': the first part is the base: it takes no 'at'"),
     ('parts:\n  - file: rover.urdf\n  - file: rover.urdf\n    prefix: b_\n',
-     ':3:1: error A001', "'at': every part after the first needs the link it attaches to "
+     ':3:5: error A001', "'at': every part after the first needs the link it attaches to "
      '(at: base_link)'),
     ('parts:\n  - file: rover.urdf\n  - file: rover.urdf\n    at: chassis\n',
-     ':3:1: error A001', "'prefix': cannot attach 'rover' to 'rover': 9 names taken"),
+     ':3:5: error A001', "'prefix': cannot attach 'rover' to 'rover': 9 names taken"),
     ('parts:\n  - file: rover.urdf\n  - file: rover.urdf\n    at: chasis\n    prefix: b_\n',
-     ':4:1: error A001', "link 'chasis' is not in 'rover' (did you mean 'chassis'?)"),
-    ('parts:\n  - file: nowhere.urdf\n', ':2:1: error A001',
+     ':4:5: error A001', "link 'chasis' is not in 'rover' (did you mean 'chassis'?)"),
+    ('parts:\n  - file: nowhere.urdf\n', ':2:5: error A001',
      "'file': 'nowhere.urdf' resolves to"),
     ('parts:\n  - file: rover.urdf\n  - function: rover\n    at: chassis\n',
-     ':3:1: error A001', "'function': cannot import 'rover'"),
-    ('parts:\n  - file: rover.urdf\n    prefx: a_\n', ':3:1: error A001',
+     ':3:5: error A001', "'function': cannot import 'rover'"),
+    ('parts:\n  - file: rover.urdf\n    prefx: a_\n', ':3:5: error A001',
      "'prefx': unknown key (did you mean 'prefix'?)"),
     ('parts:\n  - file: rover.urdf\n  - file: rover.urdf\n    at: chassis\n    prefix: b_\n'
-     '    origin: {xyz: [0, 0]}\n', ':6:1: error A001', "'origin.xyz': expected 3 numbers"),
+     '    origin: {xyz: [0, 0]}\n', ':6:5: error A001', "'origin.xyz': expected 3 numbers"),
     ('parts:\n  - file: rover.urdf\n  - file: [rover.urdf\n', ':4:1: error A001',
      'YAML syntax'),
-    ('parts:\n  - file: broken.urdf\n', ':2:1: error A001',
+    ('parts:\n  - file: broken.urdf\n', ':2:5: error A001',
      "'file': part broken.urdf: "),
 ])
 def test_errors_are_one_line_with_file_line_key_and_fix(

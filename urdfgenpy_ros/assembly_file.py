@@ -71,11 +71,14 @@ def is_assembly(path: str | PathLike[str]) -> bool:
         return False
 
 
-class _Mapping(dict):
-    """A YAML mapping that remembers the line of each key."""
+Place = tuple[int, int]  # line, column
 
-    line = 1
-    lines: dict[Any, int]
+
+class _Mapping(dict):
+    """A YAML mapping that remembers where it and each of its keys start."""
+
+    line: Place = (1, 1)
+    lines: dict[Any, Place]
 
 
 def _loader() -> Any:
@@ -91,12 +94,12 @@ def _loader() -> Any:
     def mapping(loader: Any, node: Any) -> _Mapping:
         loader.flatten_mapping(node)
         result = _Mapping()
-        result.line = node.start_mark.line + 1
+        result.line = (node.start_mark.line + 1, node.start_mark.column + 1)
         result.lines = {}
         for key_node, value_node in node.value:
             key = loader.construct_object(key_node, deep=True)
             result[key] = loader.construct_object(value_node, deep=True)
-            result.lines[key] = key_node.start_mark.line + 1
+            result.lines[key] = (key_node.start_mark.line + 1, key_node.start_mark.column + 1)
         return result
 
     Loader.add_constructor('tag:yaml.org,2002:map', mapping)
@@ -109,11 +112,11 @@ class _File:
     def __init__(self, path: Path) -> None:
         self.path = path
 
-    def error(self, line: int, key: str | None, message: str) -> ParseError:
-        where = SourceLocation(str(self.path), line, 1)
+    def error(self, place: Place, key: str | None, message: str) -> ParseError:
+        where = SourceLocation(str(self.path), place[0], place[1])
         return ParseError(f"'{key}': {message}" if key else message, where, CODE)
 
-    def at(self, mapping: _Mapping, key: str) -> int:
+    def at(self, mapping: _Mapping, key: str) -> Place:
         return mapping.lines.get(key, mapping.line)
 
 
@@ -136,7 +139,7 @@ def read_assembly(path: str | PathLike[str],
                                         mark.column + 1 if mark else 1), CODE) from None
     if not isinstance(data, _Mapping) or not isinstance(data.get('parts'), list) \
             or not data['parts']:
-        raise file.error(1, 'parts', 'an assembly file is a mapping with a non-empty list '
+        raise file.error((1, 1), 'parts', 'an assembly file is a mapping with a non-empty list '
                          "'parts:' (- file: base.urdf, then parts with at: and prefix:)")
     _known(file, data, _TOP_KEYS)
     robot = None
