@@ -20,7 +20,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from assembly_parts import gripper, mobile_base
-from helpers import assert_check_urdf_accepts, load_yourdfpy, xacro_expand
+from helpers import assert_check_urdf_accepts, FIXTURES, load_yourdfpy, xacro_expand
 from lxml import etree
 import pytest
 from registry_robots import robot as registry_robot, search_paths
@@ -106,22 +106,27 @@ def _number_text(value: str) -> str:
 
 
 def _canonical(text: str) -> bytes:
-    """Return the XML without blank text or comments, numbers spelt one way (1e-9, 1e-09)."""
+    """Return the XML without blank text, comments, unused namespaces; numbers spelt one way."""
     parser = etree.XMLParser(remove_blank_text=True, remove_comments=True)
     root = etree.fromstring(text.encode(), parser)
     for element in root.iter():
         for key, value in element.attrib.items():
             element.set(key, _number_text(value))
-    return etree.tostring(root, method='c14n')
+    return etree.tostring(root, method='c14n', exclusive=True)  # used namespaces only
 
 
 def _read(name: str):
     return lambda: load(registry_robot(name), {}, search_paths())
 
 
-@pytest.mark.parametrize('make', [pan_tilt_unit, gripper, mobile_base, _read('fr3.urdf'),
-                                  _read('so101.urdf'), _read('cookie.urdf')],
-                         ids=['ptu', 'gripper', 'rover', 'fr3', 'so101', 'cookie'])
+def _every_element() -> Robot:
+    return Robot.from_urdf(FIXTURES / 'packages/fixture_description/urdf/every_element.urdf')
+
+
+@pytest.mark.parametrize('make', [pan_tilt_unit, gripper, mobile_base, _every_element,
+                                  _read('fr3.urdf'), _read('so101.urdf'), _read('cookie.urdf')],
+                         ids=['ptu', 'gripper', 'rover', 'every_element', 'fr3', 'so101',
+                              'cookie'])
 def test_macro_xacro_expanded_by_xacro_equals_the_prefixed_robot(make, tmp_path: Path) -> None:
     robot = make()
     top = tmp_path / f'{robot.name}.urdf.xacro'

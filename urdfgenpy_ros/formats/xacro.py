@@ -188,6 +188,9 @@ class _MacroBody(XacroWriter):
                            for link in robot.links if link.inertial is not None}
 
 
+_NAMESPACE = re.compile(r'xmlns(?::[\w.-]+)?\s*=\s*("[^"]*"|\'[^\']*\')')
+
+
 def macro_name(robot: Robot) -> str:
     """Return the name of the robot's Xacro macro: its name as an identifier."""
     name = re.sub(r'\W', '_', robot.name)
@@ -222,6 +225,8 @@ def macro_xacro(robot: Robot, *, includes: Sequence[str] = (), materials: bool =
     opening = re.search(r'<robot\b', text)
     assert opening is not None
     start = tag_end(text, opening.start())
+    declared = ''.join(f' {match.group(0)}' for match in _NAMESPACE.finditer(
+        text[opening.start():start]) if not match.group(0).startswith('xmlns:xacro='))
     end = text.rfind('</robot>')
     body = text[start:end].strip('\n') if end > start else ''
     unit = writer.unit
@@ -240,7 +245,7 @@ def macro_xacro(robot: Robot, *, includes: Sequence[str] = (), materials: bool =
     lines = ['<?xml version="1.0"?>',
              f'<!-- {_comment(robot.name)} as a macro: include this file, then call '
              f'<xacro:{name} prefix="..." parent="..."><origin .../></xacro:{name}> -->',
-             f'<robot xmlns:xacro="{XACRO_NS}">',
+             f'<robot xmlns:xacro="{XACRO_NS}"{declared}>',
              *(f'{unit}<xacro:include filename="{esc(file)}"/>' for file in includes),
              *defined, f'{unit}<xacro:macro name="{name}" params="prefix parent *origin">',
              *mount, *([body] if body else []), *(inner + call for call in calls),
