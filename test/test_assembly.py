@@ -267,3 +267,27 @@ def test_fk_of_the_assembly_is_the_mount_times_each_parts_own_fk(tmp_path: Path)
                 expected = placed @ scene.get_transform(link.name, part.root.name)
                 actual = model.get_transform(prefix + link.name, root)
                 assert numpy.allclose(actual, expected, atol=1e-9), (prefix, link.name)
+
+
+def test_what_the_model_does_not_hold_comes_along_renamed(tmp_path: Path) -> None:
+    from helpers import FIXTURES
+    sensor = FIXTURES / 'problems/urdfdom_sensor.urdf'  # urdfdom's <sensor><parent link>
+    vendor = tmp_path / 'vendor.urdf'
+    vendor.write_text('<robot name="vendor" xmlns:acme="https://example.invalid/acme">'
+                      '<link name="tool"/><acme:calibration date="2026-01-01" link="tool"/>'
+                      '<!-- checked by hand --></robot>')
+    assert '<parent link="p_head"/>' in Robot.from_urdf(sensor).prefixed('p_').to_urdf()
+    robot = Robot.from_urdf(sensor)
+    robot.attach(Robot.from_urdf(sensor), 'head', prefix='x_')
+    robot.attach(Robot.from_urdf(vendor), 'x_head', prefix='v_')
+    text = robot.to_urdf()
+    root = etree.fromstring(text.encode())
+    sensors = {node.get('name'): node.find('parent').get('link')
+               for node in root.findall('sensor')}
+    assert sensors == {'cam': 'head', 'x_cam': 'x_head'}
+    (calibration,) = root.findall('{https://example.invalid/acme}calibration')
+    assert calibration.get('date') == '2026-01-01'
+    path = tmp_path / 'kept.urdf'
+    path.write_text(text)
+    assert_check_urdf_accepts(path)
+    assert Robot.from_urdf(path).to_urdf() == text

@@ -39,6 +39,7 @@ if TYPE_CHECKING:
 
 _TOP_NAMES = ('transmission', 'ros2_control')  # blocks whose own name must be unique
 _NAMED_INSIDE = ('actuator', 'sensor', 'gpio')  # names that must be unique robot-wide
+_MODEL_TAGS = ('link', 'joint', 'material', 'gazebo', 'transmission', 'ros2_control')
 
 
 @dataclass
@@ -99,9 +100,12 @@ def _rename(robot: Robot, renaming: _Renaming) -> None:
         _rename_materials(robot, renaming.materials)
     for block in _blocks(robot):
         _rename_block(block.element, renaming)
-    kept = robot.extras.order if robot.extras is not None and robot.extras.order else []
-    for node in kept:  # urdfdom's own <sensor> elements: <parent link="..."/>
-        if getattr(node, 'tag', None) == 'sensor':
+    extras = robot.extras
+    if extras is not None:  # urdfdom's <sensor> (<parent link="...">), vendor elements
+        # a copy's source tree and its list of items hold separate copies of such nodes
+        kept = {id(node): node for node in [*extras.node, *(extras.order or [])]
+                if isinstance(getattr(node, 'tag', None), str) and node.tag not in _MODEL_TAGS}
+        for node in kept.values():
             _rename_block(node, renaming)
 
 
@@ -207,9 +211,18 @@ def attach(base: Robot, part: Robot, at: str, origin: Origin | None = None,
     for joint in piece.joints:
         base.add_joint(joint)
     base.extensions.extend(piece.extensions)
+    base.extensions.extend(_unknown_elements(piece))
     base.included_files = list(dict.fromkeys([*base.included_files, *piece.included_files]))
     base.read_warnings.extend(piece.read_warnings)
     return base
+
+
+def _unknown_elements(piece: Robot) -> list[Extension]:
+    """Return the part's top-level elements the model does not hold, to keep them."""
+    if piece.extras is None:
+        return []
+    return [Extension(copy.deepcopy(node)) for node in piece.extras.node
+            if isinstance(node.tag, str) and node.tag not in _MODEL_TAGS]
 
 
 def _clashes(base: Robot, piece: Robot, joint_name: str) -> list[str]:
