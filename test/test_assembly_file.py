@@ -24,7 +24,7 @@ from click.testing import CliRunner
 from helpers import FIXTURES, require_module
 import pytest
 
-from urdfgenpy_ros import Origin, Robot
+from urdfgenpy_ros import Mesh, Origin, Robot
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.errors import ParseError
 from urdfgenpy_ros.formats import load
@@ -190,3 +190,19 @@ def test_init_writes_the_macro_and_a_top_level_file_that_calls_it(tmp_path: Path
         assert len(expanded.extensions) == len(expected.extensions)
         assert all(block in expanded.extensions for block in expected.extensions)
         assert [str(f) for f in expanded.validate() if f.severity == 'error'] == []
+
+
+def test_relative_mesh_paths_of_parts_elsewhere_still_resolve(tmp_path: Path) -> None:
+    from registry_robots import robot as registry_robot
+    panda = registry_robot('panda.urdf')  # file://meshes/... relative to its own folder
+    mobile_base().to_urdf(tmp_path / 'rover.urdf')
+    path = tmp_path / 'rover_panda.assembly.yaml'
+    path.write_text(f'parts:\n  - file: rover.urdf\n  - file: {panda}\n    at: chassis\n'
+                    '    prefix: arm_\n')
+    robot = Robot.from_assembly(path)
+    meshes = [item.geometry.filename for link in robot.links
+              for item in (*link.visuals, *link.collisions) if isinstance(item.geometry, Mesh)]
+    assert meshes and all(not name.startswith('file:') for name in meshes)
+    for name in meshes:  # read as a plain path, relative to the assembly file's folder
+        assert (tmp_path / name).is_file(), name
+    assert [str(f) for f in robot.validate() if f.code.startswith('R3')] == []

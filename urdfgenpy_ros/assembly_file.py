@@ -30,7 +30,8 @@ Assembly files: a YAML list of parts, each a description file or a builder funct
         prefix: gripper_
         joint_name: arm_to_gripper       # default: <at>_to_<prefixed root>
 
-``file`` is relative to the assembly file's folder, or ``package://pkg/...``. A YAML file
+``file`` is relative to the assembly file's folder, or ``package://pkg/...``; a part's
+relative mesh paths are rewritten to stay right from there. A YAML file
 is an assembly when its name ends in ``.assembly.yaml`` (``.yml``) or when it has a
 top-level ``parts:`` key; other YAML files are DH tables.
 """
@@ -40,6 +41,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 import importlib
 import inspect
+import os
 from os import PathLike
 from pathlib import Path
 import re
@@ -209,7 +211,27 @@ def _load_part(file: _File, entry: _Mapping, search_paths: list[Any]
         robot = load(found, mappings, search_paths)
     except UrdfgenpyError as error:
         raise file.error(file.at(entry, 'file'), 'file', f'part {uri}: {error}') from None
+    _rebase_meshes(robot, found.parent, file.path.parent)
     return robot, [str(found.resolve()), *robot.included_files]
+
+
+def _rebase_meshes(robot: Robot, part_folder: Path, folder: Path) -> None:
+    """Make the part's relative mesh paths relative to the assembly file instead."""
+    from urdfgenpy_ros.geometry import Mesh
+    from urdfgenpy_ros.resources import relative_file_uri
+    if part_folder.resolve() == folder.resolve():
+        return
+    for link in robot.links:
+        for item in (*link.visuals, *link.collisions):
+            mesh = item.geometry
+            if not isinstance(mesh, Mesh):
+                continue
+            relative = relative_file_uri(mesh.filename)
+            if relative is None and ('://' in mesh.filename or Path(mesh.filename).is_absolute()):
+                continue
+            moved = os.path.relpath(part_folder / (relative or mesh.filename), folder)
+            item.geometry = Mesh(Path(moved).as_posix(), mesh.scale, source=mesh.source,
+                                 extras=mesh.extras)
 
 
 def _xacro_value(value: object) -> str:
