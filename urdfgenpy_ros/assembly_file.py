@@ -218,11 +218,13 @@ def _load_part(file: _File, entry: _Mapping, search_paths: list[Any]
 def _rebase_meshes(robot: Robot, part_folder: Path, folder: Path) -> None:
     """Make the part's relative mesh paths relative to the assembly file instead."""
     from urdfgenpy_ros.geometry import Mesh
+    from urdfgenpy_ros.link import Shape
     from urdfgenpy_ros.resources import relative_file_uri
     if part_folder.resolve() == folder.resolve():
         return
     for link in robot.links:
-        for item in (*link.visuals, *link.collisions):
+        items: tuple[Shape, ...] = (*link.visuals, *link.collisions)
+        for item in items:
             mesh = item.geometry
             if not isinstance(mesh, Mesh):
                 continue
