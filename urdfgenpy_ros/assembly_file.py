@@ -222,18 +222,17 @@ def _rebase_meshes(robot: Robot, part_folder: Path, folder: Path) -> None:
     from urdfgenpy_ros.resources import relative_file_uri
     if part_folder.resolve() == folder.resolve():
         return
-    for link in robot.links:
-        items: tuple[Shape, ...] = (*link.visuals, *link.collisions)
-        for item in items:
-            mesh = item.geometry
-            if not isinstance(mesh, Mesh):
-                continue
-            relative = relative_file_uri(mesh.filename)
-            if relative is None and ('://' in mesh.filename or Path(mesh.filename).is_absolute()):
-                continue
-            moved = os.path.relpath(part_folder / (relative or mesh.filename), folder)
-            item.geometry = Mesh(Path(moved).as_posix(), mesh.scale, source=mesh.source,
-                                 extras=mesh.extras)
+    shapes: list[Shape] = [*(v for link in robot.links for v in link.visuals),
+                           *(c for link in robot.links for c in link.collisions)]
+    for shape in shapes:
+        mesh = shape.geometry
+        name = mesh.filename if isinstance(mesh, Mesh) else '://'
+        relative = relative_file_uri(name)
+        if isinstance(mesh, Mesh) and (relative is not None or (
+                '://' not in name and not Path(name).is_absolute())):
+            moved = os.path.relpath(part_folder / (relative or name), folder)
+            shape.geometry = Mesh(Path(moved).as_posix(), mesh.scale, source=mesh.source,
+                                  extras=mesh.extras)
 
 
 def _xacro_value(value: object) -> str:
