@@ -50,11 +50,13 @@ def source_tag(tags: SourceTags, node: Any) -> str | None:
     return recorded[0]
 
 
-# One token of XML text: what is skipped (comments, CDATA, processing instructions,
-# declarations, end tags) or a start tag (group 1), and whether an end tag follows it at
-# once (group 2: the element is empty and was written ``<x></x>``).
-_TOKEN = re.compile(r'<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<![^>]*>|</[^>]*>|'
-                    r'(<[^\s<>/!?](?:"[^"]*"|\'[^\']*\'|[^>"\'])*+>)(</)?', re.DOTALL)
+# One token of XML text, after the text before it: what is skipped (comments, CDATA,
+# processing instructions, declarations, end tags), or a start tag as lxml writes it
+# (group 1), or another start tag (group 2); group 3 says whether an end tag follows at
+# once (an empty element written ``<x></x>``).
+_TOKEN = re.compile(r'[^<]*+(?:<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<![^>]*>|</[^>]*>|'
+                    r'(<[^\s<>/!?]+(?: [^\s=<>]+="[^"<>]*")*/?>)|'
+                    r'(<[^\s<>/!?](?:[^>"\']++|"[^"]*"|\'[^\']*\')*+>)|<)(</)?', re.DOTALL)
 
 
 def unusual_start_tags(document: Any, text: str, start: int | None = None) -> SourceTags:
@@ -64,18 +66,21 @@ def unusual_start_tags(document: Any, text: str, start: int | None = None) -> So
     That is: line breaks, tabs, runs of spaces or single quotes inside the tag, and the
     start tag of an empty element written with an end tag (``<link></link>``, which lxml
     writes ``<link/>``). ``text`` is the whole source; its start tags come in the
-    elements' order; ``start`` is where the document element starts in it, if known.
+    elements' order; ``start`` is where the document element starts in it, if known (its
+    own start tag is not recorded then: writers put the source's back as it was).
     """
-    if start is not None and text.startswith(
-            etree.tostring(document, encoding='unicode', with_tail=False), start):
-        return {}  # lxml writes the whole element as the source has it
+    if start is not None:
+        written = etree.tostring(document, encoding='unicode', with_tail=False)
+        if text.startswith(written[tag_end(written, 0):], tag_end(text, start)):
+            return {}  # lxml writes all inside the root's start tag as the source has it
     found = _Recorded()
     elements = None
     index = 0
-    for tag, closed in _TOKEN.findall(text):
+    for plain, other, closed in _TOKEN.findall(text):
+        tag = plain or other
         if not tag:
             continue
-        if (closed and tag[-2:] != '/>') or not _PLAIN.fullmatch(tag):
+        if other or (closed and plain[-2:] != '/>'):
             if elements is None:
                 elements = [node for node in document.iter() if isinstance(node.tag, str)]
             if index >= len(elements):
@@ -118,7 +123,9 @@ def _restore(serialized: str, node: Any, tags: SourceTags) -> str:
     for match in _TOKEN.finditer(serialized):
         start, end = match.span(1)
         if start < 0:
-            continue
+            start, end = match.span(2)
+            if start < 0:
+                continue
         if index == len(elements):
             return serialized  # not the shape expected: keep lxml's text
         recorded = source_tag(tags, elements[index])
