@@ -79,10 +79,18 @@ class _Reader:
         return self.fail(node, f'{_describe(node)}: {name} {text!r} is not a number (write '
                                'e.g. 0.5 or 1e-3)', 'P003', name)
 
-    def not_vector(self, node: Any, name: str, text: str, count: int) -> ParseError:
-        """Return the error of a vector attribute that is not ``count`` numbers."""
-        return self.fail(node, f'{_describe(node)}: {name} {text!r} must be {count} '
-                               'numbers separated by spaces', 'P003', name)
+    def vector(self, node: Any, name: str, text: str, count: int) -> tuple[float, ...]:
+        """Return the ``count`` numbers of a vector attribute (kept: texts repeat)."""
+        parts = text.split()
+        try:
+            values = tuple([float(part) for part in parts])
+        except ValueError:
+            values = ()
+        if len(values) != count:
+            raise self.fail(node, f'{_describe(node)}: {name} {text!r} must be {count} '
+                                  'numbers separated by spaces', 'P003', name)
+        self.vectors[text] = values
+        return values
 
     def bad_type(self, node: Any, name: str, kind: str) -> ParseError:
         """Return the error of an unknown joint type."""

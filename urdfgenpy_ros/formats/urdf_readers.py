@@ -104,17 +104,9 @@ def _attributes(code: _Code, element: Element, node: str, indent: int) -> None:
             code.add(indent + 2, f'raise r.not_number({node}, {attr.name!r}, t) from None')
         else:
             count = 3 if attr.kind == VEC3 else 4
-            parts = ', '.join(f'float(p[{index}])' for index in range(count))
             code.add(indent + 1, f'{target} = vectors.get(t)')  # the same text, the same tuple
             code.add(indent + 1, f'if {target} is None or len({target}) != {count}:')
-            code.add(indent + 2, 'p = t.split()')
-            code.add(indent + 2, 'try:')
-            code.add(indent + 3, f'if len(p) != {count}:')
-            code.add(indent + 4, 'raise ValueError')
-            code.add(indent + 3, f'{target} = vectors[t] = ({parts})')
-            code.add(indent + 2, 'except ValueError:')
-            code.add(indent + 3, f'raise r.not_vector({node}, {attr.name!r}, t, {count}) '
-                                 'from None')
+            code.add(indent + 2, f'{target} = r.vector({node}, {attr.name!r}, t, {count})')
         code.have.add(attr.field)
 
 
