@@ -218,7 +218,7 @@ def _by_rules(robot: Robot, findings: Findings) -> None:
     """Without MuJoCo: fused bodies and empty ranges, by its rules."""
     fused = {link.name for joint, link in robot.walk()
              if joint is None or joint.type is JointType.FIXED}
-    bodies = {link.name for link in robot.links} - fused
+    bodies = {link.name for link in robot.links} - fused | {'world'}  # MuJoCo's own body
     _fused(robot, bodies, findings, ' (by its rules: the mujoco package is not installed)')
     for joint in robot.joints:
         limit = joint.limit

@@ -109,6 +109,8 @@ def sdformat_findings(robot: Robot, findings: Findings) -> None:
                      f"{name!r} in Gazebo, its mass and sensors move to {into!r}{renamed}",
                      PREFLIGHT_HINTS['G601'].replace('JOINT', joint.name), 'link')
     for name, below in conversion.cut.items():
+        if name in conversion.lumped and not below:
+            continue  # a massless frame lumped into its parent: nothing is lost
         link = robot.get_link(name)
         mass = link.inertial.mass if link.inertial is not None else None
         why = ('has no <inertial>' if mass is None and name not in conversion.lumped_into
@@ -120,7 +122,7 @@ def sdformat_findings(robot: Robot, findings: Findings) -> None:
             what = 'it is the root: no link is left, Gazebo cannot load the robot'
         else:
             what = 'the conversion leaves it out with its joint'
-        lost = (f'; the {len(below)} link(s) below it are left out too: {", ".join(below)}'
+        lost = (f'; the {len(below)} link(s) below it are left out too: {", ".join(map(repr, below))}'
                 if below else '')
         findings.add('G602', link, f'link {name!r}', link_path(name), f'{why}: {what}{lost}',
                      PREFLIGHT_HINTS['G602'], 'link')
