@@ -77,14 +77,19 @@ def _uri(path: str) -> tuple[str, bool]:
     return quote(relative.as_posix()), True
 
 
+EXPANDED = ' (expanded)'  # how a location in an expanded Xacro names its file
+
+
 def _location(finding: ValidationError, fallback: str) -> dict[str, object]:
     where = finding.location
-    uri, relative = _uri(where.file or fallback)
+    file = where.file or fallback
+    expanded = file.endswith(EXPANDED)  # its lines are the expansion's, not the file's
+    uri, relative = _uri(file[:-len(EXPANDED)] if expanded else file)
     artifact: dict[str, object] = {'uri': uri}
     if relative:
         artifact['uriBaseId'] = '%SRCROOT%'
-    region = {'startLine': where.line or 1}
-    if where.line is not None and where.column is not None:
+    region = {'startLine': 1 if expanded else where.line or 1}
+    if where.line is not None and where.column is not None and not expanded:
         region['startColumn'] = where.column
     location: dict[str, object] = {
         'physicalLocation': {'artifactLocation': artifact, 'region': region}}
@@ -92,6 +97,13 @@ def _location(finding: ValidationError, fallback: str) -> dict[str, object]:
         location['logicalLocations'] = [{'fullyQualifiedName': where.path,
                                          'kind': 'element'}]
     return location
+
+
+def _message(finding: ValidationError) -> str:
+    where = finding.location
+    line = (f' (line {where.line} of the expanded Xacro)'
+            if (where.file or '').endswith(EXPANDED) and where.line else '')
+    return f'{finding.element}: {finding.message} ({finding.hint}){line}'
 
 
 def _version() -> str:
@@ -131,7 +143,7 @@ def sarif_report(reports: list[FileReport]) -> str:
             result: dict[str, object] = {
                 'ruleId': finding.code, 'ruleIndex': index[finding.code],
                 'level': _LEVEL[finding.severity],
-                'message': {'text': f'{finding.element}: {finding.message} ({finding.hint})'},
+                'message': {'text': _message(finding)},
                 'locations': [_location(finding, report.path)]}
             if kind is not None:
                 result['suppressions'] = [{'kind': kind}]
