@@ -25,9 +25,10 @@ from __future__ import annotations
 import difflib
 import math
 from pathlib import Path
+import re
 
 from click.testing import CliRunner
-from helpers import check_urdf_verdict, load_yourdfpy, snapshot
+from helpers import check_urdf_verdict, CORPUS, corpus_cases, load_yourdfpy, snapshot
 import pytest
 from test_validation import mujoco_accepts
 
@@ -219,10 +220,11 @@ def test_the_fixed_file_keeps_crlf_and_comments(tmp_path: Path) -> None:
 
 
 def test_tensor_of_a_turned_box_is_turned_into_the_inertial_frame(tmp_path: Path) -> None:
-    text = broken('I203').replace('<collision>\n      <origin xyz="0 0 0.1"/>\n      <geometry>'
-                        '<cylinder radius="0.03" length="0.2"/>',
-                        '<collision>\n      <origin xyz="0 0 0.1" rpy="0 1.5707963267948966 0"'
-                        '/>\n      <geometry><box size="0.3 0.1 0.05"/>')
+    cylinder = ('<collision>\n      <origin xyz="0 0 0.1"/>\n      <geometry>'
+                '<cylinder radius="0.03" length="0.2"/>')
+    turned_box = ('<collision>\n      <origin xyz="0 0 0.1" rpy="0 1.5707963267948966 0"/>'
+                  '\n      <geometry><box size="0.3 0.1 0.05"/>')
+    text = broken('I203').replace(cylinder, turned_box)
     path = tmp_path / 'box.urdf'
     path.write_text(text)
     CliRunner().invoke(main, ['check', '--fix', str(path)])
@@ -233,3 +235,55 @@ def test_tensor_of_a_turned_box_is_turned_into_the_inertial_frame(tmp_path: Path
                 mass * (x * x + y * y) / 12]  # textbook moments of a solid box
     assert [inertia[0][0], inertia[1][1], inertia[2][2]] == pytest.approx(expected, rel=1e-9)
     assert abs(inertia[0][2]) < 1e-15 and mujoco_accepts(path)
+
+
+def test_only_repaired_lines_change_where_the_writer_is_not_byte_exact(tmp_path: Path) -> None:
+    # a misspelled declaration and blank lines at the end: the writer mends both, --fix not
+    text = broken('J104').replace('<?xml version="1.0"?>', '<?xml verison="1.0"?>') + '\n\n'
+    path = tmp_path / 'odd.urdf'
+    path.write_text(text)
+    assert Robot.from_urdf(path).to_urdf() != text
+    CliRunner().invoke(main, ['check', '--fix', str(path)])
+    removed, added = _diff(text, path.read_text())
+    assert removed == [defect_line(text)] and len(added) == 1
+    assert path.read_text().endswith('</robot>\n\n\n')
+
+
+def _corpus_urdfs() -> list[Path]:
+    return sorted(CORPUS.rglob('*.urdf')) if CORPUS.is_dir() else []
+
+
+@pytest.mark.parametrize('path', corpus_cases(
+    _corpus_urdfs(), [str(path.relative_to(CORPUS)) for path in _corpus_urdfs()]))
+def test_fix_on_the_corpus_changes_only_the_repaired_lines(path: Path, tmp_path: Path) -> None:
+    try:
+        Robot.from_urdf(path)
+        load_yourdfpy(path)
+    except Exception as error:  # noqa: B902 - files either reader refuses are not the subject
+        pytest.skip(f'not readable by both readers: {error}')
+    copy = tmp_path / path.name
+    copy.write_bytes(path.read_bytes())
+    result = CliRunner().invoke(main, ['check', '--fix', '--no-meshes', str(copy)])
+    repaired = re.findall(r": fixed (\w+) (\w+) '([^']*)'", result.stdout)
+    if not repaired:
+        assert copy.read_bytes() == path.read_bytes()
+        pytest.skip('nothing to fix')
+    original = path.read_bytes().decode()
+    removed, added = _diff(original, copy.read_bytes().decode())
+    changes = _changed(_model(path), _model(copy))
+    allowed, limits = set(), 0
+    for code, kind, name in repaired:
+        assert code in ('I205', 'J104'), code  # what the corpus has; others: the fixtures
+        if code == 'J104':
+            limits += 1
+            allowed |= {('joint', name, 'limit', 'lower'), ('joint', name, 'limit', 'upper')}
+    added_names = set(re.findall(r"added a massless root link '([^']*)' and fixed joint "
+                                 r"'([^']*)'", result.stdout))
+    new_items = {name for pair in added_names for name in pair}
+    allowed |= {key for key in changes if key[1] in new_items}
+    assert set(changes) == allowed
+    assert len(removed) == limits and all('<limit' in original.splitlines()[n - 1]
+                                          for n in removed)
+    assert len(added) == limits + 5 * sum(code == 'I205' for code, _, _ in repaired)
+    assert not {code for code, _, _ in repaired} & {
+        f.code for f in Robot.from_urdf(copy).validate(check_meshes=False)}

@@ -129,8 +129,8 @@ def _all_urdfs() -> list:
 
 
 @pytest.mark.parametrize('path', _all_urdfs())
-def test_sdformat_rules_match_libsdformat_on_real_robots(path: Path, convert_urdf,
-                                                        tmp_path: Path) -> None:
+def test_sdformat_rules_match_libsdformat_on_real_robots(
+        path: Path, convert_urdf, tmp_path: Path) -> None:
     robot, path = _readable(path, tmp_path)
     if robot is None:
         pytest.skip('not a single-root URDF we read as such')
@@ -193,20 +193,22 @@ def _write_l_shape(path: Path) -> None:
     mesh.export(path)
 
 
+INERTIAL = ('<inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" '
+            'iyz="0" izz="0.01"/></inertial>')
 _MUJOCO_ROBOT = """<?xml version="1.0"?>
 <robot name="engines">
   <link name="base_link">
-    <inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+    {inertial}
   </link>
   <link name="box">
     <collision><geometry><box size="0.1 0.2 0.3"/></geometry></collision>
   </link>
   <link name="bent">
-    <inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+    {inertial}
     <collision><geometry><mesh filename="{l_shape}"/></geometry></collision>
   </link>
   <link name="cube">
-    <inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+    {inertial}
     <collision><geometry><mesh filename="{cube}"/></geometry></collision>
     <collision><geometry><mesh filename="{dae}"/></geometry></collision>
   </link>
@@ -232,7 +234,8 @@ def test_mujoco_changes_are_reported_as_mujoco_makes_them(tmp_path: Path) -> Non
     _write_l_shape(tmp_path / 'l_shape.obj')
     trimesh.creation.box((0.1, 0.1, 0.1)).export(tmp_path / 'cube.stl')
     (tmp_path / 'cube.dae').write_text('<COLLADA/>')
-    text = _MUJOCO_ROBOT.format(l_shape='l_shape.obj', cube='cube.stl', dae='cube.dae')
+    text = _MUJOCO_ROBOT.format(l_shape='l_shape.obj', cube='cube.stl', dae='cube.dae',
+                                inertial=INERTIAL)
     path = tmp_path / 'engines.urdf'
     path.write_text(text)
     found = {(f.code, f.element): f for f in preflight(Robot.from_urdf(path), ['mujoco'])}

@@ -31,7 +31,7 @@ from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.formats import load
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
-from urdfgenpy_ros.validation.fix import fix, LIMIT_FIELDS
+from urdfgenpy_ros.validation.fix import carry_over, fix, LIMIT_FIELDS
 from urdfgenpy_ros.validation.preflight import ENGINES, preflight
 from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions
 
@@ -172,6 +172,7 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
         report.findings, report.suppressed = suppressions.split(_findings(robot, options))
         if not options.fix:
             return report
+        before = robot.to_urdf()
         repairs = fix(robot, report.findings, options.limit_defaults)
         if not repairs:
             return report
@@ -181,12 +182,15 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
                 f'lose its macros and properties: repair the {len(repairs)} finding(s) '
                 'by hand (the lines above say how)')
             return report
-        report.repairs = repairs
         old = path.read_bytes().decode('utf-8')
-        new = robot.to_urdf()
-        if new == old:
-            report.repairs = []
+        new = carry_over(old, before, robot.to_urdf())
+        if new is None:
+            report.notes.append(f'{path}: not fixed: the repaired lines could not be placed '
+                                'in the file as it is written (please report this)')
             return report
+        if new == old:
+            return report
+        report.repairs = repairs
         if options.dry_run:
             click.echo(''.join(difflib.unified_diff(
                 old.splitlines(keepends=True), new.splitlines(keepends=True),

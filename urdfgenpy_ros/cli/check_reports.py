@@ -122,12 +122,11 @@ def sarif_report(reports: list[FileReport]) -> str:
     suppression (``inSource`` for a comment, ``external`` for ``--ignore``), and a file
     that could not be read is a tool notification.
     """
-    everything = [(finding, None) for report in reports for finding in report.findings]
-    everything += [(finding, kind) for report in reports
-                   for finding, kind in report.suppressed]
-    codes = sorted({finding.code for finding, _ in everything})
-    hints = {}
-    for finding, _ in everything:
+    everything = [finding for report in reports for finding in report.findings]
+    everything += [finding for report in reports for finding, _ in report.suppressed]
+    codes = sorted({finding.code for finding in everything})
+    hints: dict[str, str] = {}
+    for finding in everything:
         hints.setdefault(finding.code, PREFLIGHT_HINTS.get(finding.code, finding.hint))
     rules = [{'id': code, 'name': code,
               'shortDescription': {'text': CODES[code][1] if code in CODES else code},
@@ -194,18 +193,18 @@ def junit_report(reports: list[FileReport], strict: bool) -> str:
             cases.append((_case_name(finding), 'skipped', kind, str(finding)))
         if not cases:
             cases.append(('no findings', None, '', ''))
-        for name, kind, kind_type, text in cases:
+        for name, outcome, outcome_type, text in cases:
             case = ElementTree.SubElement(suite, 'testcase', name=name, classname=report.path)
             counts['tests'] += 1
-            if kind is None:
+            if outcome is None:
                 if text:
                     ElementTree.SubElement(case, 'system-out').text = text
                 continue
-            detail = ElementTree.SubElement(case, kind, message=text.split(': ', 1)[-1])
-            if kind != 'skipped':
-                detail.set('type', kind_type)
+            detail = ElementTree.SubElement(case, outcome, message=text.split(': ', 1)[-1])
+            if outcome != 'skipped':
+                detail.set('type', outcome_type)
                 detail.text = text
-            counts[{'failure': 'failures', 'error': 'errors', 'skipped': 'skipped'}[kind]] += 1
+            counts[{'failure': 'failures', 'error': 'errors', 'skipped': 'skipped'}[outcome]] += 1
         for key, value in counts.items():
             suite.set(key, str(value))
             totals[key] += value

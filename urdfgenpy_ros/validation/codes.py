@@ -79,7 +79,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     # conventions
     'C401': (W, "no link called 'base_link'"),
     # engine pre-flight (validation/preflight.py): what a consumer silently changes
-    'M501': (W, "MuJoCo fuses the link into its parent body (fixed joint, or a fixed base)"),
+    'M501': (W, 'MuJoCo fuses the link into its parent body (fixed joint, or a fixed base)'),
     'M502': (W, 'MuJoCo uses another mass or inertia than the URDF gives'),
     'M503': (W, 'MuJoCo changes the joint range'),
     'M504': (W, 'MuJoCo collides with the convex hull of a non-convex mesh'),

@@ -201,7 +201,7 @@ def _hulls(meshes: list[tuple[str, str, Path]], findings: Findings) -> None:
     robot = findings.robot
     for name, where, path in meshes:
         try:
-            mesh = trimesh.load(str(path), force='mesh')
+            mesh: Any = trimesh.load(str(path), force='mesh')
         except Exception:  # noqa: B902 - a mesh trimesh cannot read was read by MuJoCo
             continue
         if mesh.is_convex:

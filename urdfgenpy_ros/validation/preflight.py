@@ -105,8 +105,8 @@ def sdformat_findings(robot: Robot, findings: Findings) -> None:
         renamed = (f'; its {" and ".join(parts)} are renamed {into}_fixed_joint_lump__...'
                    if parts else '')
         findings.add('G601', link, f'link {name!r}', link_path(name),
-                     f"lumped into {into!r} (fixed joint {joint.name!r}): there is no frame "
-                     f"{name!r} in Gazebo, its mass and sensors move to {into!r}{renamed}",
+                     f'lumped into {into!r} (fixed joint {joint.name!r}): there is no frame '
+                     f'{name!r} in Gazebo, its mass and sensors move to {into!r}{renamed}',
                      PREFLIGHT_HINTS['G601'].replace('JOINT', joint.name), 'link')
     for name, below in conversion.cut.items():
         if name in conversion.lumped and not below:
@@ -122,8 +122,8 @@ def sdformat_findings(robot: Robot, findings: Findings) -> None:
             what = 'it is the root: no link is left, Gazebo cannot load the robot'
         else:
             what = 'the conversion leaves it out with its joint'
-        lost = (f'; the {len(below)} link(s) below it are left out too: {", ".join(map(repr, below))}'
-                if below else '')
+        listed = ', '.join(map(repr, below))
+        lost = f'; the {len(below)} link(s) below it are left out too: {listed}' if below else ''
         findings.add('G602', link, f'link {name!r}', link_path(name), f'{why}: {what}{lost}',
                      PREFLIGHT_HINTS['G602'], 'link')
 
