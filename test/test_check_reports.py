@@ -148,3 +148,26 @@ def test_json_counts_suppressed_and_fixed(files, tmp_path: Path) -> None:
     entry, = report['files']
     assert entry['suppressed'][0]['suppression'] == 'inSource'
     assert entry['fixed'][0]['code'] == 'J102'
+
+
+def test_pre_commit_hooks_run_check(tmp_path: Path) -> None:
+    import re
+    import shlex
+    yaml = require_module('yaml')
+    hooks = {hook['id']: hook for hook in yaml.safe_load(
+        (Path(__file__).parents[1] / '.pre-commit-hooks.yaml').read_text())}
+    assert set(hooks) == {'urdfgenpy-check', 'urdfgenpy-fix'}
+    assert re.search(hooks['urdfgenpy-check']['files'], 'urdf/arm.urdf.xacro')
+    assert not re.search(hooks['urdfgenpy-check']['files'], 'urdf/macros.xacro')
+    assert 'urdfgenpy = ' in (Path(__file__).parents[1] / 'setup.py').read_text()
+    path = tmp_path / 'arm.urdf'
+    for hook_id, status, text in (('urdfgenpy-check', 1, broken('J104')),
+                                  ('urdfgenpy-fix', 0, broken('J104'))):
+        hook = hooks[hook_id]
+        assert re.search(hook['files'], path.name) and hook['language'] == 'python'
+        path.write_text(text)
+        program, *arguments = shlex.split(hook['entry'])
+        assert program == 'urdfgenpy'
+        result = CliRunner().invoke(main, [*arguments, str(path)])  # pre-commit adds files
+        assert result.exit_code == status, result.output
+    assert path.read_text() != broken('J104')  # the fix hook repaired it
