@@ -181,6 +181,7 @@ def test_dry_run_prints_the_diff_and_writes_nothing(tmp_path: Path) -> None:
     assert preview.stdout == expected and expected.count('\n-  ') == 1
     assert preview.exit_code == 1  # nothing was written: the file still has the error
     assert 'error J104' in preview.stderr and '1 to fix' in preview.stderr
+    assert f"{path}:{defect_line(text)}:5: to fix J104 joint 'wrist'" in preview.stderr
     assert CliRunner().invoke(main, ['check', '--dry-run', str(path)]).exit_code == 2
 
 

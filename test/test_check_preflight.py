@@ -18,12 +18,11 @@ from __future__ import annotations
 
 from pathlib import Path
 import re
-import shutil
 import subprocess
 
 from click.testing import CliRunner
 from helpers import (
-    CORPUS, corpus_cases, FIXTURES, parse_xml, REPO, require_module, require_tool)
+    build_sdf_checker, CORPUS, corpus_cases, FIXTURES, parse_xml, require_module)
 from lxml import etree
 import pytest
 from registry_robots import absolute_meshes, robot_id, robots, search_paths
@@ -36,24 +35,16 @@ from urdfgenpy_ros.validation.mujoco_preflight import _by_rules
 from urdfgenpy_ros.validation.preflight import preflight, sdformat_conversion
 
 PREFLIGHT = FIXTURES / 'preflight'
-CONVERTER = REPO / 'test' / 'sdf_checker' / 'convert_urdf.cc'
 
 
 @pytest.fixture(scope='session')
 def convert_urdf(tmp_path_factory: pytest.TempPathFactory):
-    """Build the helper that prints libsdformat's conversion of a URDF; return a runner."""
-    require_tool('pkg-config')
-    flags = subprocess.run(['pkg-config', '--cflags', '--libs', 'sdformat12'],
-                           capture_output=True, text=True)
-    if flags.returncode != 0:
-        require_tool('libsdformat-dev (sdformat12.pc)')
-    binary = tmp_path_factory.mktemp('converter') / 'convert_urdf'
-    subprocess.run([shutil.which('g++') or 'g++', '-O1', '-o', str(binary), str(CONVERTER),
-                    *flags.stdout.split()], check=True, timeout=300)
+    """Build the libsdformat checker; return a runner printing its conversion of a URDF."""
+    binary = build_sdf_checker(tmp_path_factory.mktemp('converter'))
 
     def run(path: Path) -> tuple[int, str, str]:
-        result = subprocess.run([str(binary), str(path)], capture_output=True, text=True,
-                                timeout=60)
+        result = subprocess.run([str(binary), '--sdf', str(path)], capture_output=True,
+                                text=True, timeout=60)
         return result.returncode, result.stdout, result.stderr
     return run
 

@@ -171,3 +171,11 @@ def test_pre_commit_hooks_run_check(tmp_path: Path) -> None:
         result = CliRunner().invoke(main, [*arguments, str(path)])  # pre-commit adds files
         assert result.exit_code == status, result.output
     assert path.read_text() != broken('J104')  # the fix hook repaired it
+
+
+def test_text_report_to_a_file(files, tmp_path: Path) -> None:
+    report = tmp_path / 'check.txt'
+    result = _run(tmp_path, '-o', str(report), str(files['error.urdf']))
+    assert result.exit_code == 1 and result.stdout == ''
+    (line,) = report.read_text().splitlines()
+    assert ' error J104 ' in line and result.stderr.startswith('1 file(s): 1 error(s)')

@@ -121,26 +121,27 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
     options = _Options(not no_meshes, package_paths, engines, ignored, repair, dry_run,
                        limit_defaults)
     text = output == 'text'
-    # the diff of --dry-run owns standard output; a text report goes to stderr then
-    say = (lambda line: click.echo(line, err=True)) if dry_run else click.echo
+    done = 'to fix' if dry_run else 'fixed'
+    lines: list[str] = []
     reports = []
     for path in files:
         report = _check_file(path, mappings, options)
         reports.append(report)
-        if text:
-            for line in [*(str(r) for r in report.repairs), *report.notes,
-                         *(str(f) for f in report.findings)]:
-                say(line)
-            if report.error is not None:
-                say(report.error)
-    if output != 'text':
+        lines += [str(repair).replace(': fixed ', f': {done} ', 1) for repair in report.repairs]
+        lines += [*report.notes, *(str(finding) for finding in report.findings)]
+        lines += [report.error] if report.error is not None else []
+        if text and report_file is None:  # as it goes; the diff of --dry-run owns stdout
+            for line in lines:
+                click.echo(line, err=dry_run)
+            lines = []
+    if not text:
         document = {'json': json_report, 'sarif': sarif_report}[output](reports) \
             if output != 'junit' else junit_report(reports, strict)
-        if report_file is not None:
-            report_file.write_text(document if document.endswith('\n') else document + '\n',
-                                   encoding='utf-8')
-        else:
-            click.echo(document, err=dry_run)
+        lines = [document.rstrip('\n')]
+    if report_file is not None:
+        report_file.write_text(''.join(f'{line}\n' for line in lines), encoding='utf-8')
+    elif not text:
+        click.echo(lines[0], err=dry_run)
     every = [finding for report in reports for finding in report.findings]
     errors = sum(finding.severity is Severity.ERROR for finding in every)
     warnings, unreadable = len(every) - errors, sum(r.error is not None for r in reports)
@@ -148,7 +149,7 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
     fixed = sum(len(report.repairs) for report in reports)
     if text and (len(files) > 1 or every or unreadable or suppressed or fixed):
         extra = (f', {suppressed} suppressed' if suppressed else '') + (
-            f', {fixed} {"to fix" if dry_run else "fixed"}' if fixed else '')
+            f', {fixed} {done}' if fixed else '')
         click.echo(f'{len(files)} file(s): {errors} error(s), {warnings} warning(s), '
                    f'{unreadable} unreadable{extra}', err=True)
     failed = errors or (strict and warnings)
