@@ -283,3 +283,13 @@ def test_fix_on_the_corpus_changes_only_the_repaired_lines(path: Path, tmp_path:
     assert len(added) == limits + 5 * sum(code == 'I205' for code, _, _ in repaired)
     assert not {code for code, _, _ in repaired} & {
         f.code for f in Robot.from_urdf(copy).validate(check_meshes=False)}
+
+
+def test_fix_writes_through_a_symlink_and_keeps_the_mode(tmp_path: Path) -> None:
+    target, link = tmp_path / 'real.urdf', tmp_path / 'link.urdf'
+    target.write_text(broken('J104'))
+    target.chmod(0o640)
+    link.symlink_to(target)
+    CliRunner().invoke(main, ['check', '--fix', str(link)])
+    assert link.is_symlink() and 'lower="-1" upper="1" effort="5"' in target.read_text()
+    assert target.stat().st_mode & 0o777 == 0o640

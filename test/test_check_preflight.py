@@ -244,6 +244,10 @@ def test_mujoco_changes_are_reported_as_mujoco_makes_them(tmp_path: Path) -> Non
     assert not model.jnt_limited[bent]
     assert "link 'base_link'" not in {model.body(i).name for i in range(model.nbody)}
     assert found[('M501', "link 'base_link'")].location.line == 3
+    by_rules = Findings(Robot.from_urdf(path))  # without MuJoCo: its rules
+    _by_rules(by_rules.robot, by_rules)
+    assert {(f.code, f.element) for f in by_rules.items} == {
+        ('M501', "link 'base_link'"), ('M503', "joint 'bent_joint'")}
 
 
 def test_cli_engines_option_and_exit_codes(tmp_path: Path) -> None:

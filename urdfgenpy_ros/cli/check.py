@@ -183,7 +183,7 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
                 f'lose its macros and properties: repair the {len(repairs)} finding(s) '
                 'by hand (the lines above say how)')
             return report
-        old = path.read_bytes().decode('utf-8')
+        old = path.read_bytes().decode('utf-8', 'surrogateescape')  # other bytes stay
         new = carry_over(old, before, robot.to_urdf())
         if new is None:
             report.notes.append(f'{path}: not fixed: the repaired lines could not be placed '
@@ -213,12 +213,13 @@ def _is_xacro(path: Path, robot: Robot) -> bool:
 
 
 def _replace(path: Path, text: str) -> None:
-    """Write ``text`` over ``path`` atomically, keeping its permissions."""
+    """Write ``text`` over ``path`` atomically, keeping its permissions (and symlinks)."""
+    path = path.resolve()
     mode = path.stat().st_mode
     handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f'.{path.name}.')
     try:
         with os.fdopen(handle, 'wb') as stream:
-            stream.write(text.encode('utf-8'))
+            stream.write(text.encode('utf-8', 'surrogateescape'))
         os.chmod(temporary, mode & 0o7777)
         os.replace(temporary, path)
     except BaseException:
