@@ -19,11 +19,13 @@ from __future__ import annotations
 import os
 from pathlib import Path
 import shutil
+import statistics
 import subprocess
 import sys
 import time
 
 from helpers import FIXTURES, require_module
+
 import pytest
 
 from ros_helpers import Graph, stop
@@ -77,16 +79,18 @@ def test_colcon_built_publisher_publishes_the_example_to_late_subscribers(
 
 
 @pytest.mark.parametrize('rate', [10, 100.0])
-def test_achieved_rate_is_within_5_percent(graph: Graph, rate: float) -> None:
+def test_publishing_period_is_within_5_percent(graph: Graph, rate: float) -> None:
+    # The median interval between stamps is the timer's period; a loaded machine that makes
+    # the timer miss a tick lengthens single intervals but not the median.
     graph.start(f'rate:={rate}')
     states = graph.collect(JointState, 'joint_states')
     assert graph.spin_until(lambda: len(states) >= 2, 15)
     start = len(states)
     graph.spin_for(3.0 if rate > 10 else 4.0)
-    window = states[start:]
-    stamps = [m.header.stamp.sec + m.header.stamp.nanosec * 1e-9 for m in window]
-    achieved = (len(stamps) - 1) / (stamps[-1] - stamps[0])
-    assert achieved == pytest.approx(rate, rel=0.05)
+    stamps = [m.header.stamp.sec + m.header.stamp.nanosec * 1e-9 for m in states[start:]]
+    assert len(stamps) >= 10, f'only {len(stamps)} joint_states in the window'
+    intervals = [later - earlier for earlier, later in zip(stamps, stamps[1:])]
+    assert statistics.median(intervals) == pytest.approx(1 / rate, rel=0.05)
 
 
 def test_mimic_joints_follow_their_leaders_through_chains(graph: Graph) -> None:

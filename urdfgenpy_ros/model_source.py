@@ -45,8 +45,9 @@ def load_model(model: str, xacro_args: Sequence[str] = (),
     Return the robot ``model`` names and the files to watch for changes.
 
     ``model`` is a .urdf, a .xacro/.urdf.xacro (with ``xacro_args``), a DH table (.yaml,
-    .yml, .csv), a ``package.module:function`` returning a Robot or URDF text, or '' for
-    the built-in example robot.
+    .yml, .csv), an assembly file (``*.assembly.yaml``: every part's files are watched), a
+    ``package.module:function`` returning a Robot or URDF text, or '' for the built-in
+    example robot.
 
     :raises UrdfgenpyError: with one line that says what is wrong and how to fix it.
     """
@@ -57,7 +58,7 @@ def load_model(model: str, xacro_args: Sequence[str] = (),
     if path.name.lower().endswith(_FILES):
         if not path.is_file():
             raise UrdfgenpyError(f"parameter 'model': {model} does not exist (give the path "
-                                 'of a .urdf, .xacro or DH table file)')
+                                 'of a .urdf, .xacro, DH table or assembly file)')
         robot = load(path, parse_xacro_args(xacro_args), package_paths)
         return robot, robot.included_files or [str(path.resolve())]
     if ':' in model and '/' not in model:

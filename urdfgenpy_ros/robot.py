@@ -25,6 +25,7 @@ from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import (
     ModelError, ModelTypeError, ReadWarning, SourceLocation, ValidationError)
 from urdfgenpy_ros.extensions import Extension
+from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.joint import Joint, JointMimic
 from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.material import Material
@@ -419,9 +420,17 @@ class Robot:
         from urdfgenpy_ros.formats import urdf
         return urdf.write_urdf(self, path)
 
-    def to_xacro(self, path: str | PathLike[str] | None = None) -> str:
-        """Return idiomatic Xacro text; also write it to ``path`` when given."""
+    def to_xacro(self, path: str | PathLike[str] | None = None, *, macro: bool = False) -> str:
+        """
+        Return idiomatic Xacro text; also write it to ``path`` when given.
+
+        With ``macro``, the robot becomes ``<xacro:macro name=... params="prefix parent
+        *origin">`` in ``<name>.macro.xacro`` beside ``path``, and ``path`` the file that
+        instantiates it (see :func:`urdfgenpy_ros.formats.xacro.write_macro_xacro`).
+        """
         from urdfgenpy_ros.formats import xacro
+        if macro:
+            return xacro.write_macro_xacro(self, path)
         return xacro.write_xacro(self, path)
 
     def to_sdf(self, path: str | PathLike[str] | None = None, lump_fixed: bool = False) -> str:
@@ -453,3 +462,46 @@ class Robot:
         """Write the plain-text kinematic tree to ``path``."""
         from urdfgenpy_ros.tree import save_tree
         save_tree(self, path)
+
+    # ---- assembling ----------------------------------------------------------------
+
+    def prefixed(self, prefix: str, *, materials: bool = False) -> Robot:
+        """
+        Return a copy with ``prefix`` before every link and joint name.
+
+        Every reference follows: joint ends, mimic targets, ``<gazebo reference>``,
+        transmission and ``<ros2_control>`` joints, sensor frames and the joint and link
+        names in plugin parameters. Transmission, actuator, ``<ros2_control>`` and sensor
+        names (and sensors' relative topics) get the prefix too. Robot-level materials keep
+        their names unless ``materials`` is true.
+        """
+        from urdfgenpy_ros.assembly import prefixed
+        return prefixed(self, prefix, materials=materials)
+
+    def attach(self, part: Robot, at: str, origin: Origin | None = None, prefix: str = '',
+               joint_name: str | None = None, joint_type: str = 'fixed',
+               **joint_options: Any) -> Robot:
+        """
+        Join a copy of ``part``, its names prefixed, to the link ``at``; return this robot.
+
+        The joint (``joint_name``, default ``<at>_to_<part root>``) is fixed unless
+        ``joint_type`` says otherwise (``axis=``, ``limit=`` ... then go to the Joint).
+        Names that clash are refused, all listed in one line, and nothing changes.
+        Materials that equal one of this robot's are shared; same-named ones of another
+        colour are renamed with the prefix. ``part`` itself is not changed.
+        """
+        from urdfgenpy_ros.assembly import attach
+        return attach(self, part, at, origin, prefix, joint_name, joint_type, **joint_options)
+
+    @classmethod
+    def from_assembly(cls, path: str | PathLike[str],
+                      search_paths: list[str | PathLike[str]] | tuple = ()) -> Robot:
+        """
+        Build the robot an assembly file (YAML) describes: parts, where each attaches.
+
+        ``included_files`` lists the assembly file and every part's files.
+
+        :raises ParseError: one line with the file, line, key and the fix.
+        """
+        from urdfgenpy_ros.assembly_file import read_assembly
+        return read_assembly(path, search_paths)

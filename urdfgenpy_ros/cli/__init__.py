@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import click
 
+from urdfgenpy_ros.cli.attach import attach
 from urdfgenpy_ros.cli.check import check
 from urdfgenpy_ros.cli.convert import convert
 from urdfgenpy_ros.cli.example import example
@@ -54,5 +55,5 @@ def main(ctx: click.Context, verbose: bool) -> None:
     ctx.obj = {'verbose': verbose}
 
 
-for command in (example, tree, convert, check, inertia, init, graph, render, view):
+for command in (example, tree, convert, check, inertia, init, graph, render, view, attach):
     main.add_command(command)

@@ -48,13 +48,17 @@ def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
     """
     Read a robot from ``path`` in the format its suffix names.
 
-    ``mappings`` are Xacro arguments; ``search_paths`` folders holding ROS packages. A DH
-    table (.yaml, .yml, .csv) gives its skeleton. A ``.urdf`` file that is Xacro
-    (TurtleBot3's are) is expanded with xacro, as ROS launch files do, and the robot gets a
-    read warning (X101) saying so.
+    ``mappings`` are Xacro arguments; ``search_paths`` folders holding ROS packages. An
+    assembly file (``*.assembly.yaml``, or YAML with a top-level ``parts:``) gives the
+    robot its parts make; any other .yaml, .yml or .csv file is a DH table and gives its
+    skeleton. A ``.urdf`` file that is Xacro (TurtleBot3's are) is expanded with xacro, as
+    ROS launch files do, and the robot gets a read warning (X101) saying so.
     """
     from urdfgenpy_ros.robot import Robot
     if Path(path).suffix.lower() in DH_SUFFIXES:
+        from urdfgenpy_ros.assembly_file import is_assembly
+        if is_assembly(path):  # *.assembly.yaml, or a YAML file with a top-level parts:
+            return Robot.from_assembly(path, list(search_paths))
         from urdfgenpy_ros.dh import DHTable
         return DHTable.from_file(path).to_robot(Path(path).name.split('.')[0])
     kind = format_of(path)

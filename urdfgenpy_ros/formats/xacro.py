@@ -23,12 +23,15 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from os import PathLike
+from pathlib import Path
 import re
 from typing import Any, TYPE_CHECKING
 
+from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import esc, write_text
+from urdfgenpy_ros.formats.start_tags import tag_end
 from urdfgenpy_ros.formats.urdf import UrdfWriter
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.link import Link
@@ -167,3 +170,125 @@ def write_xacro(robot: Robot, path: str | PathLike[str] | None = None, *,
     if path is not None:
         write_text(path, text)
     return text
+
+
+# ---- reusable macros ------------------------------------------------------------------
+
+PREFIX_MARK = 'urdfgenpyprefixmark'
+"""Stands for ``${prefix}`` while the macro body is written (a valid name, no ``$``)."""
+
+
+class _MacroBody(XacroWriter):
+    """The Xacro writer for a robot whose names start with PREFIX_MARK."""
+
+    def __init__(self, robot: Robot, extensions: list[Extension] | None) -> None:
+        super().__init__(robot, materials=False, extensions=extensions)
+        taken: set[str] = set()  # mass properties are named after the unprefixed links
+        self.mass_names = {link.name: _identifier(link.name.replace(PREFIX_MARK, ''), taken)
+                           for link in robot.links if link.inertial is not None}
+
+
+_NAMESPACE = re.compile(r'xmlns(?::[\w.-]+)?\s*=\s*("[^"]*"|\'[^\']*\')')
+
+
+def macro_name(robot: Robot) -> str:
+    """Return the name of the robot's Xacro macro: its name as an identifier."""
+    name = re.sub(r'\W', '_', robot.name)
+    return name if name and not name[0].isdigit() else f'_{name}'
+
+
+def with_prefix(text: str) -> str:
+    """Return Xacro text written for a ``prefixed(PREFIX_MARK)`` robot with ``${prefix}``."""
+    return _dollars(text).replace(PREFIX_MARK, '${prefix}')
+
+
+def macro_xacro(robot: Robot, *, includes: Sequence[str] = (), materials: bool = True,
+                skip: Sequence[str] = (), calls: Sequence[str] = ()) -> str:
+    """
+    Return ``<name>.macro.xacro``: the robot as ``<xacro:macro params="prefix parent *origin">``.
+
+    Every link, joint and reference gets ``${prefix}`` (as :meth:`Robot.prefixed` does);
+    a non-empty ``parent`` adds the fixed joint ``${parent}_to_${prefix}<root>`` placed by
+    the ``origin`` block, as :meth:`Robot.attach` names it. Robot-level materials stand
+    outside the macro, so a file that includes it once can call it many times.
+
+    ``includes`` are included first; ``materials=False`` leaves the materials out;
+    robot-level blocks whose tag is in ``skip`` are left out and ``calls`` (Xacro lines,
+    ``$`` as written) end the macro's body: the scaffolder puts those blocks in macros of
+    their own files.
+    """
+    from urdfgenpy_ros.assembly import prefixed
+    marked = prefixed(robot, PREFIX_MARK)
+    blocks = [block for block in marked.extensions if block.tag not in skip]
+    writer = _MacroBody(marked, blocks)
+    text = writer.document().replace('\r\n', '\n')
+    opening = re.search(r'<robot\b', text)
+    assert opening is not None
+    start = tag_end(text, opening.start())
+    declared = ''.join(f' {match.group(0)}' for match in _NAMESPACE.finditer(
+        text[opening.start():start]) if not match.group(0).startswith('xmlns:xacro='))
+    end = text.rfind('</robot>')
+    body = text[start:end].strip('\n') if end > start else ''
+    unit = writer.unit
+    body = '\n'.join(unit + line if line.strip() else line for line in body.split('\n'))
+    body = body.replace(PREFIX_MARK, '${prefix}')  # the writer escaped every other '$'
+    root = with_prefix(esc(marked.root.name))
+    defined = [_dollars(writer.write_material(material, unit))
+               for material in robot.materials] if materials else []
+    e, inner, name = '$', unit * 2, macro_name(robot)
+    mount = [f'{inner}<xacro:if value="{e}{{parent != \'\'}}">',
+             f'{inner}{unit}<joint name="{e}{{parent}}_to_{root}" type="fixed">',
+             f'{inner}{unit * 2}<parent link="{e}{{parent}}"/>',
+             f'{inner}{unit * 2}<child link="{root}"/>',
+             f'{inner}{unit * 2}<xacro:insert_block name="origin"/>',
+             f'{inner}{unit}</joint>', f'{inner}</xacro:if>']
+    lines = ['<?xml version="1.0"?>',
+             f'<!-- {_comment(robot.name)} as a macro: include this file, then call '
+             f'<xacro:{name} prefix="..." parent="..."><origin .../></xacro:{name}> -->',
+             f'<robot xmlns:xacro="{XACRO_NS}"{declared}>',
+             *(f'{unit}<xacro:include filename="{esc(file)}"/>' for file in includes),
+             *defined, f'{unit}<xacro:macro name="{name}" params="prefix parent *origin">',
+             *mount, *([body] if body else []), *(inner + call for call in calls),
+             f'{unit}</xacro:macro>', '</robot>', '']
+    return '\n'.join(lines)
+
+
+def top_level_xacro(robot: Robot, includes: Sequence[str]) -> str:
+    """Return a robot file that includes ``includes`` (the macro's last) and calls it once."""
+    name = macro_name(robot)
+    return '\n'.join([
+        '<?xml version="1.0"?>',
+        f'<robot name="{_dollars(esc(robot.name))}" xmlns:xacro="{XACRO_NS}">',
+        '  <xacro:arg name="prefix" default=""/>',
+        *(f'  <xacro:include filename="{esc(file)}"/>' for file in includes),
+        f'  <xacro:{name} prefix="$(arg prefix)" parent="">',
+        '    <origin xyz="0 0 0" rpy="0 0 0"/>',
+        f'  </xacro:{name}>',
+        '</robot>', ''])
+
+
+def write_macro_xacro(robot: Robot, path: str | PathLike[str] | None = None) -> str:
+    """
+    Return the macro file's text (:func:`macro_xacro`).
+
+    With ``path``, write the file that instantiates the macro there (its ``prefix``
+    argument defaults to ''), and the macro beside it as ``<robot name>.macro.xacro``.
+    """
+    text = macro_xacro(robot)
+    if path is not None:
+        target = Path(path)
+        macro_file = target.with_name(f'{robot.name}.macro.xacro')
+        if macro_file.name == target.name:
+            raise ModelError(f"{path}: that is the macro file's own name; give the top-level "
+                             f'file another one, e.g. {robot.name}.urdf.xacro')
+        write_text(macro_file, text)
+        write_text(target, top_level_xacro(robot, [macro_file.name]))
+    return text
+
+
+def _dollars(text: str) -> str:
+    return text.replace('${', '$${').replace('$(', '$$(')
+
+
+def _comment(text: str) -> str:
+    return text.replace('--', '- -')

@@ -22,10 +22,12 @@ import hashlib
 from pathlib import Path
 import shutil
 
+from urdfgenpy_ros.assembly import prefixed
 from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
 from urdfgenpy_ros.formats._xml import fragment, INDENT
 from urdfgenpy_ros.formats.urdf import UrdfWriter
-from urdfgenpy_ros.formats.xacro import write_xacro, XACRO_NS
+from urdfgenpy_ros.formats.xacro import (macro_name, macro_xacro, PREFIX_MARK, top_level_xacro,
+                                         with_prefix, XACRO_NS)
 from urdfgenpy_ros.geometry import Mesh
 from urdfgenpy_ros.link import Shape
 from urdfgenpy_ros.material import Material
@@ -93,31 +95,54 @@ def _meshes(spec: PackageSpec, robot: Robot, search_paths: list[str],
     return {f'meshes/{name}': data for name, data in files.items()}
 
 
+def _macro_file(name: str, lines: list[str]) -> str:
+    """Return a file holding ``<xacro:macro name=... params="prefix">`` around ``lines``."""
+    body = with_prefix('\n'.join(lines))
+    return _fragment_file([f'{INDENT}<xacro:macro name="{name}" params="prefix">', body,
+                           f'{INDENT}</xacro:macro>'])
+
+
 def _urdf_files(spec: PackageSpec, robot: Robot) -> tuple[dict[str, bytes], list[str], str]:
-    """Return the Xacro files (main, materials, gazebo, ros2_control) and the includes."""
-    stem = robot.name
+    """
+    Return the Xacro files and the names of those the main one uses.
+
+    ``<robot>.urdf.xacro`` includes ``materials.xacro`` and ``<robot>.macro.xacro``, and
+    calls the robot's macro with the ``prefix`` argument (default ''); the macro file
+    includes ``<robot>.gazebo.xacro`` and ``<robot>.ros2_control.xacro``, macros of their
+    own taking the same prefix, when the robot has such blocks. Another package can
+    include the macro file and call the macro with a prefix and a parent link.
+    """
+    stem, macro = robot.name, macro_name(robot)
     writer = UrdfWriter(robot)
-    parts = {'materials.xacro': [writer.write_material(m, INDENT) for m in robot.materials],
-             f'{stem}.gazebo.xacro': [], f'{stem}.ros2_control.xacro': []}
-    kept = []
-    for block in robot.extensions:
-        target = {'gazebo': f'{stem}.gazebo.xacro',
-                  'ros2_control': f'{stem}.ros2_control.xacro'}.get(block.tag)
-        if target is None:
-            kept.append(block)
-        else:
-            parts[target].append(fragment(block.element, INDENT))
+    materials = [writer.write_material(m, INDENT) for m in robot.materials]
+    blocks: dict[str, list[str]] = {'gazebo': [], 'ros2_control': []}
+    for block in prefixed(robot, PREFIX_MARK).extensions:
+        if block.tag in blocks:
+            blocks[block.tag].append(fragment(block.element, INDENT * 2))
     for link in robot.links:  # the definitions move to materials.xacro: refer to them
         for visual in link.visuals:
             if visual.material is not None and robot.has_material(visual.material.name):
                 visual.material = Material(visual.material.name)
-    includes = [name for name, lines in parts.items() if lines]
-    text = write_xacro(robot, includes=[f'$(find {spec.name})/urdf/{name}' for name in includes],
-                       materials=False, extensions=kept)
-    files = {f'urdf/{stem}.urdf.xacro': text.encode()}
-    files.update({f'urdf/{name}': _escape(_fragment_file(parts[name])).encode()
-                  for name in includes})
-    return files, includes, f'{stem}.urdf.xacro'
+    find = f'$(find {spec.name})/urdf'
+    files: dict[str, bytes] = {}
+    used, calls, inside = [], [], []
+    if materials:
+        files['urdf/materials.xacro'] = _escape(_fragment_file(materials)).encode()
+        used.append('materials.xacro')
+    for tag, lines in blocks.items():
+        if lines:
+            name = f'{stem}.{tag}.xacro'
+            files[f'urdf/{name}'] = _macro_file(f'{macro}_{tag}', lines).encode()
+            inside.append(f'{find}/{name}')
+            calls.append(f'<xacro:{macro}_{tag} prefix="${{prefix}}"/>')
+            used.append(name)
+    files[f'urdf/{stem}.macro.xacro'] = macro_xacro(
+        robot, includes=inside, materials=False, skip=tuple(blocks), calls=calls).encode()
+    used.append(f'{stem}.macro.xacro')
+    top = [f'{find}/{name}' for name in ('materials.xacro', f'{stem}.macro.xacro')
+           if name in used]
+    files[f'urdf/{stem}.urdf.xacro'] = top_level_xacro(robot, top).encode()
+    return files, used, f'{stem}.urdf.xacro'
 
 
 def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in example',
@@ -138,6 +163,7 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
     sensors = sensors_of(robot)  # built, or read back from <gazebo> blocks
     context = {
         'name': spec.name, 'robot_name': robot.name, 'root_link': robot.root.name,
+        'macro_name': macro_name(robot),
         'build_type': spec.build_type, 'maintainer_name': spec.maintainer_name,
         'maintainer_email': spec.maintainer_email, 'license': spec.license,
         'description': spec.description, 'source': source, 'xacro_file': xacro_file,
