@@ -36,6 +36,7 @@ CODES: dict[str, tuple[Severity, str]] = {
                 'it)'),
     'X002': (E, 'Xacro file given to the URDF reader'),
     'X101': (W, 'Xacro in a .urdf file, expanded with xacro'),
+    'X102': (W, 'xacro warned while expanding the file'),
     # structure
     'S001': (E, 'no root link'),
     'S002': (E, 'more than one root link'),
