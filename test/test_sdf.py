@@ -18,12 +18,11 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-import shutil
 import subprocess
 
 from helpers import (
-    CORPUS, corpus_cases, corpus_file, full_robot, load_yourdfpy, pybullet_load, REPO,
-    require_module, require_tool)
+    build_sdf_checker, CORPUS, corpus_cases, corpus_file, full_robot, load_yourdfpy,
+    pybullet_load, require_module)
 import pytest
 from registry_robots import absolute_meshes, robot as registry_robot
 
@@ -33,20 +32,11 @@ from urdfgenpy_ros.plugins import diff_drive, gz_ros2_control, joint_state_publi
 from urdfgenpy_ros.plugins import ros2_control
 from urdfgenpy_ros.sensors import Camera, ForceTorque, Imu, Lidar
 
-CHECKER = REPO / 'test' / 'sdf_checker' / 'check_sdf.cc'
-
 
 @pytest.fixture(scope='session')
 def check_sdf(tmp_path_factory: pytest.TempPathFactory):
     """Compile the libsdformat checker once; return a function running it on a file."""
-    require_tool('pkg-config')
-    flags = subprocess.run(['pkg-config', '--cflags', '--libs', 'sdformat12'],
-                           capture_output=True, text=True)
-    if flags.returncode != 0:
-        require_tool('libsdformat-dev (sdformat12.pc)')
-    binary = tmp_path_factory.mktemp('checker') / 'check_sdf'
-    subprocess.run([shutil.which('g++') or 'g++', '-O1', '-o', str(binary), str(CHECKER),
-                    *flags.stdout.split()], check=True, timeout=300)
+    binary = build_sdf_checker(tmp_path_factory.mktemp('checker'))
 
     def run(path: Path) -> tuple[int, dict[str, list[float]], dict[str, list[float]],
                                  set[tuple[str, str, str]], str]:

@@ -15,23 +15,30 @@
 // Load an SDF (or URDF, which libsdformat converts) with the reference parser. Print every
 // error on stderr and exit 1 if there is one; else print, per link, its pose in the model
 // frame ("link NAME x y z qw qx qy qz"), its inertial ("inertial LINK mass cx cy cz" and the
-// principal moments) and its sensors ("sensor LINK NAME TYPE").
+// principal moments) and its sensors ("sensor LINK NAME TYPE"). With --sdf, print the SDF
+// the parser made instead (for a URDF, libsdformat's conversion, as Gazebo sees it).
 #include <iostream>
+#include <string>
 #include <sdf/sdf.hh>
 
 int main(int argc, char ** argv)
 {
-  if (argc != 2) {
-    std::cerr << "usage: check_sdf FILE" << std::endl;
+  const bool print_sdf = argc == 3 && std::string(argv[1]) == "--sdf";
+  if (argc != 2 && !print_sdf) {
+    std::cerr << "usage: check_sdf [--sdf] FILE" << std::endl;
     return 2;
   }
   sdf::Root root;
-  sdf::Errors errors = root.Load(argv[1]);
+  sdf::Errors errors = root.Load(argv[argc - 1]);
   for (const auto & error : errors) {
     std::cerr << error << std::endl;
   }
   if (!errors.empty()) {
     return 1;
+  }
+  if (print_sdf) {
+    std::cout << root.Element()->ToString("") << std::endl;
+    return 0;
   }
   const sdf::Model * model = root.Model();
   if (model == nullptr) {

@@ -16,58 +16,212 @@
 
 from __future__ import annotations
 
-import json
+from dataclasses import dataclass
+import difflib
+import os
 from pathlib import Path
+import tempfile
 
 import click
 
 from urdfgenpy_ros.cli._options import input_options, parse_mappings
+from urdfgenpy_ros.cli.check_reports import FileReport, json_report, junit_report
+from urdfgenpy_ros.cli.check_reports import sarif_report
+from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.formats import load
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
+from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.validation.fix import carry_over, fix, LIMIT_FIELDS
+from urdfgenpy_ros.validation.preflight import ENGINES, preflight
+from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions
+
+
+@dataclass(frozen=True)
+class _Options:
+    check_meshes: bool
+    package_paths: tuple[Path, ...]
+    engines: tuple[str, ...]
+    ignored: frozenset[str]
+    fix: bool
+    dry_run: bool
+    limit_defaults: dict[str, float]
+
+
+def _codes(ctx: click.Context, param: click.Parameter, values: tuple[str, ...]
+           ) -> frozenset[str]:
+    try:
+        return frozenset().union(*(parse_codes(value) for value in values))
+    except ValueError as error:
+        raise click.BadParameter(str(error)) from None
+
+
+def _engines(ctx: click.Context, param: click.Parameter, value: str | None
+             ) -> tuple[str, ...]:
+    names = tuple(part.strip() for part in (value or '').split(',') if part.strip())
+    unknown = [name for name in names if name not in ENGINES]
+    if unknown:
+        raise click.BadParameter(f'{", ".join(unknown)}: use {", ".join(ENGINES)} '
+                                 '(comma-separated)')
+    return names
+
+
+def _limit_defaults(ctx: click.Context, param: click.Parameter, values: tuple[str, ...]
+                    ) -> dict[str, float]:
+    defaults = {}
+    for item in values:
+        for part in item.split(','):
+            name, _, text = part.partition('=')
+            name = name.strip()
+            try:
+                if name not in LIMIT_FIELDS:
+                    raise ValueError
+                defaults[name] = float(text)
+            except ValueError:
+                raise click.BadParameter(f'{part!r}: give NAME=NUMBER, NAME one of '
+                                         f'{", ".join(LIMIT_FIELDS)}') from None
+    return defaults
 
 
 @click.command()
 @click.argument('inputs', nargs=-1, required=True, metavar='FILE... [NAME:=VALUE]...')
-@click.option('--format', 'output', type=click.Choice(['text', 'json']), default='text',
-              show_default=True, help='One line per finding, or a JSON document.')
+@click.option('--format', 'output', type=click.Choice(['text', 'json', 'sarif', 'junit']),
+              default='text', show_default=True,
+              help='One line per finding, JSON, SARIF 2.1.0 (code scanning) or JUnit XML.')
+@click.option('--output', '-o', 'report_file', type=click.Path(dir_okay=False, path_type=Path),
+              help='Write the report to this file instead of standard output.')
 @click.option('--strict', is_flag=True, help='Fail on warnings too.')
 @click.option('--no-meshes', is_flag=True, help='Do not check that mesh files exist.')
+@click.option('--ignore', 'ignored', multiple=True, callback=_codes, metavar='CODES',
+              help='Codes to silence, e.g. I205,C401 (repeatable).')
+@click.option('--engines', callback=_engines, metavar='mujoco,gazebo',
+              help='Also report what these engines change or drop when they load the file.')
+@click.option('--fix', 'repair', is_flag=True,
+              help='Repair what has one right answer, changing only the repaired lines.')
+@click.option('--dry-run', is_flag=True, help='With --fix: print the diff, write nothing.')
+@click.option('--limit-default', 'limit_defaults', multiple=True, callback=_limit_defaults,
+              metavar='NAME=VALUE',
+              help='With --fix: values for a missing <limit> (lower, upper, effort, velocity) '
+                   'or a zero effort/velocity, e.g. effort=10,velocity=1.')
 @input_options
-def check(inputs: tuple[str, ...], output: str, strict: bool, no_meshes: bool,
+def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict: bool,
+          no_meshes: bool, ignored: frozenset[str], engines: tuple[str, ...], repair: bool,
+          dry_run: bool, limit_defaults: dict[str, float],
           package_paths: tuple[Path, ...]) -> None:
     """
     Validate URDF and Xacro FILEs (Xacro arguments as name:=value).
 
     Exit status: 0 clean, 1 errors found (or warnings, with --strict), 2 a file could not
-    be read.
+    be read. `<!-- urdfgenpy: ignore CODE -->` before an element silences CODE for it,
+    `<!-- urdfgenpy: ignore-file CODE -->` at the top for the whole file.
     """
+    if dry_run and not repair:
+        raise click.UsageError('--dry-run previews --fix: give both')
     mappings = parse_mappings(tuple(item for item in inputs if ':=' in item))
     files = [Path(item) for item in inputs if ':=' not in item]
-    report, counts, unreadable = [], {'error': 0, 'warning': 0}, 0
+    options = _Options(not no_meshes, package_paths, engines, ignored, repair, dry_run,
+                       limit_defaults)
+    text = output == 'text'
+    done = 'to fix' if dry_run else 'fixed'
+    lines: list[str] = []
+    reports = []
     for path in files:
-        try:
-            robot = load(path, mappings, package_paths)
-        except KNOWN_ERRORS as error:
-            unreadable += 1
-            message = one_line(error)
-            report.append({'file': str(path), 'readable': False, 'error': message,
-                           'findings': []})
-            if output == 'text':
-                click.echo(message)
-            continue
-        findings = robot.validate(check_meshes=not no_meshes, search_paths=package_paths)
-        for finding in findings:
-            counts[str(finding.severity)] += 1
-            if output == 'text':
-                click.echo(str(finding))
-        report.append({'file': str(path), 'readable': True,
-                       'findings': [finding.as_dict() for finding in findings]})
-    if output == 'json':
-        click.echo(json.dumps({'files': report, 'errors': counts['error'],
-                               'warnings': counts['warning'], 'unreadable': unreadable},
-                              indent=2))
-    elif len(files) > 1 or counts['error'] or counts['warning'] or unreadable:
-        click.echo(f'{len(files)} file(s): {counts["error"]} error(s), '
-                   f'{counts["warning"]} warning(s), {unreadable} unreadable', err=True)
-    failed = counts['error'] or (strict and counts['warning'])
+        report = _check_file(path, mappings, options)
+        reports.append(report)
+        lines += [str(repair).replace(': fixed ', f': {done} ', 1) for repair in report.repairs]
+        lines += [*report.notes, *(str(finding) for finding in report.findings)]
+        lines += [report.error] if report.error is not None else []
+        if text and report_file is None:  # as it goes; the diff of --dry-run owns stdout
+            for line in lines:
+                click.echo(line, err=dry_run)
+            lines = []
+    if not text:
+        document = {'json': json_report, 'sarif': sarif_report}[output](reports) \
+            if output != 'junit' else junit_report(reports, strict)
+        lines = [document.rstrip('\n')]
+    if report_file is not None:
+        report_file.write_text(''.join(f'{line}\n' for line in lines), encoding='utf-8')
+    elif not text:
+        click.echo(lines[0], err=dry_run)
+    every = [finding for report in reports for finding in report.findings]
+    errors = sum(finding.severity is Severity.ERROR for finding in every)
+    warnings, unreadable = len(every) - errors, sum(r.error is not None for r in reports)
+    suppressed = sum(len(report.suppressed) for report in reports)
+    fixed = sum(len(report.repairs) for report in reports)
+    if text and (len(files) > 1 or every or unreadable or suppressed or fixed):
+        extra = (f', {suppressed} suppressed' if suppressed else '') + (
+            f', {fixed} {done}' if fixed else '')
+        click.echo(f'{len(files)} file(s): {errors} error(s), {warnings} warning(s), '
+                   f'{unreadable} unreadable{extra}', err=True)
+    failed = errors or (strict and warnings)
     raise SystemExit(2 if unreadable else 1 if failed else 0)
+
+
+def _findings(robot: Robot, options: _Options) -> list[ValidationError]:
+    found = robot.validate(check_meshes=options.check_meshes,
+                           search_paths=options.package_paths)
+    if options.engines:
+        found += preflight(robot, options.engines, options.package_paths)
+    return found
+
+
+def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> FileReport:
+    """Read, validate, pre-flight, silence and (with --fix) repair one file."""
+    report = FileReport(str(path))
+    try:
+        robot = load(path, mappings, options.package_paths)
+        suppressions = read_suppressions(robot, options.ignored)
+        report.findings, report.suppressed = suppressions.split(_findings(robot, options))
+        if not options.fix:
+            return report
+        before = robot.to_urdf()
+        repairs = fix(robot, report.findings, options.limit_defaults)
+        if not repairs:
+            return report
+        if _is_xacro(path, robot):
+            report.notes.append(
+                f'{path}: not fixed: it is Xacro, and writing the expanded robot back would '
+                f'lose its macros and properties: repair the {len(repairs)} finding(s) '
+                'by hand (the lines above say how)')
+            return report
+        old = path.read_bytes().decode('utf-8', 'surrogateescape')  # other bytes stay
+        new = carry_over(old, before, robot.to_urdf())
+        if new is None:
+            report.notes.append(f'{path}: not fixed: the repaired lines could not be placed '
+                                'in the file as it is written (please report this)')
+            return report
+        if new == old:
+            return report
+        report.repairs = repairs
+        if options.dry_run:
+            click.echo(''.join(difflib.unified_diff(
+                old.splitlines(keepends=True), new.splitlines(keepends=True),
+                f'a/{path.as_posix()}', f'b/{path.as_posix()}')), nl=False)
+            return report
+        _replace(path, new)
+        fixed = Robot.from_urdf_string(new, file=str(path))
+        report.findings, report.suppressed = read_suppressions(
+            fixed, options.ignored).split(_findings(fixed, options))
+    except KNOWN_ERRORS as error:
+        report.error = one_line(error)
+        report.findings, report.suppressed, report.repairs = [], [], []
+    return report
+
+
+def _is_xacro(path: Path, robot: Robot) -> bool:
+    return path.suffix.lower() == '.xacro' or any(
+        warning.code == 'X101' for warning in robot.read_warnings)
+
+
+def _replace(path: Path, text: str) -> None:
+    """Write ``text`` over ``path`` atomically, keeping its permissions (and symlinks)."""
+    path = path.resolve()
+    mode = path.stat().st_mode
+    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f'.{path.name}.')
+    try:
+        with os.fdopen(handle, 'wb') as stream:
+            stream.write(text.encode('utf-8', 'surrogateescape'))
+        os.chmod(temporary, mode & 0o7777)
+        os.replace(temporary, path)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise

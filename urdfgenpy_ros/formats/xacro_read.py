@@ -17,13 +17,15 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator, Mapping
-from contextlib import contextmanager
+from contextlib import contextmanager, redirect_stderr
+import io
 from os import PathLike
 from pathlib import Path
 import threading
 from typing import Any
 
-from urdfgenpy_ros.errors import MissingDependencyError, ParseError, SourceLocation
+from urdfgenpy_ros.errors import (
+    MissingDependencyError, ParseError, ReadWarning, SourceLocation)
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
 from urdfgenpy_ros.resources import PackageResolver
 from urdfgenpy_ros.robot import Robot
@@ -90,17 +92,23 @@ def _finding_with(resolver: PackageResolver) -> Iterator[None]:
 
 
 def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
-                 resolver: PackageResolver | None = None) -> tuple[str, list[str]]:
+                 resolver: PackageResolver | None = None,
+                 warnings: list[ReadWarning] | None = None) -> tuple[str, list[str]]:
     """
     Return the URDF text ``xacro`` makes of ``path`` and every file it included.
+
+    What xacro would print on stderr is not printed: its warnings are appended to
+    ``warnings`` (code X102) and, when expansion fails, end the error's one line.
 
     :raises ParseError: with xacro's message, when expansion fails (code X001).
     """
     xacro = _xacro()
     resolver = resolver or PackageResolver()
     where = SourceLocation(str(path))
+    printed = io.StringIO()
     try:
-        with _LOCK, _fresh_state(xacro) as includes, _finding_with(resolver):
+        with _LOCK, redirect_stderr(printed), _fresh_state(xacro) as includes, \
+                _finding_with(resolver):
             document = xacro.process_file(str(path), mappings=dict(mappings or {}))
             names = list(dict.fromkeys(includes))
     except Exception as error:  # noqa: B902 - xacro raises many types; all are one line
@@ -110,16 +118,34 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
         if ('ament_index_python' in message or 'PackageNotFound' in type(error).__name__) \
                 and 'search_paths' not in message:
             message += ' (pass the package folders in search_paths)'
+        said = _xacro_warnings(printed.getvalue())
+        if said:
+            message += f' (xacro warned: {"; ".join(said)})'
         raise ParseError(f'xacro: {message}', where, 'X001') from None
+    if warnings is not None:
+        warnings += [ReadWarning(where, 'X102', f'xacro: {line}')
+                     for line in _xacro_warnings(printed.getvalue())]
     included = [str(Path(name).resolve()) for name in names]
     return document.toprettyxml(indent='  '), included
+
+
+def _xacro_warnings(printed: str) -> list[str]:
+    """Return xacro's warnings from what it printed, without its file-stack lines."""
+    stack = ('when processing file:', 'in file:', 'included from:',
+             'when instantiating macro:', 'instantiated from:')
+    lines = (' '.join(line.split()) for line in printed.splitlines())
+    return [line.removeprefix('warning: ') for line in lines
+            if line and not line.startswith(stack)]
 
 
 def read_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
                search_paths: Iterable[str | PathLike[str]] = (),
                packages: Mapping[str, str | PathLike[str]] | None = None) -> Robot:
     """Expand the Xacro file ``path`` with ``mappings`` (``name: value``) and read it."""
-    text, included = expand_xacro(path, mappings, PackageResolver(search_paths, packages))
+    said: list[ReadWarning] = []
+    text, included = expand_xacro(path, mappings, PackageResolver(search_paths, packages),
+                                  said)
     robot = read_urdf_bytes(text.encode('utf-8'), f'{path} (expanded)')
+    robot.read_warnings[:0] = said
     robot.included_files = [str(Path(path).resolve()), *included]
     return robot

@@ -36,6 +36,7 @@ CODES: dict[str, tuple[Severity, str]] = {
                 'it)'),
     'X002': (E, 'Xacro file given to the URDF reader'),
     'X101': (W, 'Xacro in a .urdf file, expanded with xacro'),
+    'X102': (W, 'xacro warned while expanding the file'),
     # structure
     'S001': (E, 'no root link'),
     'S002': (E, 'more than one root link'),
@@ -78,6 +79,30 @@ CODES: dict[str, tuple[Severity, str]] = {
     'R308': (W, 'relative path written as a file:// URI (not portable)'),
     # conventions
     'C401': (W, "no link called 'base_link'"),
+    # engine pre-flight (validation/preflight.py): what a consumer silently changes
+    'M501': (W, 'MuJoCo fuses the link into its parent body (fixed joint, or a fixed base)'),
+    'M502': (W, 'MuJoCo uses another mass or inertia than the URDF gives'),
+    'M503': (W, 'MuJoCo changes the joint range'),
+    'M504': (W, 'MuJoCo collides with the convex hull of a non-convex mesh'),
+    'M505': (W, 'MuJoCo refuses the model'),
+    'M506': (W, 'MuJoCo cannot read the mesh'),
+    'G601': (W, "SDFormat's URDF conversion lumps the link into its parent (fixed joint)"),
+    'G602': (W, "SDFormat's URDF conversion drops the link (and everything below it)"),
+}
+
+# Engine pre-flight codes: what to do about each (the SARIF rules' help).
+PREFLIGHT_HINTS: dict[str, str] = {
+    'M501': 'expected for fixed joints; to keep the bodies, add <mujoco><compiler '
+            'fusestatic="false"/></mujoco> to the URDF (a mobile base needs a free joint '
+            'in MJCF)',
+    'M502': 'give the link an <inertial> with a mass and a tensor MuJoCo accepts as they are',
+    'M503': 'give lower < upper in <limit>: MuJoCo reads equal bounds as no range at all',
+    'M504': 'split the collision mesh into convex parts, or use primitive shapes',
+    'M505': 'fix the errors check reports; MuJoCo says why in the message',
+    'M506': 'MuJoCo reads STL, OBJ and MSH meshes: convert it, or give --package-path',
+    'G601': '<gazebo reference="JOINT"><preserveFixedJoint>true</preserveFixedJoint></gazebo> '
+            'keeps the link (and its frame) in Gazebo',
+    'G602': 'give the link a mass and inertia (Inertial.from_geometry): Gazebo drops it',
 }
 
 

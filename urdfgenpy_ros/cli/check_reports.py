@@ -1,0 +1,220 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""The reports of ``urdfgenpy check``: JSON, SARIF 2.1.0 (code scanning) and JUnit XML."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from importlib import metadata
+import json
+import os
+from pathlib import Path
+from urllib.parse import quote
+from xml.etree import ElementTree
+
+from urdfgenpy_ros.errors import Severity, ValidationError
+from urdfgenpy_ros.validation.codes import CODES, PREFLIGHT_HINTS
+from urdfgenpy_ros.validation.fix import Repair
+
+SARIF_SCHEMA = 'https://json.schemastore.org/sarif-2.1.0.json'
+_LEVEL = {Severity.ERROR: 'error', Severity.WARNING: 'warning'}
+
+
+@dataclass
+class FileReport:
+    """What ``check`` found in one file: findings, silenced ones, repairs, or why unreadable."""
+
+    path: str
+    error: str | None = None
+    findings: list[ValidationError] = field(default_factory=list)
+    suppressed: list[tuple[ValidationError, str]] = field(default_factory=list)
+    repairs: list[Repair] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+
+
+def json_report(reports: list[FileReport]) -> str:
+    """Return the JSON document: per file its findings, suppressed findings and repairs."""
+    files = []
+    for report in reports:
+        entry: dict[str, object] = {'file': report.path, 'readable': report.error is None}
+        if report.error is not None:
+            entry['error'] = report.error
+        entry['findings'] = [finding.as_dict() for finding in report.findings]
+        entry['suppressed'] = [{**finding.as_dict(), 'suppression': kind}
+                               for finding, kind in report.suppressed]
+        entry['fixed'] = [repair.as_dict() for repair in report.repairs]
+        entry['notes'] = report.notes
+        files.append(entry)
+    every = [finding for report in reports for finding in report.findings]
+    return json.dumps({
+        'files': files,
+        'errors': sum(f.severity is Severity.ERROR for f in every),
+        'warnings': sum(f.severity is Severity.WARNING for f in every),
+        'unreadable': sum(report.error is not None for report in reports),
+        'suppressed': sum(len(report.suppressed) for report in reports),
+        'fixed': sum(len(report.repairs) for report in reports)}, indent=2)
+
+
+def _uri(path: str) -> tuple[str, bool]:
+    """Return a file's URI, relative to the working directory when it lies below it."""
+    absolute = Path(path).resolve()
+    try:
+        relative = absolute.relative_to(Path(os.getcwd()).resolve())
+    except ValueError:
+        return absolute.as_uri(), False
+    return quote(relative.as_posix()), True
+
+
+EXPANDED = ' (expanded)'  # how a location in an expanded Xacro names its file
+
+
+def _location(finding: ValidationError, fallback: str) -> dict[str, object]:
+    where = finding.location
+    file = where.file or fallback
+    expanded = file.endswith(EXPANDED)  # its lines are the expansion's, not the file's
+    uri, relative = _uri(file[:-len(EXPANDED)] if expanded else file)
+    artifact: dict[str, object] = {'uri': uri}
+    if relative:
+        artifact['uriBaseId'] = '%SRCROOT%'
+    region = {'startLine': 1 if expanded else where.line or 1}
+    if where.line is not None and where.column is not None and not expanded:
+        region['startColumn'] = where.column
+    location: dict[str, object] = {
+        'physicalLocation': {'artifactLocation': artifact, 'region': region}}
+    if where.path:
+        location['logicalLocations'] = [{'fullyQualifiedName': where.path,
+                                         'kind': 'element'}]
+    return location
+
+
+def _message(finding: ValidationError) -> str:
+    where = finding.location
+    line = (f' (line {where.line} of the expanded Xacro)'
+            if (where.file or '').endswith(EXPANDED) and where.line else '')
+    return f'{finding.element}: {finding.message} ({finding.hint}){line}'
+
+
+def _version() -> str:
+    try:
+        return metadata.version('urdfgenpy_ros')
+    except metadata.PackageNotFoundError:
+        return '0'
+
+
+def sarif_report(reports: list[FileReport]) -> str:
+    """
+    Return a SARIF 2.1.0 log, as GitHub code scanning reads it.
+
+    Rule ids are the finding codes (help: the hint), results carry file, line and column
+    (the element path as logical location); suppressed findings are results with a
+    suppression (``inSource`` for a comment, ``external`` for ``--ignore``), and a file
+    that could not be read is a tool notification.
+    """
+    everything = [finding for report in reports for finding in report.findings]
+    everything += [finding for report in reports for finding, _ in report.suppressed]
+    codes = sorted({finding.code for finding in everything})
+    hints: dict[str, str] = {}
+    for finding in everything:
+        hints.setdefault(finding.code, PREFLIGHT_HINTS.get(finding.code, finding.hint))
+    rules = [{'id': code, 'name': code,
+              'shortDescription': {'text': CODES[code][1] if code in CODES else code},
+              'help': {'text': hints[code]},
+              'defaultConfiguration': {'level': _LEVEL[CODES[code][0]]
+                                       if code in CODES else 'warning'}}
+             for code in codes]
+    index = {code: number for number, code in enumerate(codes)}
+    results = []
+    for report in reports:
+        pairs = [(f, None) for f in report.findings] + list(report.suppressed)
+        for finding, kind in pairs:
+            result: dict[str, object] = {
+                'ruleId': finding.code, 'ruleIndex': index[finding.code],
+                'level': _LEVEL[finding.severity],
+                'message': {'text': _message(finding)},
+                'locations': [_location(finding, report.path)]}
+            if kind is not None:
+                result['suppressions'] = [{'kind': kind}]
+            results.append(result)
+    notifications = []
+    for report in reports:
+        if report.error is not None:
+            uri, relative = _uri(report.path)
+            artifact: dict[str, object] = {'uri': uri}
+            if relative:
+                artifact['uriBaseId'] = '%SRCROOT%'
+            notifications.append({'level': 'error', 'message': {'text': report.error},
+                                  'locations': [{'physicalLocation': {
+                                      'artifactLocation': artifact}}]})
+    invocation = {'executionSuccessful': not notifications,
+                  'toolExecutionNotifications': notifications}
+    root = Path(os.getcwd()).resolve().as_uri() + '/'
+    log = {'$schema': SARIF_SCHEMA, 'version': '2.1.0', 'runs': [{
+        'tool': {'driver': {'name': 'urdfgenpy', 'version': _version(),
+                            'semanticVersion': _version(), 'rules': rules}},
+        'originalUriBaseIds': {'%SRCROOT%': {'uri': root}},
+        'invocations': [invocation],
+        'results': results}]}
+    return json.dumps(log, indent=2)
+
+
+def junit_report(reports: list[FileReport], strict: bool) -> str:
+    """
+    Return JUnit XML: a test suite per file, a test case per finding.
+
+    An error is a failure (a warning too with ``strict``; otherwise a passing case whose
+    output is the warning), a suppressed finding is skipped, an unreadable file is an
+    error, and a clean file is one passing case.
+    """
+    suites = ElementTree.Element('testsuites', name='urdfgenpy check')
+    totals = {'tests': 0, 'failures': 0, 'errors': 0, 'skipped': 0}
+    for report in reports:
+        counts = {'tests': 0, 'failures': 0, 'errors': 0, 'skipped': 0}
+        suite = ElementTree.SubElement(suites, 'testsuite', name=report.path)
+        cases: list[tuple[str, str | None, str, str]] = []  # name, kind, type, text
+        if report.error is not None:
+            cases.append(('read', 'error', 'unreadable', report.error))
+        for finding in report.findings:
+            failed = finding.severity is Severity.ERROR or strict
+            cases.append((_case_name(finding), 'failure' if failed else None,
+                          str(finding.severity), str(finding)))
+        for finding, kind in report.suppressed:
+            cases.append((_case_name(finding), 'skipped', kind, str(finding)))
+        if not cases:
+            cases.append(('no findings', None, '', ''))
+        for name, outcome, outcome_type, text in cases:
+            case = ElementTree.SubElement(suite, 'testcase', name=name, classname=report.path)
+            counts['tests'] += 1
+            if outcome is None:
+                if text:
+                    ElementTree.SubElement(case, 'system-out').text = text
+                continue
+            detail = ElementTree.SubElement(case, outcome, message=text.split(': ', 1)[-1])
+            if outcome != 'skipped':
+                detail.set('type', outcome_type)
+                detail.text = text
+            counts[{'failure': 'failures', 'error': 'errors', 'skipped': 'skipped'}[outcome]] += 1
+        for key, value in counts.items():
+            suite.set(key, str(value))
+            totals[key] += value
+    for key, value in totals.items():
+        suites.set(key, str(value))
+    ElementTree.indent(suites)
+    return '<?xml version="1.0" encoding="utf-8"?>\n' + ElementTree.tostring(
+        suites, encoding='unicode') + '\n'
+
+
+def _case_name(finding: ValidationError) -> str:
+    where = f' (line {finding.location.line})' if finding.location.line else ''
+    return f'{finding.code} {finding.element}{where}'

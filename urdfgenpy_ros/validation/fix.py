@@ -1,0 +1,233 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Repair what has one right answer (``urdfgenpy check --fix``), in the model.
+
+The robot is edited in place; written back by the lossless writer, only the repaired
+elements' lines change. Fixed: a non-unit axis (J102, normalised), lower > upper (J104,
+swapped), a non-physical tensor on a moving link (I202, I203: replaced by the tensor of
+the link's first collision, else visual, box, cylinder or sphere with the link's mass), an
+inertia on the root (I205: a massless root link above it), and, only with the defaults the
+user gives, a missing ``<limit>`` (J103) or a zero effort or velocity (J106). Everything
+else (a zero axis, a missing mimic target, ...) has no single right answer and stays.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from difflib import SequenceMatcher
+import math
+import re
+
+from urdfgenpy_ros.errors import SourceLocation, ValidationError
+from urdfgenpy_ros.floats import fmt, fmt_vec
+from urdfgenpy_ros.geometry import Box, Cylinder, Sphere
+from urdfgenpy_ros.inertial import Inertial
+from urdfgenpy_ros.joint import Joint, JointLimit, JointType
+from urdfgenpy_ros.link import Link
+from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.transforms import from_xyz_rpy
+
+FIXABLE = frozenset(('J102', 'J103', 'J104', 'J106', 'I202', 'I203', 'I205'))
+"""The codes ``fix`` can repair (J103 and J106 only with defaults)."""
+
+LIMIT_FIELDS = ('lower', 'upper', 'effort', 'velocity')
+_OWNER = re.compile(r"^/robot/(link|joint)\[@name='(.*?)'\]")
+
+
+@dataclass(frozen=True)
+class Repair:
+    """One repair: the finding's code, element and location, and what was done."""
+
+    code: str
+    element: str
+    location: SourceLocation
+    message: str
+
+    def __str__(self) -> str:
+        """Return ``file:line:col: fixed CODE element: what was done``."""
+        return f'{self.location}: fixed {self.code} {self.element}: {self.message}'
+
+    def as_dict(self) -> dict[str, object]:
+        """Return the repair as plain data (for JSON output)."""
+        return {'code': self.code, 'element': self.element, 'file': self.location.file,
+                'line': self.location.line, 'column': self.location.column,
+                'message': self.message}
+
+
+def fix(robot: Robot, findings: list[ValidationError],
+        limit_defaults: dict[str, float] | None = None) -> list[Repair]:
+    """
+    Repair the fixable ``findings`` of ``robot`` in place; return what was done.
+
+    ``limit_defaults`` (``lower upper effort velocity``) allow J103 (all four needed) and
+    J106 (the zero one needed). Findings suppressed by the caller are not passed in, so
+    they are not touched.
+    """
+    defaults = dict(limit_defaults or {})
+    repairs: list[Repair] = []
+    done: set[tuple[str, str]] = set()
+    for finding in findings:
+        if finding.code not in FIXABLE:
+            continue
+        owner = _owner(robot, finding)
+        if owner is None or (finding.code, finding.element) in done:
+            continue
+        message = _REPAIRS[finding.code](robot, owner, defaults)
+        if message is not None:
+            done.add((finding.code, finding.element))
+            repairs.append(Repair(finding.code, finding.element, finding.location, message))
+    return repairs
+
+
+def _owner(robot: Robot, finding: ValidationError) -> Link | Joint | None:
+    match = _OWNER.match(finding.location.path or '')
+    if match is None:
+        return None
+    kind, name = match.groups()
+    if kind == 'link':
+        return robot.get_link(name) if robot.has_link(name) else None
+    return robot.get_joint(name) if robot.has_joint(name) else None
+
+
+def _axis(robot: Robot, joint: Link | Joint, defaults: dict[str, float]) -> str | None:
+    assert isinstance(joint, Joint)
+    axis = joint.axis
+    norm = math.sqrt(sum(value * value for value in axis)) if axis else 0.0
+    if axis is None or not (norm > 0.0 and math.isfinite(norm)):
+        return None
+    joint.axis = (axis[0] / norm, axis[1] / norm, axis[2] / norm)
+    return f'axis {fmt_vec(axis)} normalised to {fmt_vec(joint.axis)}'
+
+
+def _swap(robot: Robot, joint: Link | Joint, defaults: dict[str, float]) -> str | None:
+    assert isinstance(joint, Joint)
+    limit = joint.limit
+    if limit is None or not limit.lower > limit.upper:
+        return None
+    limit.lower, limit.upper = limit.upper, limit.lower
+    return f'<limit> lower and upper swapped: [{fmt(limit.lower)}, {fmt(limit.upper)}]'
+
+
+def _add_limit(robot: Robot, joint: Link | Joint, defaults: dict[str, float]) -> str | None:
+    assert isinstance(joint, Joint)
+    if joint.limit is not None or not all(name in defaults for name in LIMIT_FIELDS):
+        return None
+    joint.limit = JointLimit(defaults['lower'], defaults['upper'],
+                             effort=defaults['effort'], velocity=defaults['velocity'])
+    return 'added <limit ' + ' '.join(f'{name}="{fmt(defaults[name])}"'
+                                      for name in LIMIT_FIELDS) + '/> from the defaults given'
+
+
+def _zero_limit(robot: Robot, joint: Link | Joint, defaults: dict[str, float]) -> str | None:
+    assert isinstance(joint, Joint)
+    limit = joint.limit
+    if limit is None or not joint.type.is_movable:
+        return None
+    changed = []
+    for name in ('effort', 'velocity'):
+        if getattr(limit, name) == 0.0 and defaults.get(name, 0.0) > 0.0:
+            setattr(limit, name, defaults[name])
+            changed.append(f'{name} {fmt(defaults[name])}')
+    return f'<limit> {" and ".join(changed)} from the defaults given' if changed else None
+
+
+def _tensor(robot: Robot, link: Link | Joint, defaults: dict[str, float]) -> str | None:
+    assert isinstance(link, Link)
+    inertial = link.inertial
+    if inertial is None or not inertial.mass > 0.0:
+        return None
+    for kind, items in (('collision', link.collisions), ('visual', link.visuals)):
+        for item in items:
+            shape = item.geometry
+            if isinstance(shape, (Box, Cylinder, Sphere)):
+                solid = Inertial.from_geometry(inertial.mass, shape)
+                values = _turned(solid, item.origin.rpy, inertial.origin.rpy)
+                inertial.ixx, inertial.ixy, inertial.ixz = values[0], values[1], values[2]
+                inertial.iyy, inertial.iyz, inertial.izz = values[3], values[4], values[5]
+                offset = math.dist(item.origin.xyz, inertial.origin.xyz)
+                note = (f"; its centre of mass is {offset:.3g} m from the shape's centre"
+                        if offset > 1e-9 else '')
+                return (f'inertia replaced by that of its {kind} {type(shape).__name__.lower()}'
+                        f' with mass {fmt(inertial.mass)} (a solid of uniform density: '
+                        f'check it){note}')
+    return None
+
+
+def _turned(solid: Inertial, shape_rpy: tuple[float, float, float],
+            frame_rpy: tuple[float, float, float]) -> tuple[float, ...]:
+    """Return the solid's tensor, turned from the shape's frame into the inertial's."""
+    values = (solid.ixx, solid.ixy, solid.ixz, solid.iyy, solid.iyz, solid.izz)
+    if shape_rpy == frame_rpy:
+        return values
+    zero = (0.0, 0.0, 0.0)
+    shape = from_xyz_rpy(zero, shape_rpy)
+    frame = from_xyz_rpy(zero, frame_rpy)
+    turn = [[sum(frame[k][i] * shape[k][j] for k in range(3)) for j in range(3)]
+            for i in range(3)]  # frame^T shape
+    tensor = solid.tensor
+    out = [[sum(turn[i][k] * tensor[k][m] * turn[j][m] for k in range(3) for m in range(3))
+            for j in range(3)] for i in range(3)]
+    return out[0][0], out[0][1], out[0][2], out[1][1], out[1][2], out[2][2]
+
+
+def _new_root(robot: Robot, link: Link | Joint, defaults: dict[str, float]) -> str | None:
+    assert isinstance(link, Link)
+    if len(robot.roots) != 1 or robot.roots[0] is not link:
+        return None
+    name = 'base_footprint' if not robot.has_link('base_footprint') else f'{link.name}_root'
+    joint = f'{name}_joint'
+    if robot.has_link(name) or robot.has_joint(joint):
+        return None
+    robot.add_link(Link(name))
+    robot.add_joint(Joint(joint, JointType.FIXED, name, link.name))
+    return (f'added a massless root link {name!r} and fixed joint {joint!r} above it '
+            '(KDL ignores the inertia of a root link)')
+
+
+_REPAIRS = {'J102': _axis, 'J104': _swap, 'J103': _add_limit, 'J106': _zero_limit,
+            'I202': _tensor, 'I203': _tensor, 'I205': _new_root}
+
+
+def carry_over(original: str, before: str, after: str) -> str | None:
+    """
+    Return ``original`` with the lines that changed from ``before`` to ``after``.
+
+    ``before`` and ``after`` are the writer's text of the robot before and after the
+    repairs. Where the writer does not give a file back byte for byte (a blank line at the
+    end, a ``<urdf>`` wrapper, ...), only the repaired lines reach the file. None when a
+    changed line has no counterpart in ``original``.
+    """
+    source = original.splitlines(keepends=True)
+    old, new = before.splitlines(keepends=True), after.splitlines(keepends=True)
+    place: dict[int, int] = {}  # a line of ``before`` -> the same line of ``original``
+    for tag, a0, _, b0, b1 in SequenceMatcher(None, source, old, autojunk=False).get_opcodes():
+        if tag == 'equal':
+            place.update((b0 + k, a0 + k) for k in range(b1 - b0))
+    edits = [op for op in SequenceMatcher(None, old, new, autojunk=False).get_opcodes()
+             if op[0] != 'equal']
+    for _, i0, i1, j0, j1 in reversed(edits):
+        if i0 < i1:
+            if any(i not in place or place[i] != place[i0] + i - i0 for i in range(i0, i1)):
+                return None  # not the same run of lines in the file
+            start, end = place[i0], place[i1 - 1] + 1
+        elif i0 in place:
+            start = end = place[i0]
+        elif i0 - 1 in place:
+            start = end = place[i0 - 1] + 1
+        else:
+            return None
+        source[start:end] = new[j0:j1]
+    return ''.join(source)

@@ -1,0 +1,231 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+MuJoCo pre-flight: compile the URDF with MuJoCo and report what it changed.
+
+MuJoCo reads URDF with ``fusestatic`` and ``discardvisual`` on: links on fixed joints are
+fused into their parent body and the root into the world (M501); a link without
+``<inertial>`` gets the mass of its collision geometry (M502); ``lower == upper`` means no
+range (M503); a mesh collides as its convex hull (M504, decided with trimesh when it is
+installed). The model MuJoCo compiles has its mesh URIs resolved to absolute paths and its
+visuals left out (MuJoCo discards them); a collision mesh it cannot read is left out too and
+reported (M506). Without the ``mujoco`` package, M501 and M503 follow its rules.
+"""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+import math
+from pathlib import Path
+from typing import Any
+
+from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.geometry import Mesh
+from urdfgenpy_ros.inertial import Inertial
+from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.lumping import combine
+from urdfgenpy_ros.resources import PackageResolver
+from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.transforms import from_xyz_rpy, IDENTITY4, Matrix4, multiply
+from urdfgenpy_ros.transforms import symmetric_eigenvalues
+from urdfgenpy_ros.validation.codes import PREFLIGHT_HINTS
+from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
+
+MESH_FORMATS = ('.stl', '.obj', '.msh')
+_RELATIVE = 1e-6  # MuJoCo computes in doubles; principal moments differ by rounding only
+
+
+def mujoco_findings(robot: Robot, findings: Findings, search_paths: list[Any],
+                    base: Path | None) -> None:
+    """Add what MuJoCo's compile of ``robot`` changes (M501-M506) to ``findings``."""
+    try:
+        import mujoco
+    except ImportError:
+        _by_rules(robot, findings)
+        return
+    compiled, meshes = _compilable(robot, findings, search_paths, base)
+    try:
+        model = mujoco.MjModel.from_xml_string(compiled.to_urdf())
+    except (ValueError, UrdfgenpyError) as error:
+        findings.add('M505', robot, f'robot {robot.name!r}', '/robot',
+                     ' '.join(str(error).split()), PREFLIGHT_HINTS['M505'], 'robot')
+        return
+    bodies = {model.body(index).name: index for index in range(model.nbody)}
+    into = _fused(robot, set(bodies), findings)
+    _masses(robot, model, bodies, into, findings)
+    _ranges(robot, model, mujoco, findings)
+    _hulls(meshes, findings)
+
+
+def _compilable(robot: Robot, findings: Findings, search_paths: list[Any],
+                base: Path | None) -> tuple[Robot, list[tuple[str, str, Path]]]:
+    """Return a copy MuJoCo can load: absolute mesh paths, no visuals, no unreadable mesh."""
+    compiled = copy.deepcopy(robot)
+    resolver = PackageResolver(search_paths)
+    meshes: list[tuple[str, str, Path]] = []
+    for link in compiled.links:
+        link.visuals.clear()
+        kept = []
+        for number, collision in enumerate(link.collisions, start=1):
+            geometry = collision.geometry
+            where = f'{link_path(link.name)}/collision[{number}]/geometry/mesh'
+            if isinstance(geometry, Mesh):
+                try:
+                    path = resolver.resolve(geometry.filename, base)
+                except UrdfgenpyError as error:
+                    findings.add('M506', robot.get_link(link.name), f'link {link.name!r}',
+                                 where, f'collision mesh not found ({error}): MuJoCo refuses '
+                                 'the model; the pre-flight went on without it',
+                                 PREFLIGHT_HINTS['M506'], 'mesh')
+                    continue
+                if path.suffix.lower() not in MESH_FORMATS:
+                    findings.add('M506', robot.get_link(link.name), f'link {link.name!r}',
+                                 where, f'MuJoCo cannot read {path.suffix} meshes '
+                                 f'({geometry.filename!r}): it refuses the model; the '
+                                 'pre-flight went on without it', PREFLIGHT_HINTS['M506'],
+                                 'mesh')
+                    continue
+                collision.geometry = dataclasses.replace(geometry, filename=str(path))
+                meshes.append((link.name, where, path))
+            kept.append(collision)
+        link.collisions[:] = kept
+    return compiled, meshes
+
+
+def _fused(robot: Robot, bodies: set[str], findings: Findings,
+           note: str = '') -> dict[str, str]:
+    """Report links that are not bodies (M501); return link -> the body it is fused into."""
+    into: dict[str, str] = {}
+    for joint, link in robot.walk():
+        if link.name in bodies:
+            into[link.name] = link.name
+            continue
+        if joint is None:
+            into[link.name] = 'world'
+            message = ('the root link is fused into the world body: MuJoCo fixes the robot '
+                       'to the world')
+        else:
+            into[link.name] = into.get(joint.parent, 'world')
+            message = (f'fused into body {into[link.name]!r} (fixed joint {joint.name!r}): '
+                       f'there is no body {link.name!r}')
+        findings.add('M501', link, f'link {link.name!r}', link_path(link.name),
+                     message + note, PREFLIGHT_HINTS['M501'], 'link')
+    return into
+
+
+def _masses(robot: Robot, model: Any, bodies: dict[str, int], into: dict[str, str],
+            findings: Findings) -> None:
+    """Compare each body's mass and principal moments with the URDF's (M502)."""
+    frames: dict[str, Matrix4] = {}
+    for joint, link in robot.walk():
+        if joint is None or into[link.name] == link.name:
+            frames[link.name] = IDENTITY4
+        else:
+            frames[link.name] = multiply(frames[joint.parent],
+                                         from_xyz_rpy(joint.origin.xyz, joint.origin.rpy))
+    for name, index in bodies.items():
+        if index == 0 or not robot.has_link(name):
+            continue
+        group = [robot.get_link(link) for link, body in into.items() if body == name]
+        parts = [(link.inertial, frames[link.name]) for link in group
+                 if link.inertial is not None]
+        expected = combine(parts) if parts else None
+        mass = float(model.body_mass[index])
+        moments = sorted(float(value) for value in model.body_inertia[index])
+        link = robot.get_link(name)
+        if expected is None:
+            if mass > 0.0:
+                findings.add('M502', link, f'link {name!r}', link_path(name),
+                             f'has no mass in the URDF; MuJoCo computes {mass:.6g} kg from '
+                             'its collision geometry (density 1000 kg/m^3)',
+                             PREFLIGHT_HINTS['M502'], 'link')
+            continue
+        if _differ(mass, expected.mass) or _moments_differ(moments, expected):
+            listed = ', '.join(f'{value:.6g}' for value in moments)
+            findings.add('M502', link, f'link {name!r}', link_path(name),
+                         f'MuJoCo uses mass {mass:.6g} and principal moments {listed} '
+                         f'(the URDF gives {expected.mass:.6g} kg)',
+                         PREFLIGHT_HINTS['M502'], 'link')
+
+
+def _differ(value: float, expected: float) -> bool:
+    return abs(value - expected) > _RELATIVE * max(abs(expected), 1e-12)
+
+
+def _moments_differ(moments: list[float], expected: Inertial) -> bool:
+    wanted = sorted(symmetric_eigenvalues(expected.tensor))
+    scale = max(abs(value) for value in wanted) or 1e-12
+    return any(abs(a - b) > _RELATIVE * scale for a, b in zip(moments, wanted))
+
+
+def _ranges(robot: Robot, model: Any, mujoco: Any, findings: Findings) -> None:
+    """Report joints whose range MuJoCo does not take as the URDF gives it (M503)."""
+    for joint in robot.joints:
+        if joint.type not in (JointType.REVOLUTE, JointType.PRISMATIC) or joint.limit is None:
+            continue
+        index = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, joint.name)
+        if index < 0:
+            continue
+        limit = joint.limit
+        low, high = (float(value) for value in model.jnt_range[index])
+        if not model.jnt_limited[index]:
+            message = (f'range [{limit.lower:g}, {limit.upper:g}] is empty: MuJoCo gives the '
+                       'joint no range, it turns freely')
+        elif (low, high) != (limit.lower, limit.upper):
+            message = f'MuJoCo uses the range [{low:g}, {high:g}]'
+        else:
+            continue
+        findings.add('M503', joint, f'joint {joint.name!r}', joint_path(joint.name) + '/limit',
+                     message, PREFLIGHT_HINTS['M503'], 'limit')
+
+
+def _hulls(meshes: list[tuple[str, str, Path]], findings: Findings) -> None:
+    """Report collision meshes that are not convex (M504); needs trimesh."""
+    try:
+        import trimesh
+    except ImportError:
+        return
+    robot = findings.robot
+    for name, where, path in meshes:
+        try:
+            mesh: Any = trimesh.load(str(path), force='mesh')
+        except Exception:  # noqa: B902 - a mesh trimesh cannot read was read by MuJoCo
+            continue
+        if mesh.is_convex:
+            continue
+        hull = mesh.convex_hull.volume
+        size = (f': its hull holds {hull:.4g} m^3, the mesh {abs(mesh.volume):.4g} m^3 '
+                '(in file units)' if mesh.is_watertight and math.isfinite(hull) else '')
+        findings.add('M504', robot.get_link(name), f'link {name!r}', where,
+                     f'{path.name} is not convex; MuJoCo collides with its convex hull{size}',
+                     PREFLIGHT_HINTS['M504'], 'mesh')
+
+
+def _by_rules(robot: Robot, findings: Findings) -> None:
+    """Without MuJoCo: fused bodies and empty ranges, by its rules."""
+    fused = {link.name for joint, link in robot.walk()
+             if joint is None or joint.type is JointType.FIXED}
+    bodies = {link.name for link in robot.links} - fused | {'world'}  # MuJoCo's own body
+    _fused(robot, bodies, findings, ' (by its rules: the mujoco package is not installed)')
+    for joint in robot.joints:
+        limit = joint.limit
+        if joint.type in (JointType.REVOLUTE, JointType.PRISMATIC) and limit is not None \
+                and limit.lower == limit.upper:
+            findings.add('M503', joint, f'joint {joint.name!r}',
+                         joint_path(joint.name) + '/limit',
+                         f'range [{limit.lower:g}, {limit.upper:g}] is empty: MuJoCo gives '
+                         'the joint no range, it turns freely (by its rules: the mujoco '
+                         'package is not installed)', PREFLIGHT_HINTS['M503'], 'limit')

@@ -1,0 +1,152 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Engine pre-flight: what a consumer silently changes or drops when it loads the URDF.
+
+``gazebo`` applies the rules of SDFormat's URDF conversion (libsdformat's parser_urdf),
+which Gazebo runs on every URDF it spawns: links on fixed joints are lumped into their
+parent (unless a ``<gazebo reference="JOINT">`` block sets ``preserveFixedJoint`` or
+``disableFixedJointLumping``), and a link whose mass, after lumping, is below 1e-6 kg (or
+that has no ``<inertial>``) is left out with everything below it. The tests compare these
+rules with libsdformat's own conversion. ``mujoco`` compiles the URDF with MuJoCo (see
+:mod:`.mujoco_preflight`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from os import PathLike
+from pathlib import Path
+
+from urdfgenpy_ros.errors import ValidationError
+from urdfgenpy_ros.joint import Joint
+from urdfgenpy_ros.lumping import lumps, WORLD
+from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.validation.codes import PREFLIGHT_HINTS
+from urdfgenpy_ros.validation.findings import Findings, link_path
+
+ENGINES = ('mujoco', 'gazebo')
+SDFORMAT_ZERO_MASS = 1e-6  # ignition::math::equal(mass, 0.0): its default tolerance
+
+
+@dataclass
+class SdfConversion:
+    """What SDFormat's URDF conversion does to each link it does not keep as a link."""
+
+    lumped: dict[str, tuple[str, Joint]] = field(default_factory=dict)
+    """Link -> (the link it is lumped into, its fixed joint)."""
+    cut: dict[str, list[str]] = field(default_factory=dict)
+    """Massless link -> the links below it that are left out with it."""
+    lumped_into: set[str] = field(default_factory=set)
+    """Links that receive the mass of lumped children."""
+
+    @property
+    def dropped(self) -> set[str]:
+        """Return every link that is neither a link nor lumped in the SDF."""
+        gone = set()
+        for top, below in self.cut.items():
+            gone.update(below)
+            if top not in self.lumped:
+                gone.add(top)
+        return gone
+
+
+def sdformat_conversion(robot: Robot) -> SdfConversion:
+    """Return which links SDFormat's URDF conversion lumps and which it leaves out."""
+    conversion = SdfConversion()
+    mass: dict[str, float] = {}
+    for root in robot.roots:
+        order = list(robot.walk(root))
+        for joint, link in reversed(order):  # children first: their mass is lumped upwards
+            own = link.inertial.mass if link.inertial is not None else 0.0
+            mass[link.name] = mass.get(link.name, 0.0) + own
+            if joint is not None and lumps(joint):
+                mass[joint.parent] = mass.get(joint.parent, 0.0) + mass[link.name]
+                conversion.lumped_into.add(joint.parent)
+        kept: dict[str, str] = {}
+        cut_by: dict[str, str] = {}
+        for joint, link in order:
+            parent = joint.parent if joint is not None else None
+            if parent is not None and parent in cut_by:
+                cut_by[link.name] = cut_by[parent]
+                conversion.cut[cut_by[parent]].append(link.name)
+                continue
+            if joint is not None and lumps(joint) and parent is not None:
+                kept[link.name] = kept[parent]
+                conversion.lumped[link.name] = (kept[parent], joint)
+            else:
+                kept[link.name] = link.name
+            if link.name != WORLD and not mass[link.name] >= SDFORMAT_ZERO_MASS:
+                cut_by[link.name] = link.name
+                conversion.cut[link.name] = []
+    return conversion
+
+
+def sdformat_findings(robot: Robot, findings: Findings) -> None:
+    """Add G601 for every lumped link and G602 for every link the conversion leaves out."""
+    conversion = sdformat_conversion(robot)
+    for name, (into, joint) in conversion.lumped.items():
+        link = robot.get_link(name)
+        parts = [kind for kind, items in (('collisions', link.collisions),
+                                          ('visuals', link.visuals)) if items]
+        renamed = (f'; its {" and ".join(parts)} are renamed {into}_fixed_joint_lump__...'
+                   if parts else '')
+        findings.add('G601', link, f'link {name!r}', link_path(name),
+                     f'lumped into {into!r} (fixed joint {joint.name!r}): there is no frame '
+                     f'{name!r} in Gazebo, its mass and sensors move to {into!r}{renamed}',
+                     PREFLIGHT_HINTS['G601'].replace('JOINT', joint.name), 'link')
+    for name, below in conversion.cut.items():
+        if name in conversion.lumped and not below:
+            continue  # a massless frame lumped into its parent: nothing is lost
+        link = robot.get_link(name)
+        mass = link.inertial.mass if link.inertial is not None else None
+        why = ('has no <inertial>' if mass is None and name not in conversion.lumped_into
+               else 'has no mass' if not mass else
+               f'has mass {mass:g} kg, which SDFormat takes for none (under 1e-06)')
+        if name in conversion.lumped:
+            what = f'its collisions and visuals still go to {conversion.lumped[name][0]!r}'
+        elif robot.parent_joint(name) is None:
+            what = 'it is the root: no link is left, Gazebo cannot load the robot'
+        else:
+            what = 'the conversion leaves it out with its joint'
+        listed = ', '.join(map(repr, below))
+        lost = f'; the {len(below)} link(s) below it are left out too: {listed}' if below else ''
+        findings.add('G602', link, f'link {name!r}', link_path(name), f'{why}: {what}{lost}',
+                     PREFLIGHT_HINTS['G602'], 'link')
+
+
+def preflight(robot: Robot, engines: Iterable[str],
+              search_paths: Iterable[str | PathLike[str]] = ()) -> list[ValidationError]:
+    """
+    Return what each engine in ``engines`` (``mujoco``, ``gazebo``) would change or drop.
+
+    MuJoCo runs when the ``mujoco`` package is importable; otherwise a finding says it
+    could not. Mesh URIs resolve through ``search_paths`` as in :func:`validate`.
+    """
+    findings = Findings(robot)
+    if len(robot.roots) != 1:
+        return []  # validate() reports it (S001, S002); no engine loads such a robot
+    for engine in engines:
+        if engine == 'gazebo':
+            sdformat_findings(robot, findings)
+        elif engine == 'mujoco':
+            from urdfgenpy_ros.validation.mujoco_preflight import mujoco_findings
+            source = robot.source.file if robot.source is not None else None
+            base = Path(source).parent if source and Path(source).is_file() else None
+            mujoco_findings(robot, findings, list(search_paths), base)
+        else:
+            raise ValueError(f'unknown engine {engine!r} (use {", ".join(ENGINES)})')
+    return findings.items

@@ -1,0 +1,170 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Suppression comments: ``<!-- urdfgenpy: ignore I205 -->`` and ``ignore-file``.
+
+``<!-- urdfgenpy: ignore CODE [CODE...] -->`` directly before an element (other comments
+may stand between) silences those codes for findings about that element and everything
+inside it: a comment before ``<link name="arm">`` silences the link's ``inertial``,
+``visual[1]/geometry``, ... findings, one before its ``<inertial>`` only those. A finding
+is "about" an element when its element path starts with the element's path (findings
+without a path, such as the reader's, when their line lies inside the element).
+``<!-- urdfgenpy: ignore-file CODE... -->`` before the first element (above ``<robot>`` or
+first inside it) silences the codes in the whole file. The comments are ordinary XML
+comments: they survive reading and writing, ``check --fix`` included.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+import re
+from typing import Any
+
+from lxml import etree
+
+from urdfgenpy_ros.errors import ValidationError
+from urdfgenpy_ros.robot import Robot
+
+_DIRECTIVE = re.compile(r'^\s*urdfgenpy\s*:\s*(ignore-file|ignore)\b(.*)$', re.DOTALL)
+_CODE = re.compile(r'[A-Z]\d{3}')
+_NAMED = ('link', 'joint', 'material')
+_NUMBERED = ('visual', 'collision')
+
+
+@dataclass(frozen=True)
+class Scope:
+    """Codes silenced for one element: its path and the lines it spans."""
+
+    path: str
+    first: int
+    last: int
+    codes: frozenset[str]
+
+
+@dataclass
+class Suppressions:
+    """The suppression comments of one file, and the codes ``--ignore`` gives."""
+
+    file_codes: frozenset[str] = frozenset()
+    scopes: list[Scope] = field(default_factory=list)
+    ignored: frozenset[str] = frozenset()
+
+    def reason(self, finding: ValidationError) -> str | None:
+        """Return why ``finding`` is silenced (``'inSource'``, ``'external'``) or None."""
+        if finding.code in self.ignored:
+            return 'external'
+        if finding.code in self.file_codes:
+            return 'inSource'
+        where = finding.location
+        for scope in self.scopes:
+            if finding.code not in scope.codes:
+                continue
+            if where.path is not None and (where.path == scope.path
+                                           or where.path.startswith(scope.path + '/')):
+                return 'inSource'
+            if where.path is None and where.line is not None \
+                    and scope.first <= where.line <= scope.last:
+                return 'inSource'
+        return None
+
+    def split(self, findings: Iterable[ValidationError]
+              ) -> tuple[list[ValidationError], list[tuple[ValidationError, str]]]:
+        """Return the findings that stay, and the silenced ones with their reason."""
+        kept: list[ValidationError] = []
+        silenced: list[tuple[ValidationError, str]] = []
+        for finding in findings:
+            reason = self.reason(finding)
+            if reason is None:
+                kept.append(finding)
+            else:
+                silenced.append((finding, reason))
+        return kept, silenced
+
+
+def parse_codes(text: str) -> frozenset[str]:
+    """Return the codes in ``I205,R307`` or ``I205 R307``; refuse anything else."""
+    parts = [part for part in re.split(r'[\s,]+', text.strip()) if part]
+    bad = [part for part in parts if not _CODE.fullmatch(part)]
+    if bad:
+        raise ValueError(f'{", ".join(bad)} is not a finding code (like I205)')
+    return frozenset(parts)
+
+
+def read_suppressions(robot: Robot, ignored: Iterable[str] = ()) -> Suppressions:
+    """Return the suppression comments of the file ``robot`` was read from."""
+    result = Suppressions(ignored=frozenset(ignored))
+    extras = robot.extras
+    if extras is None:
+        return result
+    root = extras.node
+    file_codes: set[str] = set()
+    leading = list(extras.outside[0])
+    for child in root:
+        if isinstance(child.tag, str):
+            break
+        leading.append(child)
+    for node in leading:
+        found = _directive(node)
+        if found is not None and found[0] == 'ignore-file':
+            file_codes |= found[1]
+    for node in root.iter(etree.Comment):
+        found = _directive(node)
+        if found is None or found[0] != 'ignore':
+            continue
+        target = _next_element(node)
+        if target is not None:
+            result.scopes.append(Scope(_path(target, root), target.sourceline or 0,
+                                       _last_line(target), found[1]))
+    result.file_codes = frozenset(file_codes)
+    return result
+
+
+def _directive(node: Any) -> tuple[str, frozenset[str]] | None:
+    if not isinstance(node, etree._Comment):
+        return None
+    match = _DIRECTIVE.match(node.text or '')
+    if match is None:
+        return None
+    return match.group(1), frozenset(_CODE.findall(match.group(2)))
+
+
+def _next_element(node: Any) -> Any:
+    """Return the element a comment stands directly before (skipping other comments)."""
+    sibling = node.getnext()
+    while sibling is not None and not isinstance(sibling.tag, str):
+        sibling = sibling.getnext()
+    return sibling
+
+
+def _last_line(node: Any) -> int:
+    return max((item.sourceline or 0) for item in node.iter())
+
+
+def _path(node: Any, root: Any) -> str:
+    """Return the element path the validator uses (``/robot/link[@name='arm']/inertial``)."""
+    steps = []
+    while node is not None and node is not root:
+        tag = etree.QName(node).localname
+        parent = node.getparent()
+        if tag in _NAMED and parent is root:
+            steps.append(f"{tag}[@name='{node.get('name', '')}']")
+        elif tag in _NUMBERED:
+            same = [item for item in parent if isinstance(item.tag, str) and item.tag == tag]
+            steps.append(f'{tag}[{same.index(node) + 1}]')
+        else:
+            steps.append(tag)
+        node = parent
+    return '/robot' + ''.join(f'/{step}' for step in reversed(steps))
