@@ -26,7 +26,7 @@ from urdfgenpy_ros.link import Link, Shape
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.transforms import symmetric_eigenvalues
 from urdfgenpy_ros.validation.findings import Findings, link_path
-from urdfgenpy_ros.validation.preflight import SDFORMAT_ZERO_MASS, sdformat_conversion
+from urdfgenpy_ros.validation.preflight import sdformat_conversion, SDFORMAT_ZERO_MASS
 
 # MuJoCo's mjMINVAL: the mass and every principal moment of a moving body must exceed it
 # (its compiler refuses the model otherwise); Gazebo's tools test the same things.
