@@ -151,12 +151,12 @@ def test_a_missing_package_gives_one_line() -> None:
     assert 'fixture_description' in str(raised.value) and '\n' not in str(raised.value)
 
 
-MACRO_WITH = '''<?xml version="1.0"?>
+MACRO_WITH = """<?xml version="1.0"?>
 <robot xmlns:xacro="http://www.ros.org/wiki/xacro" name="typo">
   <xacro:macro name="leg" {attributes}><link name="${{side}}_leg"/></xacro:macro>
   <xacro:leg side="left"/>
 </robot>
-'''
+"""
 
 
 def test_what_xacro_prints_while_failing_ends_the_one_line(tmp_path: Path, capfd) -> None:

@@ -26,6 +26,7 @@ from urdfgenpy_ros.link import Link, Shape
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.transforms import symmetric_eigenvalues
 from urdfgenpy_ros.validation.findings import Findings, link_path
+from urdfgenpy_ros.validation.preflight import sdformat_conversion, SDFORMAT_ZERO_MASS
 
 # MuJoCo's mjMINVAL: the mass and every principal moment of a moving body must exceed it
 # (its compiler refuses the model otherwise); Gazebo's tools test the same things.
@@ -39,10 +40,14 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
     parent_joint = {joint.child: joint for joint in robot.joints}
     roots = {link.name for link in robot.roots}
     below, moving_below = _subtrees(robot)
+    lumped_mass = sdformat_conversion(robot).mass
     for link in robot.links:
         joint = parent_joint.get(link.name)
-        moves = joint is not None and joint.type is not JointType.FIXED
         inertial = link.inertial
+        if lumped_mass.get(link.name, 0.0) >= SDFORMAT_ZERO_MASS and (
+                inertial is None or not inertial.mass > MINIMUM):
+            continue  # a fixed child lumped into it gives it mass, in Gazebo and MuJoCo
+        moves = joint is not None and joint.type is not JointType.FIXED
         where, element = link_path(link.name) + '/inertial', f'link {link.name!r}'
         if inertial is None:
             count = below.get(link.name, 0)

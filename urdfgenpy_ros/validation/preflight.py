@@ -52,6 +52,8 @@ class SdfConversion:
     """Massless link -> the links below it that are left out with it."""
     lumped_into: set[str] = field(default_factory=set)
     """Links that receive the mass of lumped children."""
+    mass: dict[str, float] = field(default_factory=dict)
+    """Link -> its mass with the mass of the children lumped into it (kg)."""
 
     @property
     def dropped(self) -> set[str]:
@@ -67,7 +69,7 @@ class SdfConversion:
 def sdformat_conversion(robot: Robot) -> SdfConversion:
     """Return which links SDFormat's URDF conversion lumps and which it leaves out."""
     conversion = SdfConversion()
-    mass: dict[str, float] = {}
+    mass = conversion.mass
     for root in robot.roots:
         order = list(robot.walk(root))
         for joint, link in reversed(order):  # children first: their mass is lumped upwards
