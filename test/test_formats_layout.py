@@ -229,3 +229,21 @@ def test_an_empty_block_element_given_children_is_written_open() -> None:
     written = etree.fromstring(robot.to_urdf().encode())
     assert written.find('gazebo/sensor_hint/rate').text == '10'
     assert written.find('link').get('name') == 'world'
+
+
+@pytest.mark.parametrize('gap, end', [('\n\n', '\n\n'), ('\n', ''), ('\n\n\n', '\n  \n'),
+                                      (' ', '')])
+def test_white_space_around_the_root_is_kept(gap: str, end: str, tmp_path: Path) -> None:
+    source = (f'<?xml version="1.0"?>{gap}<robot name="r">\n  <link name="a">\n'
+              f'    <inertial>\n      <mass value="1"/>\n'
+              '      <inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>\n'
+              f'    </inertial>\n  </link>\n</robot>{end}')
+    robot = Robot.from_urdf_string(source)
+    assert robot.to_urdf() == source
+    robot.links[0].inertial.mass = 2.0
+    edited = robot.to_urdf()
+    assert _changed(source, edited) == (['      <mass value="1"/>'], ['      <mass value="2"/>'])
+    assert edited.endswith(f'</robot>{end}') and f'?>{gap}<robot' in edited
+    path = tmp_path / 'edited.urdf'
+    path.write_bytes(edited.encode())
+    assert load_yourdfpy(path).links[0].inertial.mass == 2.0

@@ -28,6 +28,8 @@ class Layout(NamedTuple):
     quote: str = '"'
     declaration: str = '<?xml version="1.0"?>'
     head: str | None = None  # the ``<robot ...>`` opening tag as written
+    end: str = '\n'  # the white space after the document's last tag
+    gap: str = '\n'  # the white space after the XML declaration
 
 
 class Preserved:

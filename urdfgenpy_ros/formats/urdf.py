@@ -90,8 +90,8 @@ class UrdfWriter(ElementWriter):
             declaration = layout.declaration
             before, after = ([self.source_text(node) for node in nodes]
                              for nodes in extras.outside)
-        first = [declaration] if declaration else []
-        text = '\n'.join([*first, *before, self.write_robot(), *after]) + '\n'
+        first = declaration + layout.gap if declaration else ''
+        text = first + '\n'.join([*before, self.write_robot(), *after]) + layout.end
         if layout.quote == "'":
             text = _single_quotes(text)
         if layout.newline != '\n':

@@ -194,7 +194,13 @@ class _Reader:
         else:
             declaration = match.group(1) if match and not any(
                 warning.code == 'P102' for warning in self.warnings) else '<?xml version="1.0"?>'
-        return Layout(unit, newline, quote, declaration, head)
+        body = text.rstrip()
+        end = text[len(body):].replace('\r\n', '\n') if body.endswith('>') else '\n'
+        gap = '\n'
+        if match is not None and declaration == match.group(1):
+            after = text[match.end(1):match.end(1) + 256]
+            gap = after[:len(after) - len(after.lstrip())].replace('\r\n', '\n') or '\n'
+        return Layout(unit, newline, quote, declaration, head, end, gap)
 
     def _attach(self, robot: Robot, block: Extension, joints: list[Joint]) -> None:
         reference = block.reference if block.tag == 'gazebo' else None
