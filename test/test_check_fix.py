@@ -269,17 +269,20 @@ def test_fix_on_the_corpus_changes_only_the_repaired_lines(path: Path, tmp_path:
     changes = _changed(_model(path), _model(copy))  # as yourdfpy reads both
     allowed, limits = set(), 0
     for code, kind, name in repaired:
-        assert code in ('I205', 'J104'), code  # what the corpus has; others: the fixtures
+        assert code in ('I202', 'I203', 'I205', 'J104'), code  # others: the fixtures
         if code == 'J104':
             limits += 1
             allowed |= {('joint', name, 'limit', 'lower'), ('joint', name, 'limit', 'upper')}
+        if code in ('I202', 'I203'):  # one <inertia> line
+            limits += 1
+            allowed.add(('link', name, 'inertial', 'inertia'))
     added_names = set(re.findall(r"added a massless root link '([^']*)' and fixed joint "
                                  r"'([^']*)'", result.stdout))
     new_items = {name for pair in added_names for name in pair}
     allowed |= {key for key in changes if key[1] in new_items}
     assert set(changes) == allowed
-    assert len(removed) == limits and all('<limit' in original.splitlines()[n - 1]
-                                          for n in removed)
+    assert len(removed) == limits and all(
+        re.search('<(limit|inertia) ', original.splitlines()[n - 1]) for n in removed)
     assert len(added) == limits + 5 * sum(code == 'I205' for code, _, _ in repaired)
     assert not {code for code, _, _ in repaired} & {
         f.code for f in Robot.from_urdf(copy).validate(check_meshes=False)}

@@ -67,7 +67,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'I205': (W, 'inertia on the root link'),
     'I206': (W, 'link without inertial (or massless) above moving links'),
     'I207': (W, 'moving link without inertial (fine for RViz, not for simulation)'),
-    'I208': (W, 'inertia an engine could not use alone, on a link merged into its parent'),
+    'I208': (W, 'a point mass (zero tensor) on a link that does not move'),
     # references and values
     'R301': (W, 'material not defined'),
     'R302': (E, 'collision mesh file not found'),

@@ -17,7 +17,7 @@ Repair what has one right answer (``urdfgenpy check --fix``), in the model.
 
 The robot is edited in place; written back by the lossless writer, only the repaired
 elements' lines change. Fixed: a non-unit axis (J102, normalised), lower > upper (J104,
-swapped), a non-physical tensor on a moving link (I202, I203: replaced by the tensor of
+swapped), a non-physical tensor (I202, I203: replaced by the tensor of
 the link's first collision, else visual, box, cylinder or sphere with the link's mass), an
 inertia on the root (I205: a massless root link above it), and, only with the defaults the
 user gives, a missing ``<limit>`` (J103) or a zero effort or velocity (J106). Everything

@@ -117,9 +117,10 @@ def _check_tensor(inertial: Inertial, element: str, where: str, findings: Findin
     """
     Check the principal moments as the engines do; return whether the tensor is usable.
 
-    A link that moves needs a tensor MuJoCo accepts (I202, I203). A link on a fixed joint,
-    or the root, is merged into its parent by Gazebo's converter and MuJoCo, so there the
-    same defects are warnings (I208): point masses and frames often look like that.
+    MuJoCo refuses a body whose moments are not all above its minimum (I202) or break the
+    triangle inequality (I203), whether it moves or not. The one exception is a tensor of
+    zeros on a link that does not move, a point mass or a frame: Gazebo's converter and
+    MuJoCo accept it (I208, a warning).
     """
     values = (inertial.ixx, inertial.ixy, inertial.ixz, inertial.iyy, inertial.iyz,
               inertial.izz)
@@ -133,20 +134,21 @@ def _check_tensor(inertial: Inertial, element: str, where: str, findings: Findin
         problem = f'principal moments {small:.4g} + {middle:.4g} < {large:.4g}'
     else:
         return True
-    if not moves:
+    if not moves and not any(values):
         findings.add('I208', inertial, element, where + '/inertia', problem,
-                     'Gazebo and MuJoCo merge this link into its parent, so they accept '
+                     'a point mass on a link that does not move: Gazebo and MuJoCo accept '
                      'it; compute the tensor from the geometry (Inertial.from_geometry) if '
                      'the link will ever move', 'inertia')
     elif small <= MINIMUM:
         findings.add('I202', inertial, element, where + '/inertia', problem,
-                     'every body has positive moments (MuJoCo refuses the model): compute '
-                     'the tensor from the geometry (Inertial.from_geometry) or from CAD',
+                     'every body has positive moments (MuJoCo refuses the model, even for a '
+                     'link that does not move, unless all six values are 0): compute the '
+                     'tensor from the geometry (Inertial.from_geometry) or from CAD',
                      'inertia')
     else:
         findings.add('I203', inertial, element, where + '/inertia', problem,
-                     'no rigid body has that: check the tensor (MuJoCo refuses it)',
-                     'inertia')
+                     'no rigid body has that: check the tensor (MuJoCo refuses it, even on '
+                     'a link that does not move)', 'inertia')
     return False
 
 
