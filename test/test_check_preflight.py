@@ -263,3 +263,28 @@ def test_cli_engines_option_and_exit_codes(tmp_path: Path) -> None:
                                      str(path)]).exit_code == 1
     bad = CliRunner().invoke(main, ['check', '--engines', 'bullet', str(path)])
     assert bad.exit_code == 2 and 'bullet: use mujoco, gazebo' in bad.output
+
+
+def test_what_mujoco_prints_becomes_findings_and_leaves_no_log(
+        tmp_path: Path, capfd, monkeypatch) -> None:
+    require_module('mujoco')
+    from click.testing import CliRunner
+    from urdfgenpy_ros.cli import main
+    inertial = ('<inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" '
+                'iyz="0" izz="0.01"/></inertial>')
+    path = tmp_path / 'ghost_mimic.urdf'
+    path.write_text(
+        f'<robot name="ghost_mimic"><link name="base_link"/><link name="a">{inertial}</link>'
+        f'<link name="b">{inertial}</link><joint name="ja" type="revolute">'
+        '<parent link="base_link"/><child link="a"/><axis xyz="0 0 1"/>'
+        '<limit lower="-1" upper="1" effort="1" velocity="1"/></joint>'
+        '<joint name="jb" type="revolute"><parent link="a"/><child link="b"/>'
+        '<axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/>'
+        '<mimic joint="ghost"/></joint></robot>')
+    work = tmp_path / 'repository'
+    work.mkdir()
+    monkeypatch.chdir(work)
+    result = CliRunner().invoke(main, ['check', '--engines', 'mujoco', str(path)])
+    assert "M507 robot 'ghost_mimic': <mimic> on joint 'jb' ignored" in result.stdout
+    assert 'WARNING' not in capfd.readouterr().err
+    assert list(work.iterdir()) == []  # no MUJOCO_LOG.TXT

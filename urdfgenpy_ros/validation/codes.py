@@ -86,6 +86,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'M504': (W, 'MuJoCo collides with the convex hull of a non-convex mesh'),
     'M505': (W, 'MuJoCo refuses the model'),
     'M506': (W, 'MuJoCo cannot read the mesh'),
+    'M507': (W, 'MuJoCo warns while compiling the model'),
     'G601': (W, "SDFormat's URDF conversion lumps the link into its parent (fixed joint)"),
     'G602': (W, "SDFormat's URDF conversion drops the link (and everything below it)"),
 }
@@ -98,7 +99,8 @@ PREFLIGHT_HINTS: dict[str, str] = {
     'M502': 'give the link an <inertial> with a mass and a tensor MuJoCo accepts as they are',
     'M503': 'give lower < upper in <limit>: MuJoCo reads equal bounds as no range at all',
     'M504': 'split the collision mesh into convex parts, or use primitive shapes',
-    'M505': 'fix the errors check reports; MuJoCo says why in the message',
+    'M505': 'MuJoCo says why in the message; fix what it names',
+    'M507': 'MuJoCo ignores or changes what it names: check the simulation does not need it',
     'M506': 'MuJoCo reads STL, OBJ and MSH meshes: convert it, or give --package-path',
     'G601': '<gazebo reference="JOINT"><preserveFixedJoint>true</preserveFixedJoint></gazebo> '
             'keeps the link (and its frame) in Gazebo',

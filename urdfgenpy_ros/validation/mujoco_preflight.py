@@ -26,10 +26,15 @@ reported (M506). Without the ``mujoco`` package, M501 and M503 follow its rules.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
 import copy
 import dataclasses
 import math
+import os
 from pathlib import Path
+import sys
+import tempfile
 from typing import Any
 
 from urdfgenpy_ros.errors import UrdfgenpyError
@@ -57,17 +62,52 @@ def mujoco_findings(robot: Robot, findings: Findings, search_paths: list[Any],
         _by_rules(robot, findings)
         return
     compiled, meshes = _compilable(robot, findings, search_paths, base)
+    said: list[str] = []
+    model = None
     try:
-        model = mujoco.MjModel.from_xml_string(compiled.to_urdf())
+        with _quiet(said):
+            model = mujoco.MjModel.from_xml_string(compiled.to_urdf())
     except (ValueError, UrdfgenpyError) as error:
         findings.add('M505', robot, f'robot {robot.name!r}', '/robot',
                      ' '.join(str(error).split()), PREFLIGHT_HINTS['M505'], 'robot')
+    for line in dict.fromkeys(said):
+        findings.add('M507', robot, f'robot {robot.name!r}', '/robot', line,
+                     PREFLIGHT_HINTS['M507'], 'robot')
+    if model is None:
         return
     bodies = {model.body(index).name: index for index in range(model.nbody)}
     into = _fused(robot, set(bodies), findings)
     _masses(robot, model, bodies, into, findings)
     _ranges(robot, model, mujoco, findings)
     _hulls(meshes, findings)
+
+
+@contextmanager
+def _quiet(said: list[str]) -> Iterator[None]:
+    """
+    Compile in a folder of its own and catch what MuJoCo prints; add its warnings to said.
+
+    MuJoCo writes its warnings on the process's stderr and appends them to
+    ``MUJOCO_LOG.TXT`` in the working directory: neither belongs in a user's terminal or
+    repository, so both go to a temporary folder, and the warnings become findings.
+    """
+    here = os.getcwd()
+    sys.stderr.flush()
+    saved = os.dup(2)
+    with tempfile.TemporaryDirectory() as folder, \
+            open(Path(folder) / 'stderr', 'w+b') as printed:
+        os.chdir(folder)
+        os.dup2(printed.fileno(), 2)
+        try:
+            yield
+        finally:
+            os.dup2(saved, 2)
+            os.close(saved)
+            os.chdir(here)
+            printed.seek(0)
+            text = printed.read().decode('utf-8', 'replace')
+            said += [' '.join(line.removeprefix('WARNING:').split())
+                     for line in text.splitlines() if line.strip()]
 
 
 def _compilable(robot: Robot, findings: Findings, search_paths: list[Any],
