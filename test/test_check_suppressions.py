@@ -142,3 +142,16 @@ def test_suppressions_in_xacro_survive_expansion(tmp_path: Path) -> None:
     assert canonical(xacro_expand(path)) == canonical(Robot.from_xacro(path).to_urdf())
     found, _, _ = _codes(path)
     assert found == [('J102', "joint 'wrist'"), ('J106', "joint 'shoulder'")]
+
+
+def test_a_code_that_does_not_exist_is_said_not_silently_ignored(tmp_path: Path) -> None:
+    path = tmp_path / 'typo.urdf'
+    path.write_text('<?xml version="1.0"?>\n<robot name="r">\n'
+                    '  <!-- urdfgenpy: ignore I2O5 C401 -->\n  <link name="a"/>\n</robot>\n')
+    result = CliRunner().invoke(main, ['check', str(path)])
+    assert f"{path}:3: warning: the suppression comment names 'I2O5'" in result.output
+    assert ' C401 ' not in result.output  # the real code in it still works
+    refused = CliRunner().invoke(main, ['check', '--ignore', 'I250', str(path)])
+    assert refused.exit_code == 2 and 'I250 is not a finding code' in refused.output
+    lower = CliRunner().invoke(main, ['check', '--ignore', 'c401', str(path)])
+    assert lower.exit_code == 0 and '1 suppressed' in lower.output

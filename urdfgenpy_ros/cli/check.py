@@ -170,6 +170,9 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
     try:
         robot = load(path, mappings, options.package_paths)
         suppressions = read_suppressions(robot, options.ignored)
+        report.notes += [f'{path}:{line}: warning: the suppression comment names {word!r}, '
+                         'which is not a finding code: it silences nothing (codes look like '
+                         'I205)' for line, word in suppressions.unknown]
         report.findings, report.suppressed = suppressions.split(_findings(robot, options))
         if not options.fix:
             return report

@@ -37,9 +37,11 @@ from lxml import etree
 
 from urdfgenpy_ros.errors import ValidationError
 from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.validation.codes import CODES
 
 _DIRECTIVE = re.compile(r'^\s*urdfgenpy\s*:\s*(ignore-file|ignore)\b(.*)$', re.DOTALL)
 _CODE = re.compile(r'[A-Z]\d{3}')
+_CODE_LIKE = re.compile(r'[A-Za-z][0-9A-Za-z]{3}')  # I205, and typos such as I2O5 or i205
 _NAMED = ('link', 'joint', 'material')
 _NUMBERED = ('visual', 'collision')
 
@@ -61,6 +63,8 @@ class Suppressions:
     file_codes: frozenset[str] = frozenset()
     scopes: list[Scope] = field(default_factory=list)
     ignored: frozenset[str] = frozenset()
+    unknown: list[tuple[int, str]] = field(default_factory=list)
+    """(line, word) of what a suppression comment names that is no finding code."""
 
     def reason(self, finding: ValidationError) -> str | None:
         """Return why ``finding`` is silenced (``'inSource'``, ``'external'``) or None."""
@@ -96,10 +100,11 @@ class Suppressions:
 
 def parse_codes(text: str) -> frozenset[str]:
     """Return the codes in ``I205,R307`` or ``I205 R307``; refuse anything else."""
-    parts = [part for part in re.split(r'[\s,]+', text.strip()) if part]
-    bad = [part for part in parts if not _CODE.fullmatch(part)]
+    parts = [part.upper() for part in re.split(r'[\s,]+', text.strip()) if part]
+    bad = [part for part in parts if part not in CODES]
     if bad:
-        raise ValueError(f'{", ".join(bad)} is not a finding code (like I205)')
+        raise ValueError(f'{", ".join(bad)} is not a finding code (like I205; the README '
+                         'lists them under "Validate")')
     return frozenset(parts)
 
 
@@ -120,9 +125,12 @@ def read_suppressions(robot: Robot, ignored: Iterable[str] = ()) -> Suppressions
         found = _directive(node)
         if found is not None and found[0] == 'ignore-file':
             file_codes |= found[1]
-    for node in root.iter(etree.Comment):
+    for node in [*extras.outside[0], *root.iter(etree.Comment)]:
         found = _directive(node)
-        if found is None or found[0] != 'ignore':
+        if found is None:
+            continue
+        result.unknown += [(node.sourceline or 0, word) for word in _unknown(node)]
+        if found[0] != 'ignore':
             continue
         target = _next_element(node)
         if target is not None:
@@ -139,6 +147,14 @@ def _directive(node: Any) -> tuple[str, frozenset[str]] | None:
     if match is None:
         return None
     return match.group(1), frozenset(_CODE.findall(match.group(2)))
+
+
+def _unknown(node: Any) -> list[str]:
+    """Return the words of a directive that look like finding codes but are none."""
+    match = _DIRECTIVE.match(node.text or '')
+    words = re.split(r'[\s,]+', match.group(2).strip()) if match else []
+    return [word for word in words if _CODE_LIKE.fullmatch(word) and word not in CODES
+            and sum(char.isdigit() for char in word) >= 2]
 
 
 def _next_element(node: Any) -> Any:
