@@ -206,3 +206,28 @@ def test_relative_mesh_paths_of_parts_elsewhere_still_resolve(tmp_path: Path) ->
     for name in meshes:  # read as a plain path, relative to the assembly file's folder
         assert (tmp_path / name).is_file(), name
     assert [str(f) for f in robot.validate() if f.code.startswith('R3')] == []
+
+
+@pytest.mark.parametrize('command', ['attach', 'convert'])
+def test_written_files_find_the_meshes_from_where_they_are(tmp_path: Path,
+                                                           command: str) -> None:
+    from helpers import load_yourdfpy
+    from registry_robots import robot as registry_robot
+    panda = registry_robot('panda.urdf')  # file://meshes/... relative to its own folder
+    mobile_base().to_urdf(tmp_path / 'rover.urdf')
+    assembly = tmp_path / 'rover_panda.assembly.yaml'
+    assembly.write_text(f'parts:\n  - file: rover.urdf\n  - file: {panda}\n    at: chassis\n'
+                        '    prefix: arm_\n')
+    output = tmp_path / 'elsewhere' / 'out.urdf'
+    output.parent.mkdir()
+    arguments = (['attach', str(tmp_path / 'rover.urdf'), str(panda), '--at', 'chassis',
+                  '--prefix', 'arm_', '-o'] if command == 'attach' else
+                 ['convert', str(assembly)])
+    result = CliRunner().invoke(main, [*arguments, str(output)])
+    assert result.exit_code == 0, result.output
+    meshes = [mesh for link in load_yourdfpy(output).links
+              for item in (*link.visuals, *link.collisions)
+              if (mesh := item.geometry.mesh) is not None]
+    assert meshes
+    for mesh in meshes:  # as yourdfpy resolves them: relative to the written file
+        assert (output.parent / mesh.filename).resolve().is_file(), mesh.filename

@@ -41,7 +41,6 @@ from __future__ import annotations
 from collections.abc import Iterable
 import importlib
 import inspect
-import os
 from os import PathLike
 from pathlib import Path
 import re
@@ -199,7 +198,7 @@ def _load_part(file: _File, entry: _Mapping, search_paths: list[Any]
         target = _text(file, entry, 'function')
         return _from_function(file, entry, target), _module_file(target)
     from urdfgenpy_ros.formats import load
-    from urdfgenpy_ros.resources import PackageResolver, ResourceError
+    from urdfgenpy_ros.resources import PackageResolver, rebase_meshes, ResourceError
     uri = _text(file, entry, 'file')
     try:
         found = PackageResolver(search_paths).resolve(uri, file.path.parent)
@@ -211,28 +210,8 @@ def _load_part(file: _File, entry: _Mapping, search_paths: list[Any]
         robot = load(found, mappings, search_paths)
     except UrdfgenpyError as error:
         raise file.error(file.at(entry, 'file'), 'file', f'part {uri}: {error}') from None
-    _rebase_meshes(robot, found.parent, file.path.parent)
+    rebase_meshes(robot, found.parent, file.path.parent)
     return robot, [str(found.resolve()), *robot.included_files]
-
-
-def _rebase_meshes(robot: Robot, part_folder: Path, folder: Path) -> None:
-    """Make the part's relative mesh paths relative to the assembly file instead."""
-    from urdfgenpy_ros.geometry import Mesh
-    from urdfgenpy_ros.link import Shape
-    from urdfgenpy_ros.resources import relative_file_uri
-    if part_folder.resolve() == folder.resolve():
-        return
-    shapes: list[Shape] = [*(v for link in robot.links for v in link.visuals),
-                           *(c for link in robot.links for c in link.collisions)]
-    for shape in shapes:
-        mesh = shape.geometry
-        name = mesh.filename if isinstance(mesh, Mesh) else '://'
-        relative = relative_file_uri(name)
-        if isinstance(mesh, Mesh) and (relative is not None or (
-                '://' not in name and not Path(name).is_absolute())):
-            moved = os.path.relpath(part_folder / (relative or name), folder)
-            shape.geometry = Mesh(Path(moved).as_posix(), mesh.scale, source=mesh.source,
-                                  extras=mesh.extras)
 
 
 def _xacro_value(value: object) -> str:

@@ -20,11 +20,15 @@ from collections.abc import Iterable, Mapping
 import os
 from os import PathLike
 from pathlib import Path
+from typing import TYPE_CHECKING
 from urllib.parse import unquote, urlparse
 
 from lxml import etree
 
 from urdfgenpy_ros.errors import UrdfgenpyError
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 
 class ResourceError(UrdfgenpyError):
@@ -189,3 +193,28 @@ def _search(root: Path, name: str, depth: int, by_folder_name: bool = False) -> 
         if found is not None:
             return found
     return None
+
+
+def rebase_meshes(robot: Robot, source_folder: Path, target_folder: Path) -> None:
+    """
+    Make the relative mesh paths of ``robot`` right from where it is about to be written.
+
+    They were relative to ``source_folder`` (the file it was read from); they become
+    relative to ``target_folder``. ``package://`` URIs and absolute paths stay.
+    """
+    from urdfgenpy_ros.geometry import Mesh
+    from urdfgenpy_ros.link import Shape
+    if source_folder.resolve() == target_folder.resolve():
+        return
+    for link in robot.links:
+        shapes: list[Shape] = [*link.visuals, *link.collisions]
+        for shape in shapes:
+            mesh = shape.geometry
+            if not isinstance(mesh, Mesh):
+                continue
+            relative = relative_file_uri(mesh.filename)
+            if relative is None and ('://' in mesh.filename or Path(mesh.filename).is_absolute()):
+                continue
+            moved = os.path.relpath(source_folder / (relative or mesh.filename), target_folder)
+            shape.geometry = Mesh(Path(moved).as_posix(), mesh.scale, source=mesh.source,
+                                  extras=mesh.extras)

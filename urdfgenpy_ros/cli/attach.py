@@ -26,6 +26,7 @@ from urdfgenpy_ros.cli._options import input_options, read_robot
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.geometry import Origin
+from urdfgenpy_ros.resources import rebase_meshes
 
 
 def _vector(option: str, text: str, degrees: bool = False) -> tuple[float, float, float]:
@@ -72,6 +73,8 @@ def attach(base: Path, part: Path, at: str, prefix: str, xyz: str, rpy: str, deg
     origin = Origin(_vector('--xyz', xyz), _vector('--rpy', rpy, degrees))
     robot = read_robot(base, base_args, package_paths)
     piece = read_robot(part, part_args, package_paths)
+    rebase_meshes(robot, base.parent, output.parent)  # relative meshes still found
+    rebase_meshes(piece, part.parent, output.parent)
     robot.attach(piece, at, origin, prefix=prefix, joint_name=joint_name)
     robot.save(output)
     joint = robot.parent_joint(prefix + piece.root.name)

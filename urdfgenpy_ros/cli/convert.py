@@ -23,6 +23,7 @@ import click
 from urdfgenpy_ros.cli._options import input_options, read_robot
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
+from urdfgenpy_ros.resources import rebase_meshes
 
 
 @click.command()
@@ -38,5 +39,6 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     if target.exists() and not force:
         raise UrdfgenpyError(f'{target} exists: pass --force to overwrite it')
     robot = read_robot(source, arguments, package_paths)
+    rebase_meshes(robot, source.parent, target.parent)  # relative meshes still found
     robot.save(target)
     click.echo(f'wrote {target}: {len(robot.links)} links, {len(robot.joints)} joints')
