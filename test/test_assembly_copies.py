@@ -169,3 +169,23 @@ def test_macro_called_twice_with_parents_equals_attach(tmp_path: Path) -> None:
         assert theirs.get_link(link.name) == link
     transmissions = [b.name for b in theirs.extensions if b.tag == 'transmission']
     assert len(transmissions) == 2 * 6 and len(set(transmissions)) == 12
+
+
+def test_transmission_elements_naming_joints_follow_and_unnamed_colours_stay() -> None:
+    from lxml import etree
+    from urdfgenpy_ros import Robot
+    robot = Robot.from_urdf_string(
+        '<robot name="wrist"><link name="base_link"/><link name="cup">'
+        '<visual><geometry><box size="0.1 0.1 0.1"/></geometry>'
+        '<material name=""><color rgba="0 0 1 1"/></material></visual></link>'
+        '<joint name="roll" type="continuous"><parent link="base_link"/><child link="cup"/>'
+        '</joint><transmission name="wrist_trans" type="pr2_mechanism_model/WristTransmission">'
+        '<rightActuator name="r_motor"/><flexJoint name="roll" reduction="1"/>'
+        '<rollJoint name="roll" reduction="1"/></transmission></robot>')
+    copy = robot.prefixed('left_', materials=True)
+    written = etree.fromstring(copy.to_urdf().encode())
+    joints = {joint.get('name') for joint in written.iter('joint')}
+    assert [item.get('name') for item in written.find('transmission')
+            if item.tag.endswith('Joint')] == ['left_roll', 'left_roll']
+    assert joints == {'left_roll'}
+    assert [m.get('name') for m in written.iter('material')] == ['']  # unnamed: unchanged

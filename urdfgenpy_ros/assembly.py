@@ -70,7 +70,7 @@ def prefixed(robot: Robot, prefix: str, *, materials: bool = False) -> Robot:
                          "'left_'")
     renaming = _Renaming({link.name: prefix + link.name for link in robot.links},
                          {joint.name: prefix + joint.name for joint in robot.joints},
-                         {m.name: prefix + m.name for m in _definitions(robot)}
+                         {m.name: prefix + m.name for m in _definitions(robot) if m.name}
                          if materials else {}, prefix)
     clone = copy.deepcopy(robot)
     if prefix:
@@ -135,7 +135,9 @@ def _rename_block(root: Any, renaming: _Renaming) -> None:
         if reference is not None and renaming.frame(reference) is not None:
             element.set('reference', renaming.frame(reference))
         name = element.get('name')
-        if element.tag == 'joint' and name in renaming.joints:
+        # <joint name> anywhere; in transmissions, any element naming a joint (PR2's
+        # <rollJoint name>, <gap_joint name>, <passive_joint name>)
+        if name in renaming.joints and (element.tag == 'joint' or root.tag == 'transmission'):
             element.set('name', renaming.joints[name])
         elif prefix and element.tag in _NAMED_INSIDE and name:
             element.set('name', prefix + name)
@@ -244,6 +246,8 @@ def _merge_materials(base: Robot, piece: Robot, prefix: str) -> None:
     names = {material.name for material in [*ours.values(), *theirs]}
     renames: dict[str, str] = {}
     for material in theirs:
+        if not material.name:
+            continue  # an unnamed inline colour: nothing refers to it
         known = ours.get(material.name)
         if known is not None and (known.rgba, known.texture) != (
                 material.rgba, material.texture):
