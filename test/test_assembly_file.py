@@ -101,7 +101,9 @@ def test_assembly_file_is_found_by_content_and_equals_python(tmp_path: Path) -> 
     ('parts:\n  - file: rover.urdf\n    prefx: a_\n', ':3:5: error A001',
      "'prefx': unknown key (did you mean 'prefix'?)"),
     ('parts:\n  - file: rover.urdf\n  - file: rover.urdf\n    at: chassis\n    prefix: b_\n'
-     '    origin: {xyz: [0, 0]}\n', ':6:5: error A001', "'origin.xyz': expected 3 numbers"),
+     '    origin: {xyz: [0, 0]}\n', ':6:5: error A001', "'origin.xyz': expected 3 finite"),
+    ('parts:\n  - file: rover.urdf\n  - file: rover.urdf\n    at: chassis\n    prefix: b_\n'
+     '    origin: {rpy: [0, 0, .nan]}\n', ':6:5: error A001', "'origin.rpy': expected 3 finite"),
     ('parts:\n  - file: rover.urdf\n  - file: [rover.urdf\n', ':4:1: error A001',
      'YAML syntax'),
     ('parts:\n  - file: broken.urdf\n', ':2:5: error A001',

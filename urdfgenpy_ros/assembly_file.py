@@ -41,6 +41,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 import importlib
 import inspect
+import math
 from os import PathLike
 from pathlib import Path
 import re
@@ -277,8 +278,8 @@ def _origin(file: _File, entry: _Mapping) -> Origin:
         vector = value.get(key, [0.0, 0.0, 0.0])
         if not isinstance(vector, list) or len(vector) != 3 or not all(
                 isinstance(number, (int, float)) and not isinstance(number, bool)
-                for number in vector):
-            raise file.error(line, f'origin.{key}', f'expected 3 numbers [a, b, c], got '
-                             f'{vector!r}')
+                and math.isfinite(number) for number in vector):
+            raise file.error(line, f'origin.{key}', f'expected 3 finite numbers [a, b, c], '
+                             f'got {vector!r}')
         vectors.append(tuple(float(number) for number in vector))
     return Origin(vectors[0], vectors[1])

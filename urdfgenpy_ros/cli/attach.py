@@ -40,6 +40,12 @@ def _vector(option: str, text: str, degrees: bool = False) -> tuple[float, float
                                  param_hint=option)
     if degrees:
         values = [math.radians(value) for value in values]
+    elif option == '--rpy' and any(abs(value) > 2 * math.pi for value in values):
+        click.echo(f'urdfgenpy: warning: --rpy {text!r} is in radians; pass --degrees if you '
+                   'meant degrees', err=True)
+    if not all(math.isfinite(value) for value in values):
+        raise click.BadParameter(f'{text!r} has a number that is not finite',
+                                 param_hint=option)
     return values[0], values[1], values[2]
 
 
