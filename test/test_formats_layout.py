@@ -247,3 +247,15 @@ def test_white_space_around_the_root_is_kept(gap: str, end: str, tmp_path: Path)
     path = tmp_path / 'edited.urdf'
     path.write_bytes(edited.encode())
     assert load_yourdfpy(path).links[0].inertial.mass == 2.0
+
+
+@pytest.mark.parametrize('before', [
+    '<!-- c1 -->\n\n', '\n<!-- c1 -->\n<?pi x?>\n\n\n<!-- c2 -->  ', ''])
+def test_comments_before_the_root_keep_their_blank_lines(before: str) -> None:
+    for declaration in ('<?xml version="1.0"?>\n', ''):
+        source = f'{declaration}{before}<robot name="r">\n  <link name="a"/>\n</robot>\n'
+        robot = Robot.from_urdf_string(source)
+        assert robot.to_urdf() == source
+        robot.get_link('a').name = 'b'
+        assert _changed(source, robot.to_urdf()) == (['  <link name="a"/>'],
+                                                     ['  <link name="b"/>'])

@@ -29,7 +29,8 @@ class Layout(NamedTuple):
     declaration: str = '<?xml version="1.0"?>'
     head: str | None = None  # the ``<robot ...>`` opening tag as written
     end: str = '\n'  # the white space after the document's last tag
-    gap: str = '\n'  # the white space after the XML declaration
+    gap: str = '\n'  # the white space after the XML declaration (or before all, if none)
+    between: tuple[str, ...] = ()  # the white space before each later node up to the root
 
 
 class Preserved:

@@ -90,8 +90,11 @@ class UrdfWriter(ElementWriter):
             declaration = layout.declaration
             before, after = ([self.source_text(node) for node in nodes]
                              for nodes in extras.outside)
-        first = declaration + layout.gap if declaration else ''
-        text = first + '\n'.join([*before, self.write_robot(), *after]) + layout.end
+        first = declaration + layout.gap  # no declaration: the white space the file began with
+        leading = [*before, self.write_robot()]
+        spaces = layout.between if len(layout.between) == len(before) else ['\n'] * len(before)
+        opening = leading[0] + ''.join(map(str.__add__, spaces, leading[1:]))
+        text = first + '\n'.join([opening, *after]) + layout.end
         if layout.quote == "'":
             text = _single_quotes(text)
         if layout.newline != '\n':

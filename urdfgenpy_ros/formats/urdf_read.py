@@ -48,6 +48,30 @@ _SHAPE_TAGS = GEOMETRY.children[0].tags
 _DECLARATION = re.compile(r'^\s*(<\?xml\b[^>]*\?>)')
 
 
+def _spaces_before(text: str, start: int, comments: int) -> list[str]:
+    """
+    Return the white space before each top-level node from ``start`` up to the root.
+
+    ``comments`` comments or processing instructions come before the root; the list has
+    one more entry, the white space before the root. [] if they are not where expected.
+    """
+    spaces, position = [], start
+    for index in range(comments + 1):
+        rest = text[position:position + 4096]
+        space = rest[:len(rest) - len(rest.lstrip())]
+        spaces.append(space.replace('\r\n', '\n'))
+        position += len(space)
+        if index == comments:
+            break
+        closing = '-->' if text.startswith('<!--', position) else \
+            '?>' if text.startswith('<?', position) else None
+        end = text.find(closing, position) if closing else -1
+        if end < 0:
+            return []
+        position = end + len(closing or '')
+    return spaces
+
+
 class _Reader:
     """Read one document into the model."""
 
@@ -196,11 +220,15 @@ class _Reader:
                 warning.code == 'P102' for warning in self.warnings) else '<?xml version="1.0"?>'
         body = text.rstrip()
         end = text[len(body):].replace('\r\n', '\n') if body.endswith('>') else '\n'
-        gap = '\n'
-        if match is not None and declaration == match.group(1):
-            after = text[match.end(1):match.end(1) + 256]
-            gap = after[:len(after) - len(after.lstrip())].replace('\r\n', '\n') or '\n'
-        return Layout(unit, newline, quote, declaration, head, end, gap)
+        gap = '\n' if declaration else ''
+        between: tuple[str, ...] = ()
+        start = match.end(1) if match is not None and declaration == match.group(1) else \
+            0 if not declaration else None
+        if start is not None:
+            spaces = _spaces_before(text, start, len(list(root.itersiblings(preceding=True))))
+            if spaces:
+                gap, between = spaces[0], tuple(spaces[1:])
+        return Layout(unit, newline, quote, declaration, head, end, gap, between)
 
     def _attach(self, robot: Robot, block: Extension, joints: list[Joint]) -> None:
         reference = block.reference if block.tag == 'gazebo' else None
