@@ -71,6 +71,8 @@ def mujoco_findings(robot: Robot, findings: Findings, search_paths: list[Any],
         findings.add('M505', robot, f'robot {robot.name!r}', '/robot',
                      ' '.join(str(error).split()), PREFLIGHT_HINTS['M505'], 'robot')
     for line in dict.fromkeys(said):
+        if 'equal lower and upper limits' in line:
+            continue  # M503 says it, on the joint
         findings.add('M507', robot, f'robot {robot.name!r}', '/robot', line,
                      PREFLIGHT_HINTS['M507'], 'robot')
     if model is None:
