@@ -32,6 +32,7 @@ from typing import Any, TYPE_CHECKING
 from rcl_interfaces.msg import ParameterDescriptor, ParameterType, SetParametersResult
 import rclpy
 from rclpy.executors import ExternalShutdownException
+from rclpy.impl.implementation_singleton import rclpy_implementation
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
@@ -350,6 +351,10 @@ def main(args: list[str] | None = None) -> int:
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
+    except rclpy_implementation.RCLError:
+        if rclpy.ok():
+            raise
+        # Ctrl-C shut the context down while a timer was publishing: a normal stop
     except KNOWN_ERRORS as error:
         rclpy.logging.get_logger('urdfgenpy_publisher').error(one_line(error))
         return 1
