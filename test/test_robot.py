@@ -191,3 +191,21 @@ def test_remove_material_returns_it_and_forgets_it(ptu: Robot) -> None:
     assert [material.name for material in ptu.materials] == ['charcoal']
     with pytest.raises(KeyError, match="no material 'amber'"):
         ptu.get_material('amber')
+
+
+def test_rename_follows_every_reference_prefixed_follows() -> None:
+    # One mechanism for both: a rename reaches what prefixed() reaches (transmission
+    # elements naming the joint, plugin text naming the link), checked with lxml.
+    from lxml import etree
+    robot = Robot.from_urdf_string(
+        '<robot name="r"><link name="base_link"/><link name="cup"/>'
+        '<joint name="roll" type="continuous"><parent link="base_link"/><child link="cup"/>'
+        '</joint><transmission name="t"><rollJoint name="roll"/></transmission>'
+        '<gazebo><plugin name="p" filename="x.so"><frame_id>cup</frame_id></plugin></gazebo>'
+        '</robot>')
+    robot.rename_joint('roll', 'wrist_roll')
+    robot.rename_link('cup', 'gripper')
+    written = etree.fromstring(robot.to_urdf().encode())
+    assert written.find('transmission/rollJoint').get('name') == 'wrist_roll'
+    assert written.findtext('gazebo/plugin/frame_id') == 'gripper'
+    assert written.find('joint/child').get('link') == 'gripper'

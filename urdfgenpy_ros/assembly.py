@@ -78,6 +78,12 @@ def prefixed(robot: Robot, prefix: str, *, materials: bool = False) -> Robot:
     return clone
 
 
+def rename(robot: Robot, links: dict[str, str] | None = None,
+           joints: dict[str, str] | None = None) -> None:
+    """Rename links and joints of ``robot`` in place (old -> new); every reference follows."""
+    _rename(robot, _Renaming(links or {}, joints or {}))
+
+
 def _rename(robot: Robot, renaming: _Renaming) -> None:
     """Apply ``renaming`` to ``robot`` in place, every reference included."""
     for link in robot.links:

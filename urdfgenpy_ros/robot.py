@@ -26,7 +26,7 @@ from urdfgenpy_ros.errors import (
     ModelError, ModelTypeError, ReadWarning, SourceLocation, ValidationError)
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.geometry import Origin
-from urdfgenpy_ros.joint import Joint, JointMimic
+from urdfgenpy_ros.joint import Joint
 from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.preserved import Preserved
@@ -300,41 +300,20 @@ class Robot:
 
     def rename_link(self, old: str, new: str) -> Link:
         """Rename a link and every joint end and reference that names it."""
+        from urdfgenpy_ros.assembly import rename
         link = self.get_link(old)
         if new in self._links and new != old:
             raise ModelError(f'cannot rename link {old!r} to {new!r}: that name is taken')
-        link.name = checks.name('link', new)
-        self._links = {(new if key == old else key): value
-                       for key, value in self._links.items()}
-        for joint in self._joints.values():
-            if joint.parent == old:
-                joint.parent = new
-            if joint.child == old:
-                joint.child = new
-        self._rename_references(old, new, link.extensions)
-        # urdfdom's own <sensor> elements name the link they are on: <parent link="..."/>.
-        kept = self.extras.order if self.extras is not None and self.extras.order else []
-        for node in kept:
-            if getattr(node, 'tag', None) == 'sensor':
-                for parent in node.iter('parent'):
-                    if parent.get('link') == old:
-                        parent.set('link', new)
+        rename(self, links={old: checks.name('link', new)})
         return link
 
     def rename_joint(self, old: str, new: str) -> Joint:
         """Rename a joint and every mimic and reference that names it."""
+        from urdfgenpy_ros.assembly import rename
         joint = self.get_joint(old)
         if new in self._joints and new != old:
             raise ModelError(f'cannot rename joint {old!r} to {new!r}: that name is taken')
-        joint.name = checks.name('joint', new)
-        self._joints = {(new if key == old else key): value
-                        for key, value in self._joints.items()}
-        for other in self._joints.values():
-            mimic = other.mimic
-            if mimic is not None and mimic.joint == old:
-                other.mimic = JointMimic(new, mimic.multiplier, mimic.offset,
-                                         source=mimic.source, extras=mimic.extras)
-        self._rename_references(old, new, joint.extensions)
+        rename(self, joints={old: checks.name('joint', new)})
         return joint
 
     def rename_material(self, old: str, new: str) -> Material:
@@ -356,15 +335,6 @@ class Robot:
                                                source=visual.material.source,
                                                extras=visual.material.extras)
         return renamed
-
-    def _rename_references(self, old: str, new: str, owned: list[Extension]) -> None:
-        """Update blocks whose ``reference`` or ``<joint name>`` is ``old``."""
-        for block in (*self.extensions, *owned):
-            for element in block.element.iter():
-                if element.get('reference') == old:
-                    element.set('reference', new)
-                if element.tag == 'joint' and element.get('name') == old:
-                    element.set('name', new)
 
     # ---- checking ------------------------------------------------------------------
 
