@@ -222,21 +222,11 @@ def _xacro_value(value: object) -> str:
 
 
 def _from_function(file: _File, entry: _Mapping, target: str) -> Robot:
-    from urdfgenpy_ros.robot import Robot
-    module_name, _, name = target.partition(':')
-    line = file.at(entry, 'function')
+    from urdfgenpy_ros.model_source import robot_from_function
     try:
-        function = getattr(importlib.import_module(module_name), name)
-    except (ImportError, AttributeError, ValueError) as error:
-        raise file.error(line, 'function', f'cannot import {target!r}: {error} (write '
-                         'package.module:function, importable from here)') from None
-    result = function()
-    if isinstance(result, (str, bytes)):
-        result = Robot.from_urdf_string(result, target)
-    if not isinstance(result, Robot):
-        raise file.error(line, 'function', f'{target}() returned {type(result).__name__}, '
-                         'not a Robot or URDF text')
-    return result
+        return robot_from_function(target)
+    except UrdfgenpyError as error:
+        raise file.error(file.at(entry, 'function'), 'function', str(error)) from None
 
 
 def _module_file(target: str) -> list[str]:

@@ -67,16 +67,29 @@ def load_model(model: str, xacro_args: Sequence[str] = (),
                          'package.module:function')
 
 
-def _from_function(target: str) -> Robot:
+def robot_from_function(target: str) -> Robot:
+    """
+    Return the robot ``package.module:function`` builds (a Robot, or URDF text).
+
+    :raises UrdfgenpyError: when it cannot be imported or returns something else.
+    """
     module_name, _, function_name = target.partition(':')
     try:
         function = getattr(importlib.import_module(module_name), function_name)
-    except (ImportError, AttributeError) as error:
-        raise UrdfgenpyError(f"parameter 'model': cannot import {target!r}: {error}") from None
+    except (ImportError, AttributeError, ValueError) as error:
+        raise UrdfgenpyError(f'cannot import {target!r}: {error} (write '
+                             'package.module:function, importable from here)') from None
     result = function()
     if isinstance(result, Robot):
         return result
     if isinstance(result, (str, bytes)):
         return Robot.from_urdf_string(result, target)
-    raise UrdfgenpyError(f"parameter 'model': {target}() returned "
-                         f'{type(result).__name__}, not a Robot or URDF text')
+    raise UrdfgenpyError(f'{target}() returned {type(result).__name__}, not a Robot or '
+                         'URDF text')
+
+
+def _from_function(target: str) -> Robot:
+    try:
+        return robot_from_function(target)
+    except UrdfgenpyError as error:
+        raise UrdfgenpyError(f"parameter 'model': {error}") from None
