@@ -288,3 +288,20 @@ def test_what_mujoco_prints_becomes_findings_and_leaves_no_log(
     assert "M507 robot 'ghost_mimic': <mimic> on joint 'jb' ignored" in result.stdout
     assert 'WARNING' not in capfd.readouterr().err
     assert list(work.iterdir()) == []  # no MUJOCO_LOG.TXT
+
+
+def test_relative_file_and_mesh_paths_reach_mujoco(tmp_path: Path, monkeypatch) -> None:
+    mujoco = require_module('mujoco')
+    trimesh = require_module('trimesh')
+    from click.testing import CliRunner
+    from urdfgenpy_ros.cli import main
+    (tmp_path / 'robot').mkdir()
+    trimesh.creation.box((0.1, 0.1, 0.1)).export(tmp_path / 'robot' / 'cube.stl')
+    (tmp_path / 'robot' / 'cube.urdf').write_text(
+        '<robot name="cube"><link name="base_link"><inertial><mass value="1"/><inertia '
+        'ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial><collision>'
+        '<geometry><mesh filename="cube.stl"/></geometry></collision></link></robot>')
+    mujoco.MjModel.from_xml_path(str(tmp_path / 'robot' / 'cube.urdf'))  # MuJoCo reads it
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(main, ['check', '--engines', 'mujoco', 'robot/cube.urdf'])
+    assert ' M505 ' not in result.output and ' M506 ' not in result.output, result.output

@@ -141,8 +141,8 @@ def _check_tensor(inertial: Inertial, element: str, where: str, findings: Findin
                      'the link will ever move', 'inertia')
     elif small <= MINIMUM:
         findings.add('I202', inertial, element, where + '/inertia', problem,
-                     'every body has positive moments (MuJoCo refuses the model, even for a '
-                     'link that does not move, unless all six values are 0): compute the '
+                     'every body has positive moments (MuJoCo refuses the model; only a link '
+                     'that does not move may have six zeros): compute the '
                      'tensor from the geometry (Inertial.from_geometry) or from CAD',
                      'inertia')
     else:

@@ -126,7 +126,8 @@ def _compilable(robot: Robot, findings: Findings, search_paths: list[Any],
             where = f'{link_path(link.name)}/collision[{number}]/geometry/mesh'
             if isinstance(geometry, Mesh):
                 try:
-                    path = resolver.resolve(geometry.filename, base)
+                    # absolute: MuJoCo compiles in a folder of its own (see _quiet)
+                    path = resolver.resolve(geometry.filename, base).resolve()
                 except UrdfgenpyError as error:
                     findings.add('M506', robot.get_link(link.name), f'link {link.name!r}',
                                  where, f'collision mesh not found ({error}): MuJoCo refuses '
