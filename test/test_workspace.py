@@ -363,3 +363,43 @@ def test_an_unfound_find_is_one_line_naming_the_package(
     # and the next read, with the package found, is not disturbed by the failed one
     robot = Robot.from_xacro(ROBOT, search_paths=[PREFIX / 'share'])
     assert len(robot.included_files) == 2
+
+
+def _description_files() -> list[Path]:
+    """Every URDF and Xacro file at hand: fixtures, installed robots, the corpus."""
+    from registry_robots import robots
+    files = sorted((Path(__file__).parent / 'fixtures').rglob('*.urdf'))
+    files += sorted((Path(__file__).parent / 'fixtures').rglob('*.xacro'))
+    files += robots()
+    if os.environ.get('URDFGENPY_CORPUS') and Path(os.environ['URDFGENPY_CORPUS']).is_dir():
+        corpus = Path(os.environ['URDFGENPY_CORPUS'])
+        files += sorted(corpus.rglob('*.urdf')) + sorted(corpus.rglob('*.xacro'))
+    return files
+
+
+@pytest.mark.parametrize('text', [
+    # a prefix of another name bound to the xacro namespace
+    b'<robot name="r" xmlns:x="http://ros.org/wiki/xacro"><x:property name="a" value="1"/>'
+    b'</robot>',
+    b"<robot name='r' xmlns:x='http://www.ros.org/wiki/xacro'><link name='a' x:b='1'/></robot>",
+    # the default namespace is xacro's
+    b'<robot xmlns="http://ros.org/wiki/xacro" name="r"><macro name="m"/></robot>',
+    b'<robot name="r"><!-- ${x} --><link name="${p}"/></robot>',
+    b'<robot name="r" xmlns:xacro="http://ros.org/wiki/xacro"><!-- xacro: --><xacro:if '
+    b'value="1"/></robot>',
+])
+def test_xacro_in_less_usual_spellings_is_told(text: bytes) -> None:
+    assert xacro_evidence_in(text, 'r.urdf') is not None
+
+
+def test_quick_decision_agrees_with_the_full_look_on_every_file(monkeypatch) -> None:
+    """Files are decided 'not Xacro' without parsing; the full walk must say the same."""
+    from urdfgenpy_ros.formats import detect
+    files = _description_files()
+    assert len(files) > 20
+    quick = {path: xacro_evidence_in(path.read_bytes(), str(path)) for path in files}
+    monkeypatch.setattr(detect, '_may_be_xacro', lambda data: True)
+    full = {path: xacro_evidence_in(path.read_bytes(), str(path)) for path in files}
+    assert quick == full
+    assert any(found is None for found in full.values())
+    assert any(found is not None for found in full.values())

@@ -19,6 +19,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 import difflib
 from os import PathLike
+from pathlib import Path
 from typing import Any
 
 from urdfgenpy_ros import checks
@@ -358,9 +359,10 @@ class Robot:
         :raises ParseError: when the file is not a readable URDF (one line, located).
         """
         from urdfgenpy_ros.formats.detect import refuse_xacro
-        from urdfgenpy_ros.formats.urdf_read import read_urdf
-        refuse_xacro(path)  # one line naming Robot.from_xacro (X002)
-        return read_urdf(path)
+        from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
+        data = Path(path).read_bytes()
+        refuse_xacro(data, str(path))  # one line naming Robot.from_xacro (X002)
+        return read_urdf_bytes(data, str(path))
 
     @classmethod
     def from_urdf_string(cls, xml: str | bytes, file: str | None = None) -> Robot:

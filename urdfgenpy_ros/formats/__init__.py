@@ -65,10 +65,12 @@ def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
     if kind == 'sdf':
         raise ModelError(f'{path}: reading SDF is not supported (convert from URDF or Xacro)')
     if kind == 'urdf':
-        from urdfgenpy_ros.formats.detect import xacro_evidence
-        evidence = xacro_evidence(path)
+        from urdfgenpy_ros.formats.detect import xacro_evidence_in
+        from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
+        data = Path(path).read_bytes()
+        evidence = xacro_evidence_in(data, str(path))
         if evidence is None:
-            return Robot.from_urdf(path)
+            return read_urdf_bytes(data, str(path))
         robot = Robot.from_xacro(path, dict(mappings or {}), search_paths=list(search_paths))
         robot.read_warnings.insert(0, _read_as_xacro(evidence, mappings))
         return robot

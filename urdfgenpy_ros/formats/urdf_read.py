@@ -23,8 +23,6 @@ whatever nobody edited and everything the model does not hold.
 
 from __future__ import annotations
 
-from os import PathLike
-from pathlib import Path
 import re
 from typing import Any
 
@@ -318,9 +316,3 @@ def read_urdf_bytes(data: bytes, file: str | None = None) -> Robot:
         robot = reader.robot(root)
     robot.read_warnings = warnings
     return robot
-
-
-def read_urdf(path: str | PathLike[str]) -> Robot:
-    """Return the robot described by the URDF file at ``path``."""
-    file = Path(path)
-    return read_urdf_bytes(file.read_bytes(), str(path))
