@@ -22,6 +22,7 @@ tags: the reader records the unusual ones, the writer puts them back.
 
 from __future__ import annotations
 
+from itertools import islice
 import re
 from typing import Any
 
@@ -59,6 +60,14 @@ _TOKEN = re.compile(r'[^<]*+(?:<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<![^>]*>
                     r'(<[^\s<>/!?](?:[^>"\']++|"[^"]*"|\'[^\']*\')*+>)|<)(</)?', re.DOTALL)
 
 
+# A token found in source text: something that is no start tag (comment, CDATA, processing
+# instruction, declaration) or a start tag lxml would write otherwise (anything after the
+# part lxml writes alike, or ``<x></x>``). Start tags lxml writes alike are not matched.
+_UNUSUAL = re.compile(r'<(?:!--.*?-->|!\[CDATA\[.*?\]\]>|\?.*?\?>|![^>]*>|'
+                      r'(?![/!?])[^\s<>/]++(?: [^\s=<>]+="[^"<>]*")*+(?!/>|>(?!</))'
+                      r'(?:[^>"\']++|"[^"]*"|\'[^\']*\')*+>)', re.DOTALL)
+
+
 def unusual_start_tags(document: Any, text: str, start: int | None = None) -> SourceTags:
     """
     Return the source start tags of the document's elements that lxml would write otherwise.
@@ -74,21 +83,25 @@ def unusual_start_tags(document: Any, text: str, start: int | None = None) -> So
         if text.startswith(written[tag_end(written, 0):], tag_end(text, start)):
             return {}  # lxml writes all inside the root's start tag as the source has it
     found = _Recorded()
-    elements = None
-    index = 0
-    for plain, other, closed in _TOKEN.findall(text):
-        tag = plain or other
-        if not tag:
+    elements = document.iter(etree.Element)
+    index = taken = 0  # start tags seen before ``position``; elements taken from the tree
+    position = 0
+    for match in _UNUSUAL.finditer(text):
+        # Between two tokens every '<' opens a start tag or an end tag.
+        index += text.count('<', position, match.start()) - \
+            text.count('</', position, match.start())
+        position = match.end()
+        tag = match.group()
+        if tag[1] in '!?':
             continue
-        if other or (closed and plain[-2:] != '/>'):
-            if elements is None:
-                elements = [node for node in document.iter() if isinstance(node.tag, str)]
-            if index >= len(elements):
-                break
-            element = elements[index]
-            found[element] = (tag.replace('\r\n', '\n'),  # the writer puts the file's ends
-                              tuple(element.attrib.items()))
+        next(islice(elements, index - taken, index - taken), None)  # skip to the index-th
+        element = next(elements, None)
+        if element is None:
+            break
+        found[element] = (tag.replace('\r\n', '\n'),  # the writer puts the file's ends
+                          tuple(element.attrib.items()))
         index += 1
+        taken = index
     return found
 
 
