@@ -23,7 +23,10 @@ description packages installed from PyPI in this environment (``example-robot-da
 reads it. For each file and library the time is the median of ``--repeat`` samples, each
 sample looping until it lasts ``--sample`` seconds; the figure reported is the ratio to the
 bare lxml floor on the same file (parse, tostring, or both), summarised over files as
-median and 90th percentile.
+median and 90th percentile. "read a file" is what a user calls with a path (lxml's
+``etree.parse``, ``Robot.from_urdf``, yourdfpy's ``URDF.load``, urdf_parser_py's
+``URDF.from_xml_file``), on a copy of the file in a temporary folder, against
+``etree.parse``.
 
     python bench/bench_io.py [--corpus DIR] [--repeat 5] [--per-file]
 """
@@ -43,6 +46,7 @@ import shutil
 import site
 import statistics
 import subprocess
+import tempfile
 import time
 import tracemalloc
 from typing import Any, Callable
@@ -89,24 +93,30 @@ def corpus_files(corpus: Path) -> list[Path]:
                               timeout=30).returncode == 0]
 
 
-def _libraries() -> dict[str, tuple[Callable[[bytes], Any], Callable[[Any], Any]]]:
-    """Return each library's (read bytes, write model) pair."""
+Library = tuple[Callable[[bytes], Any], Callable[[Any], Any], Callable[[str], Any]]
+
+
+def _libraries() -> dict[str, Library]:
+    """Return each library's (read bytes, write model, read a file) functions."""
     from lxml import etree
     from urdf_parser_py.urdf import URDF as Parsed
     import yourdfpy
 
     from urdfgenpy_ros import Robot
 
-    def load(data: bytes) -> Any:
-        return yourdfpy.URDF.load(io.BytesIO(data), load_meshes=False, build_scene_graph=False,
+    def load(data: Any) -> Any:
+        return yourdfpy.URDF.load(data, load_meshes=False, build_scene_graph=False,
                                   build_collision_scene_graph=False)
 
     return {
-        'lxml (floor)': (lambda data: etree.fromstring(data), etree.tostring),
-        'urdfgenpy_ros': (Robot.from_urdf_string, lambda robot: robot.to_urdf()),
-        'yourdfpy': (_quiet(load), _quiet(lambda model: model.write_xml_string())),
+        'lxml (floor)': (lambda data: etree.fromstring(data), etree.tostring, etree.parse),
+        'urdfgenpy_ros': (Robot.from_urdf_string, lambda robot: robot.to_urdf(),
+                          Robot.from_urdf),
+        'yourdfpy': (_quiet(lambda data: load(io.BytesIO(data))),
+                     _quiet(lambda model: model.write_xml_string()), _quiet(load)),
         'urdf_parser_py': (_quiet(Parsed.from_xml_string),
-                           _quiet(lambda model: model.to_xml_string())),
+                           _quiet(lambda model: model.to_xml_string()),
+                           _quiet(Parsed.from_xml_file)),
     }
 
 
@@ -145,45 +155,65 @@ def main() -> None:
     libraries = _libraries()
     files = (corpus_files(args.corpus) if args.corpus else []) + package_files()
     data = {path: re.sub(rb'^\s*<\?xml[^>]*\?>', b'', path.read_bytes()) for path in files}
+    folder = Path(tempfile.mkdtemp(prefix='bench_io_'))
+    copies = {}  # each file as read (declaration dropped), for the libraries' file readers
+    for number, path in enumerate(files):
+        copies[path] = str(folder / f'{number}_{path.name}')
+        Path(copies[path]).write_bytes(data[path])
     usable = []
+    unreadable: dict[str, set[Path]] = {name: set() for name in libraries}  # as a file
     for path in files:
         try:
-            for read, write in libraries.values():
+            for read, write, _ in libraries.values():
                 write(read(data[path]))
             usable.append(path)
         except Exception as error:  # noqa: B902 - a library failing excludes the file
             print(f'left out {path.name}: {type(error).__name__}')
+            continue
+        for name, (_, _, read_file) in libraries.items():
+            try:
+                read_file(copies[path])
+            except Exception:  # noqa: B902 - left out of that library's file column
+                unreadable[name].add(path)
+    kinds = ('read', 'write', 'read+write', 'read a file')
     ratios: dict[str, dict[str, list[float]]] = {
-        name: {'read': [], 'write': [], 'read+write': []} for name in libraries}
+        name: {kind: [] for kind in kinds} for name in libraries}
     rows = []
     for path in usable:
         text = data[path]
         times = {}
-        for name, (read, write) in libraries.items():
+        for name, (read, write, read_file) in libraries.items():
             model = read(text)
             times[name] = (seconds(lambda: read(text), args.repeat, args.sample),
                            seconds(lambda: write(model), args.repeat, args.sample),
-                           seconds(lambda: write(read(text)), args.repeat, args.sample))
+                           seconds(lambda: write(read(text)), args.repeat, args.sample),
+                           seconds(lambda: read_file(copies[path]), args.repeat, args.sample)
+                           if path not in unreadable[name] else float('nan'))
         floor = times['lxml (floor)']
         for name, figures in times.items():
-            for kind, value, base in zip(('read', 'write', 'read+write'), figures, floor):
-                ratios[name][kind].append(value / base)
+            for kind, value, base in zip(kinds, figures, floor):
+                if value == value:  # not nan
+                    ratios[name][kind].append(value / base)
         rows.append((path, len(text), times))
     links = sum(text.count(b'<link') for text in data.values())
     print(f'## {len(usable)} files ({sum(size for _, size, _ in rows) // 1024} KiB, about '
           f'{links} links), ratio to lxml per file\n')
-    print('| library | read median | read p90 | write median | write p90 | '
-          'read+write median | read+write p90 |\n|---|---:|---:|---:|---:|---:|---:|')
+    print('| library | ' + ' | '.join(f'{kind} median | {kind} p90' for kind in kinds) +
+          ' |\n|---|' + '---:|' * (2 * len(kinds)))
     for name, kinds in ratios.items():
         cells = ' | '.join(f'{statistics.median(values):.1f}x | {_p90(values):.1f}x'
                            for values in kinds.values())
         print(f'| {name} | {cells} |')
+    for name, paths in unreadable.items():
+        if paths:
+            print(f'\n{name} fails to read {len(paths)} of the files from a file (its "read a '
+                  f'file" figures are over the rest): {", ".join(sorted(p.name for p in paths))}')
     if args.per_file:
         print('\n| file | KiB | ' + ' | '.join(f'{name} read/write ms' for name in libraries)
               + ' |\n|---|---:|' + '---:|' * len(libraries))
         for path, size, times in rows:
             cells = ' | '.join(f'{read * 1e3:.3f} / {write * 1e3:.3f}'
-                               for read, write, _ in times.values())
+                               for read, write, _, _ in times.values())
             print(f'| {path.name} | {size // 1024} | {cells} |')
     from urdfgenpy_ros import Robot
     gc.collect()
@@ -192,6 +222,7 @@ def main() -> None:
     current = tracemalloc.get_traced_memory()[0]
     tracemalloc.stop()
     count = sum(len(robot.links) for robot in kept)
+    shutil.rmtree(folder)
     print(f'\nMemory held by the {len(kept)} read robots: {current / 2 ** 20:.2f} MiB for '
           f'{count} links = {current / count / 1024:.1f} KiB per link (tracemalloc).')
 
