@@ -56,3 +56,17 @@ def test_copyright() -> None:
         assert (REPO / 'LICENSE').read_text().lstrip().startswith('Apache License')
     else:
         assert main(argv=['.', 'test']) == 0, 'Found errors'
+
+
+def test_only_robot_py_touches_the_robots_own_tables() -> None:
+    """Links, joints and materials are reached through Robot's methods everywhere else."""
+    import ast
+    private = {'_links', '_joints', '_materials'}
+    found = []
+    for path in sorted((REPO / 'urdfgenpy_ros').rglob('*.py')):
+        if path.name == 'robot.py' and path.parent.name == 'urdfgenpy_ros':
+            continue
+        for node in ast.walk(ast.parse(path.read_text(), str(path))):
+            if isinstance(node, ast.Attribute) and node.attr in private:
+                found.append(f'{path.relative_to(REPO)}:{node.lineno} .{node.attr}')
+    assert not found, found

@@ -100,10 +100,9 @@ def _rename(robot: Robot, renaming: _Renaming) -> None:
                                      mimic.offset, source=mimic.source, extras=mimic.extras)
         for sensor in joint.sensors:
             _rename_sensor(sensor, renaming)
-    robot._links = {link.name: link for link in robot._links.values()}
-    robot._joints = {joint.name: joint for joint in robot._joints.values()}
+    robot._reindex()
     if renaming.materials:
-        _rename_materials(robot, renaming.materials)
+        robot._rename_materials(renaming.materials)
     for block in _blocks(robot):
         _rename_block(block.element, renaming)
     extras = robot.extras
@@ -170,22 +169,6 @@ def _definitions(robot: Robot) -> list[Material]:
             if material is not None and not material.is_reference:
                 found.setdefault(material.name, material)
     return list(found.values())
-
-
-def _rename_materials(robot: Robot, names: dict[str, str]) -> None:
-    def renamed(material: Material) -> Material:
-        return Material(names[material.name], material.rgba, material.texture,
-                        source=material.source, extras=material.extras)
-
-    new = {id(material): renamed(material) for material in robot.materials
-           if material.name in names}
-    robot._materials = {names.get(name, name): new.get(id(material), material)
-                        for name, material in robot._materials.items()}
-    for link in robot.links:
-        for visual in link.visuals:
-            material = visual.material
-            if material is not None and material.name in names:
-                visual.material = new.get(id(material)) or renamed(material)
 
 
 def attach(base: Robot, part: Robot, at: str, origin: Origin | None = None,
@@ -263,7 +246,7 @@ def _merge_materials(base: Robot, piece: Robot, prefix: str) -> None:
             names.add(new)
             renames[material.name] = new
     if renames:
-        _rename_materials(piece, renames)
+        piece._rename_materials(renames)
     for material in piece.materials:
         if base.has_material(material.name):
             shared = base.get_material(material.name)

@@ -16,7 +16,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 import difflib
 from os import PathLike
 from pathlib import Path
@@ -319,23 +319,37 @@ class Robot:
 
     def rename_material(self, old: str, new: str) -> Material:
         """Rename a robot-level material and every visual that uses it."""
-        material = self.get_material(old)
+        self.get_material(old)
         if new in self._materials and new != old:
             raise ModelError(f'cannot rename material {old!r} to {new!r}: name taken')
-        renamed = Material(new, material.rgba, material.texture,
-                           source=material.source, extras=material.extras)
-        self._materials = {(new if key == old else key): (renamed if key == old else value)
-                           for key, value in self._materials.items()}
+        self._rename_materials({old: checks.name('material', new)})
+        return self.get_material(new)
+
+    def _rename_materials(self, names: Mapping[str, str]) -> None:
+        """
+        Rename materials, old name to new, robot-level or defined by visuals.
+
+        The robot's list keeps its order; a visual sharing a definition shares the renamed
+        one; a visual's own material of a renamed name is renamed (what it read is kept).
+        """
+        def renamed(material: Material) -> Material:
+            return Material(names[material.name], material.rgba, material.texture,
+                            source=material.source, extras=material.extras)
+
+        new = {id(material): renamed(material) for material in self._materials.values()
+               if material.name in names}
+        self._materials = {names.get(name, name): new.get(id(material), material)
+                           for name, material in self._materials.items()}
         for link in self._links.values():
             for visual in link.visuals:
-                if visual.material is material:  # shares the definition: keeps sharing
-                    visual.material = renamed
-                elif visual.material is not None and visual.material.name == old:
-                    visual.material = Material(new, visual.material.rgba,
-                                               visual.material.texture,
-                                               source=visual.material.source,
-                                               extras=visual.material.extras)
-        return renamed
+                material = visual.material
+                if material is not None and material.name in names:
+                    visual.material = new.get(id(material)) or renamed(material)
+
+    def _reindex(self) -> None:
+        """Key links and joints by their names again, after they were renamed in place."""
+        self._links = {link.name: link for link in self._links.values()}
+        self._joints = {joint.name: joint for joint in self._joints.values()}
 
     # ---- checking ------------------------------------------------------------------
 
