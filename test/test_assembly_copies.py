@@ -188,4 +188,5 @@ def test_transmission_elements_naming_joints_follow_and_unnamed_colours_stay() -
     assert [item.get('name') for item in written.find('transmission')
             if item.tag.endswith('Joint')] == ['left_roll', 'left_roll']
     assert joints == {'left_roll'}
+    assert written.find('transmission/rightActuator').get('name') == 'left_r_motor'
     assert [m.get('name') for m in written.iter('material')] == ['']  # unnamed: unchanged

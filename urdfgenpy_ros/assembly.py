@@ -144,8 +144,9 @@ def _rename_block(root: Any, renaming: _Renaming) -> None:
         # <rollJoint name>, <gap_joint name>, <passive_joint name>)
         if name in renaming.joints and (element.tag == 'joint' or root.tag == 'transmission'):
             element.set('name', renaming.joints[name])
-        elif prefix and element.tag in _NAMED_INSIDE and name:
-            element.set('name', prefix + name)
+        elif prefix and name and (element.tag in _NAMED_INSIDE or (
+                root.tag == 'transmission' and element.tag.endswith('Actuator'))):
+            element.set('name', prefix + name)  # PR2's <rightActuator>, <leftActuator> too
         link = element.get('link')
         if element.tag in ('parent', 'child') and link in renaming.links:
             element.set('link', renaming.links[link])
