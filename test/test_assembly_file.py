@@ -92,6 +92,9 @@ def test_assembly_file_is_found_by_content_and_equals_python(tmp_path: Path) -> 
      '(at: base_link)'),
     ('parts:\n  - file: rover.urdf\n  - file: rover.urdf\n    at: chassis\n',
      ':3:5: error A001', "'prefix': cannot attach 'rover' to 'rover': 9 names taken"),
+    ('parts:\n  - file: rover.urdf\n  - file: rover.urdf\n    at: chassis\n    prefix: b_\n'
+     '    joint_name: mast_joint\n', ':6:5: error A001', "'joint_name': cannot attach 'rover' "
+     "to 'rover': 1 name taken"),
     ('parts:\n  - file: rover.urdf\n  - file: rover.urdf\n    at: chasis\n    prefix: b_\n',
      ':4:5: error A001', "link 'chasis' is not in 'rover' (did you mean 'chassis'?)"),
     ('parts:\n  - file: nowhere.urdf\n', ':2:5: error A001',

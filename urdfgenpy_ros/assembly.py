@@ -192,9 +192,13 @@ def attach(base: Robot, part: Robot, at: str, origin: Origin | None = None,
     taken = _clashes(base, piece, name)
     if taken:
         shown = ', '.join(taken[:8]) + (f' and {len(taken) - 8} more' if len(taken) > 8 else '')
-        hint = f"prefix='{part.name}_'" if not prefix else 'another prefix'
-        raise ModelError(f'{where}: {len(taken)} names taken: {shown} (give the part {hint},'
-                         ' or pass joint_name= for the joint that attaches it)')
+        if len(taken) == 1 and taken[0].endswith('(the joint that attaches the part)'):
+            fix = 'choose another joint_name'
+        else:
+            hint = f"prefix='{part.name}_'" if not prefix else 'another prefix'
+            fix = f'give the part {hint}, or pass joint_name= for the joint that attaches it'
+        count = '1 name' if len(taken) == 1 else f'{len(taken)} names'
+        raise ModelError(f'{where}: {count} taken: {shown} ({fix})')
     mount = Joint(name, joint_type, at, root, origin=origin or Origin(), **joint_options)
     _merge_materials(base, piece, prefix or f'{part.name}_')
     for link in piece.links:

@@ -253,8 +253,20 @@ def _attach(file: _File, entry: _Mapping, robot: Robot, part: Robot) -> None:
     try:
         robot.attach(part, at, origin, prefix, joint_name)
     except ModelError as error:
-        key = 'at' if not robot.has_link(at) else 'prefix'
+        key = 'at' if not robot.has_link(at) else \
+            'joint_name' if _only_joint_name_taken(robot, part, prefix, joint_name) else 'prefix'
         raise file.error(file.at(entry, key), key, str(error)) from None
+
+
+def _only_joint_name_taken(robot: Robot, part: Robot, prefix: str,
+                           joint_name: str | None) -> bool:
+    """Return whether a given ``joint_name`` is taken while the prefixed part's names are not."""
+    if joint_name is None:
+        return False
+    joints = {prefix + joint.name for joint in part.joints}
+    return (robot.has_joint(joint_name) or joint_name in joints) and not any(
+        robot.has_link(prefix + link.name) for link in part.links) and not any(
+        robot.has_joint(name) for name in joints)
 
 
 def _origin(file: _File, entry: _Mapping) -> Origin:
