@@ -141,7 +141,7 @@ def test_reload_publishes_a_valid_change_and_keeps_the_last_good_model(
     robot.to_urdf(model)
     response = graph.call(Trigger, '/urdfgenpy_publisher/reload')
     assert response.success, response.message
-    assert graph.spin_until(lambda: len(descriptions) == 2, 10)
+    assert graph.spin_until(lambda: len(descriptions) == 2, 30)
     assert 'upper="2"' in descriptions[-1].data
     model.write_text(model.read_text().replace('upper="2"', 'upper="-9"'))  # J104
     response = graph.call(Trigger, '/urdfgenpy_publisher/reload')
@@ -161,7 +161,7 @@ def test_watch_reloads_when_an_included_file_changes(graph: Graph, tmp_path: Pat
     time.sleep(0.05)
     included.write_text(included.read_text().replace('name="joint_${index}"',
                                                      'name="axis_${index}"'))
-    assert graph.spin_until(lambda: len(descriptions) == 2, 10)
+    assert graph.spin_until(lambda: len(descriptions) == 2, 30)
     assert '<joint name="axis_3" type="revolute">' in descriptions[-1].data
 
 
