@@ -42,6 +42,8 @@ class FileReport:
     suppressed: list[tuple[ValidationError, str]] = field(default_factory=list)
     repairs: list[Repair] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    refused: str | None = None
+    """Why --fix left the file alone though it had repairs (Xacro, assembly, DH table)."""
 
 
 def json_report(reports: list[FileReport]) -> str:
@@ -56,6 +58,7 @@ def json_report(reports: list[FileReport]) -> str:
                                for finding, kind in report.suppressed]
         entry['fixed'] = [repair.as_dict() for repair in report.repairs]
         entry['notes'] = report.notes
+        entry['not_fixed'] = report.refused
         files.append(entry)
     every = [finding for report in reports for finding in report.findings]
     return json.dumps({
@@ -64,7 +67,8 @@ def json_report(reports: list[FileReport]) -> str:
         'warnings': sum(f.severity is Severity.WARNING for f in every),
         'unreadable': sum(report.error is not None for report in reports),
         'suppressed': sum(len(report.suppressed) for report in reports),
-        'fixed': sum(len(report.repairs) for report in reports)}, indent=2)
+        'fixed': sum(len(report.repairs) for report in reports),
+        'not_fixed': sum(report.refused is not None for report in reports)}, indent=2)
 
 
 def _uri(path: str) -> tuple[str, bool]:
@@ -120,7 +124,7 @@ def sarif_report(reports: list[FileReport]) -> str:
     Rule ids are the finding codes (help: the hint), results carry file, line and column
     (the element path as logical location); suppressed findings are results with a
     suppression (``inSource`` for a comment, ``external`` for ``--ignore``), and a file
-    that could not be read is a tool notification.
+    that could not be read (or that --fix did not rewrite) is a tool notification.
     """
     everything = [finding for report in reports for finding in report.findings]
     everything += [finding for report in reports for finding, _ in report.suppressed]
@@ -149,12 +153,14 @@ def sarif_report(reports: list[FileReport]) -> str:
             results.append(result)
     notifications = []
     for report in reports:
-        if report.error is not None:
+        for text in (report.error, report.refused):
+            if text is None:
+                continue
             uri, relative = _uri(report.path)
             artifact: dict[str, object] = {'uri': uri}
             if relative:
                 artifact['uriBaseId'] = '%SRCROOT%'
-            notifications.append({'level': 'error', 'message': {'text': report.error},
+            notifications.append({'level': 'error', 'message': {'text': text},
                                   'locations': [{'physicalLocation': {
                                       'artifactLocation': artifact}}]})
     invocation = {'executionSuccessful': not notifications,
@@ -174,8 +180,8 @@ def junit_report(reports: list[FileReport], strict: bool) -> str:
     Return JUnit XML: a test suite per file, a test case per finding.
 
     An error is a failure (a warning too with ``strict``; otherwise a passing case whose
-    output is the warning), a suppressed finding is skipped, an unreadable file is an
-    error, and a clean file is one passing case.
+    output is the warning), a suppressed finding is skipped, an unreadable file (or one
+    --fix did not rewrite) is an error, and a clean file is one passing case.
     """
     suites = ElementTree.Element('testsuites', name='urdfgenpy check')
     totals = {'tests': 0, 'failures': 0, 'errors': 0, 'skipped': 0}
@@ -191,6 +197,8 @@ def junit_report(reports: list[FileReport], strict: bool) -> str:
                           str(finding.severity), str(finding)))
         for finding, kind in report.suppressed:
             cases.append((_case_name(finding), 'skipped', kind, str(finding)))
+        if report.refused is not None:
+            cases.append(('fix', 'error', 'not fixed', report.refused))
         if not cases:
             cases.append(('no findings', None, '', ''))
         for name, outcome, outcome_type, text in cases:
