@@ -36,6 +36,7 @@ from urdfgenpy_ros.validation.fix import carry_over, fix, LIMIT_FIELDS
 from urdfgenpy_ros.validation.fix import missing_defaults
 from urdfgenpy_ros.validation.preflight import ENGINES, preflight
 from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions
+from urdfgenpy_ros.validation.xacro_source import EXPANDED, in_source
 
 
 @dataclass(frozen=True)
@@ -132,7 +133,7 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
         report = _check_file(path, mappings, options)
         reports.append(report)
         lines += [str(repair).replace(': fixed ', f': {done} ', 1) for repair in report.repairs]
-        lines += [*(str(finding) for finding in report.findings), *report.notes]
+        lines += [*(_line(finding) for finding in report.findings), *report.notes]
         lines += [report.error] if report.error is not None else []
         lines += [report.refused] if report.refused is not None else []  # after its findings
         if text and report_file is None:  # as it goes; the diff of --dry-run owns stdout
@@ -163,11 +164,19 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
     raise SystemExit(2 if unreadable or refused else 1 if failed else 0)
 
 
+def _line(finding: ValidationError) -> str:
+    """Return the finding's line, led by its file also when it has no line number."""
+    text, where = str(finding), finding.location
+    if where.line is None and where.file and where.path:  # made by a Xacro macro
+        return f'{where.file}: {text.removeprefix(f"{where}: ")}'
+    return text
+
+
 def _findings(robot: Robot, options: _Options) -> list[ValidationError]:
     found = robot.validate(check_meshes=options.check_meshes,
                            search_paths=options.package_paths)
     if options.engines:
-        found += preflight(robot, options.engines, options.package_paths)
+        found += in_source(preflight(robot, options.engines, options.package_paths), robot)
     return found
 
 
@@ -177,9 +186,10 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
     try:
         robot = load(path, mappings, options.package_paths)
         suppressions = read_suppressions(robot, options.ignored)
-        report.notes += [f'{path}:{line}: warning: the suppression comment names {word!r}, '
-                         'which is not a finding code: it silences nothing (codes look like '
-                         'I205)' for line, word in suppressions.unknown]
+        expanded = robot.source is not None and (robot.source.file or '').endswith(EXPANDED)
+        report.notes += [f'{path}{"" if expanded else f":{line}"}: warning: the suppression '
+                         f'comment names {word!r}, which is not a finding code: it silences '
+                         'nothing (codes look like I205)' for line, word in suppressions.unknown]
         report.findings, report.suppressed = suppressions.split(_findings(robot, options))
         if not options.fix:
             return report

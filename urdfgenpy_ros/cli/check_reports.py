@@ -27,6 +27,7 @@ from xml.etree import ElementTree
 from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.validation.codes import CODES, PREFLIGHT_HINTS
 from urdfgenpy_ros.validation.fix import Repair
+from urdfgenpy_ros.validation.xacro_source import EXPANDED
 
 SARIF_SCHEMA = 'https://json.schemastore.org/sarif-2.1.0.json'
 _LEVEL = {Severity.ERROR: 'error', Severity.WARNING: 'warning'}
@@ -81,13 +82,10 @@ def _uri(path: str) -> tuple[str, bool]:
     return quote(relative.as_posix()), True
 
 
-EXPANDED = ' (expanded)'  # how a location in an expanded Xacro names its file
-
-
 def _location(finding: ValidationError, fallback: str) -> dict[str, object]:
     where = finding.location
     file = where.file or fallback
-    expanded = file.endswith(EXPANDED)  # its lines are the expansion's, not the file's
+    expanded = file.endswith(EXPANDED)  # made by Xacro: no line of the file (xacro_source)
     uri, relative = _uri(file[:-len(EXPANDED)] if expanded else file)
     artifact: dict[str, object] = {'uri': uri}
     if relative:
@@ -104,10 +102,9 @@ def _location(finding: ValidationError, fallback: str) -> dict[str, object]:
 
 
 def _message(finding: ValidationError) -> str:
-    where = finding.location
-    line = (f' (line {where.line} of the expanded Xacro)'
-            if (where.file or '').endswith(EXPANDED) and where.line else '')
-    return f'{finding.element}: {finding.message} ({finding.hint}){line}'
+    made = (' (made by a Xacro macro or expression: line 1 stands for the file)'
+            if (finding.location.file or '').endswith(EXPANDED) else '')
+    return f'{finding.element}: {finding.message} ({finding.hint}){made}'
 
 
 def _version() -> str:
