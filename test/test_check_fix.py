@@ -23,6 +23,7 @@ the repaired lines; check_urdf and MuJoCo accept what they refused for those cod
 from __future__ import annotations
 
 import difflib
+import json
 import math
 from pathlib import Path
 import re
@@ -159,10 +160,36 @@ def test_limits_are_only_filled_in_from_defaults_the_user_gives(key: str,
     path.write_text(broken(key))
     result = CliRunner().invoke(main, ['check', '--fix', str(path)])
     assert path.read_text() == broken(key) and ': fixed ' not in result.stdout
+    assert f"{path}: {key} not fixed for joint 'wrist': --limit-default has no " in (
+        result.stdout)  # without any: what to give
     partial = ['--limit-default', 'effort=3,velocity=2'] if key == 'J103' else [
         '--limit-default', 'effort=3']
-    CliRunner().invoke(main, ['check', '--fix', *partial, str(path)])
+    result = CliRunner().invoke(main, ['check', '--fix', *partial, str(path)])
     assert path.read_text() == broken(key)  # J103 needs all four, J106 the zero one
+    lines = result.stdout.splitlines()
+    missing = ('lower, upper (', 'lower=...,upper=...)') if key == 'J103' else (
+        'positive velocity (', 'velocity=...)')
+    (line,) = [line for line in lines if ' not fixed ' in line]
+    assert line.startswith(f"{path}: {key} not fixed for joint 'wrist': --limit-default has "
+                           f'no {missing[0]}') and line.endswith(missing[1])
+    assert lines.index(line) > lines.index(next(x for x in lines if f' {key} ' in x))
+
+
+def test_limit_defaults_repair_what_they_can_and_name_what_is_missing(tmp_path: Path) -> None:
+    # two joints: one lacks its <limit> (J103), the other has a zero velocity (J106)
+    text = broken('J103').replace('</robot>', (
+        '  <link name="tool"/>\n  <joint name="tool_joint" type="prismatic">\n'
+        '    <parent link="arm"/>\n    <child link="tool"/>\n'
+        '    <limit lower="0" upper="0.1" effort="1" velocity="0"/>\n  </joint>\n</robot>'))
+    path = tmp_path / 'two.urdf'
+    path.write_text(text)
+    result = CliRunner().invoke(main, ['check', '--fix', '--limit-default', 'velocity=2',
+                                       str(path)])
+    assert "fixed J106 joint 'tool_joint': <limit> velocity 2 " in result.stdout
+    joints = {joint.name: joint for joint in load_yourdfpy(path).joints}
+    assert joints['tool_joint'].limit.velocity == 2.0 and joints['wrist'].limit is None
+    assert f"{path}: J103 not fixed for joint 'wrist': --limit-default has no lower, upper, " \
+        'effort (' in result.stdout
 
 
 def test_dry_run_prints_the_diff_and_writes_nothing(tmp_path: Path) -> None:
@@ -204,9 +231,52 @@ def test_xacro_is_not_fixed_and_says_why(tmp_path: Path) -> None:
         path.write_text(text)
         result = CliRunner().invoke(main, ['check', '--fix', str(path)])
         assert path.read_text() == text
-        assert result.exit_code == 1 and ' error J104 ' in result.stdout
-        (note,) = [line for line in result.stdout.splitlines() if 'not fixed' in line]
+        assert result.exit_code == 2 and ' error J104 ' in result.stdout
+        lines = result.stdout.splitlines()
+        (note,) = [line for line in lines if 'not fixed' in line]
         assert note.startswith(f'{path}: not fixed: it is Xacro')
+        assert lines[-1] == note  # after the findings it refers to
+
+
+def _assembly(tmp_path: Path) -> tuple[Path, dict[Path, bytes]]:
+    """Write an assembly whose arm part has a J104; return it and every file's bytes."""
+    (tmp_path / 'arm.urdf').write_text(broken('J104'))
+    (tmp_path / 'base.urdf').write_text(
+        '<?xml version="1.0"?>\n<robot name="base">\n  <link name="base"/>\n</robot>\n')
+    path = tmp_path / 'rover.assembly.yaml'
+    path.write_text('parts:\n  - file: base.urdf\n  - file: arm.urdf\n    at: base\n'
+                    '    prefix: arm_\n')
+    return path, {item: item.read_bytes() for item in tmp_path.iterdir()}
+
+
+@pytest.mark.parametrize('dry_run', [[], ['--dry-run']])
+def test_an_assembly_file_is_not_fixed_and_names_where_to_fix(dry_run: list[str],
+                                                              tmp_path: Path) -> None:
+    path, files = _assembly(tmp_path)
+    result = CliRunner().invoke(main, ['check', '--fix', *dry_run, str(path)])
+    assert {item: item.read_bytes() for item in tmp_path.iterdir()} == files
+    assert result.exit_code == 2 and 'please report' not in result.output
+    lines = (result.stderr if dry_run else result.stdout).splitlines()
+    (finding,) = [line for line in lines if ' J104 ' in line]
+    assert finding.startswith(f'{tmp_path / "arm.urdf"}:')  # where to fix it: the part
+    (note,) = [line for line in lines if 'not fixed' in line]
+    assert note.startswith(f'{path}: not fixed: it is an assembly file')
+    assert lines.index(note) > lines.index(finding)  # after the finding it refers to
+    assert not dry_run or result.stdout == ''  # no diff
+    assert CliRunner().invoke(main, ['check', str(path)]).exit_code == 1  # without --fix
+    report = json.loads(CliRunner().invoke(main, ['check', '--fix', '--format', 'json',
+                                                  str(path)]).stdout)
+    assert report['not_fixed'] == 1 and report['files'][0]['not_fixed'] == note
+
+
+def test_a_dh_table_is_not_fixed(tmp_path: Path) -> None:
+    path = tmp_path / 'arm.csv'
+    text = ('# convention: standard\njoint,a,alpha,d,theta_offset,type,lower,upper\n'
+            'shoulder,0,0,0.1,0,revolute,1,-1\n')
+    path.write_text(text)
+    result = CliRunner().invoke(main, ['check', '--fix', str(path)])
+    assert result.exit_code == 2 and path.read_text() == text
+    assert result.stdout.splitlines()[-1].startswith(f'{path}: not fixed: it is a DH table')
 
 
 def test_the_fixed_file_keeps_crlf_and_comments(tmp_path: Path) -> None:

@@ -100,16 +100,28 @@ def test_sarif_to_a_file_and_ignore_is_an_external_suppression(files, tmp_path: 
     assert finding['suppressions'] == [{'kind': 'external'}] and finding['level'] == 'error'
 
 
-def test_sarif_of_an_expanded_xacro_names_the_file(tmp_path: Path) -> None:
+@pytest.mark.parametrize('macro', [False, True])
+def test_sarif_of_a_xacro_names_the_file_and_only_a_source_line(
+        macro: bool, tmp_path: Path) -> None:
+    text = broken('J104').replace('<robot name="fixture">', '<robot name="fixture" '
+                                  'xmlns:xacro="http://www.ros.org/wiki/xacro">')
+    if macro:  # the joint is made by a macro: no line of the file is its
+        text = text.replace('<joint name="wrist"', '<xacro:macro name="m" params="n">\n'
+                            '  <joint name="${n}"').replace('</robot>', '')
+        end = text.rindex('</joint>') + len('</joint>')
+        text = text[:end] + '\n</xacro:macro>\n<xacro:m n="wrist"/>\n</robot>\n'
     path = tmp_path / 'arm.urdf.xacro'
-    path.write_text(broken('J104').replace('<robot name="fixture">', '<robot name="fixture" '
-                                           'xmlns:xacro="http://www.ros.org/wiki/xacro">'))
+    path.write_text(text)
     log = json.loads(_run(tmp_path, '--format', 'sarif', str(path)).stdout)
     (result,) = log['runs'][0]['results']
     physical = result['locations'][0]['physicalLocation']
     assert physical['artifactLocation']['uri'] == 'arm.urdf.xacro'
-    assert physical['region'] == {'startLine': 1}
-    assert 'of the expanded Xacro' in result['message']['text']
+    if macro:
+        assert physical['region'] == {'startLine': 1}
+    else:
+        line = text.splitlines().index('  <joint name="wrist" type="revolute">') + 1
+        assert physical['region'] == {'startLine': line, 'startColumn': 3}
+    assert ('line 1 stands for the file' in result['message']['text']) == macro
 
 
 def test_junit_parses_with_junitparser(files, tmp_path: Path) -> None:

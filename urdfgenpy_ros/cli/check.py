@@ -24,16 +24,19 @@ import tempfile
 
 import click
 
+from urdfgenpy_ros.assembly_file import is_assembly
 from urdfgenpy_ros.cli._options import input_options, parse_mappings
 from urdfgenpy_ros.cli.check_reports import FileReport, json_report, junit_report
 from urdfgenpy_ros.cli.check_reports import sarif_report
 from urdfgenpy_ros.errors import Severity, ValidationError
-from urdfgenpy_ros.formats import load
+from urdfgenpy_ros.formats import DH_SUFFIXES, load
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.fix import carry_over, fix, LIMIT_FIELDS
+from urdfgenpy_ros.validation.fix import missing_defaults
 from urdfgenpy_ros.validation.preflight import ENGINES, preflight
 from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions
+from urdfgenpy_ros.validation.xacro_source import EXPANDED, in_source
 
 
 @dataclass(frozen=True)
@@ -111,7 +114,9 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
     Validate URDF and Xacro FILEs (Xacro arguments as name:=value).
 
     Exit status: 0 clean, 1 errors found (or warnings, with --strict), 2 a file could not
-    be read. `<!-- urdfgenpy: ignore CODE -->` before an element silences CODE for it,
+    be read, or --fix had repairs for a file it does not rewrite (Xacro, an assembly file,
+    a DH table: the line after its findings says what to do).
+    `<!-- urdfgenpy: ignore CODE -->` before an element silences CODE for it,
     `<!-- urdfgenpy: ignore-file CODE -->` at the top for the whole file.
     """
     if dry_run and not repair:
@@ -128,8 +133,9 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
         report = _check_file(path, mappings, options)
         reports.append(report)
         lines += [str(repair).replace(': fixed ', f': {done} ', 1) for repair in report.repairs]
-        lines += [*report.notes, *(str(finding) for finding in report.findings)]
+        lines += [*(_line(finding) for finding in report.findings), *report.notes]
         lines += [report.error] if report.error is not None else []
+        lines += [report.refused] if report.refused is not None else []  # after its findings
         if text and report_file is None:  # as it goes; the diff of --dry-run owns stdout
             for line in lines:
                 click.echo(line, err=dry_run)
@@ -147,20 +153,30 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
     warnings, unreadable = len(every) - errors, sum(r.error is not None for r in reports)
     suppressed = sum(len(report.suppressed) for report in reports)
     fixed = sum(len(report.repairs) for report in reports)
+    refused = sum(report.refused is not None for report in reports)
     if text and (len(files) > 1 or every or unreadable or suppressed or fixed):
         extra = (f', {suppressed} suppressed' if suppressed else '') + (
-            f', {fixed} {done}' if fixed else '')
+            f', {fixed} {done}' if fixed else '') + (
+            f', {refused} not fixable by --fix' if refused else '')
         click.echo(f'{len(files)} file(s): {errors} error(s), {warnings} warning(s), '
                    f'{unreadable} unreadable{extra}', err=True)
     failed = errors or (strict and warnings)
-    raise SystemExit(2 if unreadable else 1 if failed else 0)
+    raise SystemExit(2 if unreadable or refused else 1 if failed else 0)
+
+
+def _line(finding: ValidationError) -> str:
+    """Return the finding's line, led by its file also when it has no line number."""
+    text, where = str(finding), finding.location
+    if where.line is None and where.file and where.path:  # made by a Xacro macro
+        return f'{where.file}: {text.removeprefix(f"{where}: ")}'
+    return text
 
 
 def _findings(robot: Robot, options: _Options) -> list[ValidationError]:
     found = robot.validate(check_meshes=options.check_meshes,
                            search_paths=options.package_paths)
     if options.engines:
-        found += preflight(robot, options.engines, options.package_paths)
+        found += in_source(preflight(robot, options.engines, options.package_paths), robot)
     return found
 
 
@@ -170,21 +186,22 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
     try:
         robot = load(path, mappings, options.package_paths)
         suppressions = read_suppressions(robot, options.ignored)
-        report.notes += [f'{path}:{line}: warning: the suppression comment names {word!r}, '
-                         'which is not a finding code: it silences nothing (codes look like '
-                         'I205)' for line, word in suppressions.unknown]
+        expanded = robot.source is not None and (robot.source.file or '').endswith(EXPANDED)
+        report.notes += [f'{path}{"" if expanded else f":{line}"}: warning: the suppression '
+                         f'comment names {word!r}, which is not a finding code: it silences '
+                         'nothing (codes look like I205)' for line, word in suppressions.unknown]
         report.findings, report.suppressed = suppressions.split(_findings(robot, options))
         if not options.fix:
             return report
         before = robot.to_urdf()
         repairs = fix(robot, report.findings, options.limit_defaults)
-        if not repairs:
+        refusal = _not_rewritable(path, robot, len(repairs))
+        if refusal is not None:  # nothing is written: no word on missing defaults either
+            report.refused = refusal if repairs else None
             return report
-        if _is_xacro(path, robot):
-            report.notes.append(
-                f'{path}: not fixed: it is Xacro, and writing the expanded robot back would '
-                f'lose its macros and properties: repair the {len(repairs)} finding(s) '
-                'by hand (the lines above say how)')
+        report.notes += [f'{path}: {line}' for line in missing_defaults(
+            robot, report.findings, options.limit_defaults)]
+        if not repairs:
             return report
         old = path.read_bytes().decode('utf-8', 'surrogateescape')  # other bytes stay
         new = carry_over(old, before, robot.to_urdf())
@@ -210,9 +227,21 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
     return report
 
 
-def _is_xacro(path: Path, robot: Robot) -> bool:
-    return path.suffix.lower() == '.xacro' or any(
-        warning.code == 'X101' for warning in robot.read_warnings)
+def _not_rewritable(path: Path, robot: Robot, count: int) -> str | None:
+    """Return why ``path`` is not a file --fix can write back (None when it is plain URDF)."""
+    if path.suffix.lower() in DH_SUFFIXES:
+        if is_assembly(path):
+            return (f'{path}: not fixed: it is an assembly file, which only names its parts: '
+                    f"the {count} repairable finding(s) above are in the parts' files: run "
+                    'urdfgenpy check --fix on those (Xacro parts by hand)')
+        return (f'{path}: not fixed: it is a DH table, from which the robot is generated: '
+                f'change the table for the {count} repairable finding(s) above')
+    if path.suffix.lower() == '.xacro' or any(
+            warning.code == 'X101' for warning in robot.read_warnings):
+        return (f'{path}: not fixed: it is Xacro, and writing the expanded robot back would '
+                f'lose its macros and properties: repair the {count} finding(s) above by '
+                'hand (their lines say how)')
+    return None
 
 
 def _replace(path: Path, text: str) -> None:

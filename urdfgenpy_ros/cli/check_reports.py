@@ -27,6 +27,7 @@ from xml.etree import ElementTree
 from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.validation.codes import CODES, PREFLIGHT_HINTS
 from urdfgenpy_ros.validation.fix import Repair
+from urdfgenpy_ros.validation.xacro_source import EXPANDED
 
 SARIF_SCHEMA = 'https://json.schemastore.org/sarif-2.1.0.json'
 _LEVEL = {Severity.ERROR: 'error', Severity.WARNING: 'warning'}
@@ -42,6 +43,8 @@ class FileReport:
     suppressed: list[tuple[ValidationError, str]] = field(default_factory=list)
     repairs: list[Repair] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    refused: str | None = None
+    """Why --fix left the file alone though it had repairs (Xacro, assembly, DH table)."""
 
 
 def json_report(reports: list[FileReport]) -> str:
@@ -56,6 +59,7 @@ def json_report(reports: list[FileReport]) -> str:
                                for finding, kind in report.suppressed]
         entry['fixed'] = [repair.as_dict() for repair in report.repairs]
         entry['notes'] = report.notes
+        entry['not_fixed'] = report.refused
         files.append(entry)
     every = [finding for report in reports for finding in report.findings]
     return json.dumps({
@@ -64,7 +68,8 @@ def json_report(reports: list[FileReport]) -> str:
         'warnings': sum(f.severity is Severity.WARNING for f in every),
         'unreadable': sum(report.error is not None for report in reports),
         'suppressed': sum(len(report.suppressed) for report in reports),
-        'fixed': sum(len(report.repairs) for report in reports)}, indent=2)
+        'fixed': sum(len(report.repairs) for report in reports),
+        'not_fixed': sum(report.refused is not None for report in reports)}, indent=2)
 
 
 def _uri(path: str) -> tuple[str, bool]:
@@ -77,13 +82,10 @@ def _uri(path: str) -> tuple[str, bool]:
     return quote(relative.as_posix()), True
 
 
-EXPANDED = ' (expanded)'  # how a location in an expanded Xacro names its file
-
-
 def _location(finding: ValidationError, fallback: str) -> dict[str, object]:
     where = finding.location
     file = where.file or fallback
-    expanded = file.endswith(EXPANDED)  # its lines are the expansion's, not the file's
+    expanded = file.endswith(EXPANDED)  # made by Xacro: no line of the file (xacro_source)
     uri, relative = _uri(file[:-len(EXPANDED)] if expanded else file)
     artifact: dict[str, object] = {'uri': uri}
     if relative:
@@ -100,10 +102,9 @@ def _location(finding: ValidationError, fallback: str) -> dict[str, object]:
 
 
 def _message(finding: ValidationError) -> str:
-    where = finding.location
-    line = (f' (line {where.line} of the expanded Xacro)'
-            if (where.file or '').endswith(EXPANDED) and where.line else '')
-    return f'{finding.element}: {finding.message} ({finding.hint}){line}'
+    made = (' (made by a Xacro macro or expression: line 1 stands for the file)'
+            if (finding.location.file or '').endswith(EXPANDED) else '')
+    return f'{finding.element}: {finding.message} ({finding.hint}){made}'
 
 
 def _version() -> str:
@@ -120,7 +121,7 @@ def sarif_report(reports: list[FileReport]) -> str:
     Rule ids are the finding codes (help: the hint), results carry file, line and column
     (the element path as logical location); suppressed findings are results with a
     suppression (``inSource`` for a comment, ``external`` for ``--ignore``), and a file
-    that could not be read is a tool notification.
+    that could not be read (or that --fix did not rewrite) is a tool notification.
     """
     everything = [finding for report in reports for finding in report.findings]
     everything += [finding for report in reports for finding, _ in report.suppressed]
@@ -149,12 +150,14 @@ def sarif_report(reports: list[FileReport]) -> str:
             results.append(result)
     notifications = []
     for report in reports:
-        if report.error is not None:
+        for text in (report.error, report.refused):
+            if text is None:
+                continue
             uri, relative = _uri(report.path)
             artifact: dict[str, object] = {'uri': uri}
             if relative:
                 artifact['uriBaseId'] = '%SRCROOT%'
-            notifications.append({'level': 'error', 'message': {'text': report.error},
+            notifications.append({'level': 'error', 'message': {'text': text},
                                   'locations': [{'physicalLocation': {
                                       'artifactLocation': artifact}}]})
     invocation = {'executionSuccessful': not notifications,
@@ -174,8 +177,8 @@ def junit_report(reports: list[FileReport], strict: bool) -> str:
     Return JUnit XML: a test suite per file, a test case per finding.
 
     An error is a failure (a warning too with ``strict``; otherwise a passing case whose
-    output is the warning), a suppressed finding is skipped, an unreadable file is an
-    error, and a clean file is one passing case.
+    output is the warning), a suppressed finding is skipped, an unreadable file (or one
+    --fix did not rewrite) is an error, and a clean file is one passing case.
     """
     suites = ElementTree.Element('testsuites', name='urdfgenpy check')
     totals = {'tests': 0, 'failures': 0, 'errors': 0, 'skipped': 0}
@@ -191,6 +194,8 @@ def junit_report(reports: list[FileReport], strict: bool) -> str:
                           str(finding.severity), str(finding)))
         for finding, kind in report.suppressed:
             cases.append((_case_name(finding), 'skipped', kind, str(finding)))
+        if report.refused is not None:
+            cases.append(('fix', 'error', 'not fixed', report.refused))
         if not cases:
             cases.append(('no findings', None, '', ''))
         for name, outcome, outcome_type, text in cases:

@@ -29,6 +29,7 @@ from urdfgenpy_ros.validation.inertia import check_inertia
 from urdfgenpy_ros.validation.joints import check_joints
 from urdfgenpy_ros.validation.references import check_references
 from urdfgenpy_ros.validation.topology import check_topology
+from urdfgenpy_ros.validation.xacro_source import in_source
 
 __all__ = ['CODES', 'validate', 'ValidationError']
 
@@ -56,8 +57,9 @@ def validate(robot: Robot, strict: bool = False, *, check_meshes: bool = True,
     source = robot.source.file if robot.source is not None else None
     base = Path(source).parent if source and Path(source).is_file() else None
     check_references(robot, findings, resolver, base)
+    found = in_source(findings.items, robot)  # Xacro: the source line, or none
     if strict:
-        for finding in findings.items:
+        for finding in found:
             if finding.severity is Severity.ERROR:
                 raise finding
-    return findings.items
+    return found

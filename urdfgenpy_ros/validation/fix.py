@@ -20,8 +20,9 @@ elements' lines change. Fixed: a non-unit axis (J102, normalised), lower > upper
 swapped), a non-physical tensor (I202, I203: replaced by the tensor of
 the link's first collision, else visual, box, cylinder or sphere with the link's mass), an
 inertia on the root (I205: a massless root link above it), and, only with the defaults the
-user gives, a missing ``<limit>`` (J103) or a zero effort or velocity (J106). Everything
-else (a zero axis, a missing mimic target, ...) has no single right answer and stays.
+user gives, a missing ``<limit>`` (J103) or a zero effort or velocity (J106);
+``missing_defaults`` says which values those still lack. Everything else (a zero axis, a
+missing mimic target, ...) has no single right answer and stays.
 """
 
 from __future__ import annotations
@@ -195,6 +196,46 @@ def _new_root(robot: Robot, link: Link | Joint, defaults: dict[str, float]) -> s
     robot.add_joint(Joint(joint, JointType.FIXED, name, link.name))
     return (f'added a massless root link {name!r} and fixed joint {joint!r} above it '
             '(KDL ignores the inertia of a root link)')
+
+
+def missing_defaults(robot: Robot, findings: list[ValidationError],
+                     limit_defaults: dict[str, float] | None = None) -> list[str]:
+    """
+    Return, after ``fix``, why J103 and J106 findings are still there: the values missing.
+
+    One sentence per code and set of missing values, naming the joints, e.g. ``J103 not
+    fixed for joint 'wrist': --limit-default has no lower, upper (...)``. Empty when every
+    J103 and J106 finding was repaired.
+    """
+    defaults = dict(limit_defaults or {})
+    missing: dict[tuple[str, tuple[str, ...]], list[str]] = {}
+    for finding in findings:
+        joint = _owner(robot, finding) if finding.code in ('J103', 'J106') else None
+        if not isinstance(joint, Joint):
+            continue
+        if finding.code == 'J103' and joint.limit is None:
+            lacking = tuple(name for name in LIMIT_FIELDS if name not in defaults)
+        elif finding.code == 'J106' and joint.limit is not None:
+            lacking = tuple(name for name in ('effort', 'velocity')
+                            if getattr(joint.limit, name) == 0.0
+                            and not defaults.get(name, 0.0) > 0.0)
+        else:
+            continue
+        names = missing.setdefault((finding.code, lacking), [])
+        if lacking and joint.name not in names:
+            names.append(joint.name)
+    lines = []
+    for (code, lacking), joints in missing.items():
+        if not joints:
+            continue
+        why = ('a missing <limit> is added only with all four values'
+               if code == 'J103' else 'a zero effort or velocity is replaced by a positive '
+               'value')
+        example = ','.join(f'{name}=...' for name in lacking)
+        lines.append(f'{code} not fixed for joint {", ".join(map(repr, joints))}: '
+                     f'--limit-default has no {"positive " if code == "J106" else ""}'
+                     f'{", ".join(lacking)} ({why}: add --limit-default {example})')
+    return lines
 
 
 _REPAIRS = {'J102': _axis, 'J104': _swap, 'J103': _add_limit, 'J106': _zero_limit,

@@ -30,7 +30,17 @@ from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
 
 def check_references(robot: Robot, findings: Findings, resolver: PackageResolver | None,
                      base: Path | None) -> None:
-    """Check materials, meshes (when a resolver is given), sizes and non-finite numbers."""
+    """
+    Check materials, meshes (when a resolver is given), sizes and non-finite numbers.
+
+    A visual's material that only names a material is defined when the robot has it, or
+    when a visual read before it (links in file order, visuals in order) defines it inline
+    with a colour or texture: urdfdom adds such a material to the robot's, if the name is
+    new, when it reads that link, so a later name-only reference finds it and an earlier
+    one does not.
+    """
+    defined = {material.name for material in robot.materials}
+    inline = _inline_materials(robot)
     for link in robot.links:
         groups: tuple[tuple[str, list[Shape]], ...] = (
             ('visual', list(link.visuals)), ('collision', list(link.collisions)))
@@ -45,13 +55,32 @@ def check_references(robot: Robot, findings: Findings, resolver: PackageResolver
                     _check_mesh(shape.geometry, element, where, findings, resolver, base,
                                 missing)
                 material = getattr(shape, 'material', None)
-                if (material is not None and material.is_reference
-                        and not robot.has_material(material.name)):
-                    findings.add('R301', material, element, where + '/material',
-                                 f'material {material.name!r} is not defined',
-                                 f'add <material name="{material.name}"><color rgba=.../>'
-                                 '</material> to the robot', 'material')
+                if material is None or material.name in defined:
+                    continue
+                if not material.is_reference:
+                    defined.add(material.name)  # urdfdom: from here on, the robot's
+                    continue
+                later = inline.get(material.name)
+                findings.add('R301', material, element, where + '/material',
+                             f'material {material.name!r} is not defined' + (
+                                 f' yet (link {later!r} defines it later: urdfdom reads '
+                                 'links in file order)' if later else ''),
+                             f'add <material name="{material.name}"><color rgba=.../>'
+                             '</material> to the robot' + (
+                                 ', or define it here, where it is first used'
+                                 if later else ''), 'material')
     _check_finite(robot, findings)
+
+
+def _inline_materials(robot: Robot) -> dict[str, str]:
+    """Return each material a visual defines inline, with the first link defining it."""
+    found: dict[str, str] = {}
+    for link in robot.links:
+        for visual in link.visuals:
+            material = visual.material
+            if material is not None and not material.is_reference:
+                found.setdefault(material.name, link.name)
+    return found
 
 
 def _check_geometry(geometry: Any, element: str, where: str, findings: Findings,
