@@ -20,10 +20,8 @@ from __future__ import annotations
 import os
 from pathlib import Path
 import re
-import statistics
 import subprocess
 import sys
-import time
 
 from click.testing import CliRunner
 from helpers import canonical, corpus_cases, environment, require_module
