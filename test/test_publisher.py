@@ -192,9 +192,7 @@ def test_xacro_with_arguments_and_a_module_function(graph: Graph, tmp_path: Path
 def test_bad_input_exits_1_with_one_line_and_no_traceback(
         graph: Graph, parameters: list[str], words: str) -> None:
     process = graph.start(*parameters)
-    started = time.monotonic()
-    output, _ = process.communicate(timeout=10)
-    assert time.monotonic() - started < 5
+    output, _ = process.communicate(timeout=20)  # it exits by itself; a hang times out
     assert process.returncode == 1
     assert 'Traceback' not in output
     errors = [line for line in output.splitlines() if '[ERROR]' in line]
