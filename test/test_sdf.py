@@ -297,3 +297,29 @@ def test_what_sdformat_converts_we_convert_and_what_it_drops_validate_names(
     assert {f'link {name!r}' for name in dropped} <= said, lumped
     for link in set(ours) & set(theirs):
         assert ours[link][0] == pytest.approx(theirs[link][0], rel=1e-9), link
+
+
+def test_a_gazebo_block_before_its_link_gives_that_link_its_sensor(check_sdf,
+                                                                   tmp_path: Path) -> None:
+    """Blocks are matched to links once all are read, as libsdformat's conversion does."""
+    urdf = tmp_path / 'early.urdf'
+    urdf.write_text(
+        '<robot name="early">\n'
+        '  <gazebo reference="head"><sensor name="imu" type="imu"><always_on>1</always_on>'
+        '</sensor></gazebo>\n'
+        '  <link name="base_link"><inertial><mass value="1"/><inertia ixx="0.1" ixy="0" '
+        'ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial></link>\n'
+        '  <joint name="neck" type="revolute"><parent link="base_link"/><child link="head"/>'
+        '<axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>\n'
+        '  <link name="head"><inertial><mass value="1"/><inertia ixx="0.1" ixy="0" ixz="0" '
+        'iyy="0.1" iyz="0" izz="0.1"/></inertial></link>\n'
+        '</robot>\n')
+    robot = Robot.from_urdf(urdf)
+    assert robot.to_urdf() == urdf.read_text()  # where the block stands does not change
+    sdf = tmp_path / 'early.sdf'
+    robot.save(sdf)
+    code, _, _, ours, errors = check_sdf(sdf)
+    assert code == 0, errors
+    code, _, _, theirs, errors = check_sdf(urdf)  # libsdformat converts the URDF itself
+    assert code == 0, errors
+    assert ours == theirs == {('head', 'imu', 'imu')}

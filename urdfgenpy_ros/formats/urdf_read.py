@@ -165,6 +165,7 @@ class _Reader:
         robot.source = self.where(root)
         order: list[Any] = []
         joints: list[Joint] = []
+        blocks: list[Extension] = []
         seen: dict[tuple[str, str], int] = {}
         for node in root:
             tag = node.tag
@@ -186,11 +187,13 @@ class _Reader:
             elif tag in EXTENSION_TAGS:
                 block = Extension(node, self.where(node))
                 order.append(block)
-                self._attach(robot, block, joints)
+                blocks.append(block)
             else:
                 order.append(node)
         for joint in joints:
             robot.add_joint(joint)
+        for block in blocks:  # once every link is read: a block may come before its link
+            self._attach(robot, block)
         if self.unresolved:
             for link in _share_materials(robot):
                 record(link)
@@ -228,14 +231,14 @@ class _Reader:
                 gap, between = spaces[0], tuple(spaces[1:])
         return Layout(unit, newline, quote, declaration, head, end, gap, between)
 
-    def _attach(self, robot: Robot, block: Extension, joints: list[Joint]) -> None:
+    @staticmethod
+    def _attach(robot: Robot, block: Extension) -> None:
+        """Give a block to the link or joint its ``reference`` names, else to the robot."""
         reference = block.reference if block.tag == 'gazebo' else None
         if reference is not None and robot.has_link(reference):
             robot.get_link(reference).extensions.append(block)
-            return
-        owner = next((joint for joint in joints if joint.name == reference), None)
-        if reference is not None and owner is not None:
-            owner.extensions.append(block)
+        elif reference is not None and robot.has_joint(reference):
+            robot.get_joint(reference).extensions.append(block)
         else:
             robot.extensions.append(block)
 
