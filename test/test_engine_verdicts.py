@@ -59,6 +59,8 @@ EXPECTED = {
     # urdfdom ignores a visual's own material whose colour is not 4 numbers; MuJoCo
     # refuses the model.
     'five_number_colour.urdf': {('P107', 'warning')},
+    # urdfdom drops a visual whose own material has no name; MuJoCo reads it.
+    'unnamed_visual_material.urdf': {('P107', 'warning')},
     'urdfdom_sensor.urdf': set(),
     'moving_sensor_without_inertial.urdf': {('I207', 'warning')},
     # A massless wheel whose fixed child carries the mass, and a massless mount carrying a
@@ -132,7 +134,8 @@ def test_links_said_to_be_dropped_are_the_ones_libsdformat_drops(
 
 
 @pytest.mark.parametrize('name, tag', [('inertial_without_inertia.urdf', 'inertial'),
-                                       ('five_number_colour.urdf', 'material')])
+                                       ('five_number_colour.urdf', 'material'),
+                                       ('unnamed_visual_material.urdf', 'material')])
 def test_what_urdfdom_ignores_is_kept_until_replaced(name: str, tag: str) -> None:
     from urdfgenpy_ros import Box, Inertial, Material, Visual
     path = PROBLEMS / name

@@ -174,6 +174,9 @@ def unusable(tag: str, node: Any) -> str | None:
         for _ in node.iterchildren('inertia'):
             return None
         return '<inertial> without <inertia> (MuJoCo refuses it): add <inertia ixx=... izz=.../>'
+    if node.tag == 'material' and tag == 'visual' and node.get('name') is None:
+        return ('<material> without a name (urdfdom then drops the whole <visual>, so RViz '
+                'does not show it): name it, e.g. <material name="red">')
     if node.tag == 'material' and tag == 'visual' and len(node):
         color = next(node.iterchildren('color'), None)
         rgba = color.get('rgba') if color is not None else None
