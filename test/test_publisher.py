@@ -212,6 +212,23 @@ def test_invalid_model_logs_each_finding_and_exits_1(graph: Graph, tmp_path: Pat
     assert any(' I201 ' in line for line in errors)
 
 
+def test_errors_named_in_ignore_do_not_stop_publishing(graph: Graph) -> None:
+    """A tensor MuJoCo refuses stops the node; RViz would read it, so it can be let through."""
+    model = FIXTURES / 'problems' / 'impossible_tensor_on_fixed_link.urdf'
+    process = graph.start(f'model:={model}')
+    output, _ = process.communicate(timeout=20)
+    assert process.returncode == 1 and 'Traceback' not in output
+    assert "ignore:=['I203']" in output, output
+    graph.start(f'model:={model}', "ignore:=['I203']")
+    descriptions = graph.collect(String, 'robot_description', latched=True)
+    assert graph.spin_until(lambda: descriptions, 20)
+    assert descriptions[0].data == model.read_text()
+    process = graph.start(f'model:={model}', "ignore:=['I2O3']")  # a letter O for a zero
+    output, _ = process.communicate(timeout=20)
+    assert process.returncode == 1, output
+    assert "parameter 'ignore': I2O3 is not a finding code" in output, output
+
+
 def test_robot_description_parameter_is_the_text_and_read_only(graph: Graph) -> None:
     from rcl_interfaces.srv import GetParameters, SetParameters
     graph.start()

@@ -42,6 +42,7 @@ from urdfgenpy_ros.errors import Severity, UrdfgenpyError
 from urdfgenpy_ros.model_source import load_model
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
+from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions
 
 if TYPE_CHECKING:  # imported when needed: sensor_msgs brings numpy, not needed to start
     from sensor_msgs.msg import JointState
@@ -55,6 +56,7 @@ _PARAMETERS: dict[str, tuple[Any, int | None, str]] = {
               '.urdf, .xacro, package.module:function, or empty for the example robot'),
     'xacro_args': ([], _STRINGS, 'xacro arguments as name:=value'),
     'package_paths': ([], _STRINGS, 'folders holding ROS packages, for $(find) and meshes'),
+    'ignore': ([], _STRINGS, "finding codes that do not stop publishing, e.g. ['I203']"),
     'rate': (10, None, 'joint_states per second (integer or double)'),
     'source_list': ([], _STRINGS, 'JointState topics whose values are merged'),
     'publish_default_positions': (True, ParameterType.PARAMETER_BOOL, ''),
@@ -117,6 +119,10 @@ class PublisherNode(Node):
         self.values = {name: self.get_parameter(name).value for name in _PARAMETERS}
         for name, (_, kind, _) in _PARAMETERS.items():
             _check_type(name, kind, self.values[name])
+        try:
+            self.ignored = parse_codes(' '.join(self.values['ignore']))
+        except ValueError as error:
+            raise UrdfgenpyError(f"parameter 'ignore': {error}") from None
         rate = self.values['rate']
         if isinstance(rate, bool) or not isinstance(rate, (int, float)) or not rate > 0:
             raise UrdfgenpyError(f"parameter 'rate': {rate!r} is not a positive number of Hz")
@@ -171,16 +177,24 @@ class PublisherNode(Node):
     def _load(self) -> tuple[Robot, list[str]]:
         robot, watched = load_model(self.values['model'], self.values['xacro_args'],
                                     self.values['package_paths'])
-        findings = robot.validate(search_paths=self.values['package_paths'])
+        found = robot.validate(search_paths=self.values['package_paths'])
+        # the file's own suppression comments, as `urdfgenpy check` reads them, and 'ignore'
+        findings, silenced = read_suppressions(robot, self.ignored).split(found)
         errors = [finding for finding in findings if finding.severity is Severity.ERROR]
         for finding in findings:
             if finding.severity is Severity.ERROR:
                 self.get_logger().error(str(finding))
             else:
                 self.get_logger().warning(str(finding))
+        if silenced:
+            codes = ', '.join(sorted({finding.code for finding, _ in silenced}))
+            self.get_logger().info(f'{len(silenced)} finding(s) ignored ({codes}): parameter '
+                                   "'ignore' or suppression comments in the file")
         if errors:
+            codes = "', '".join(sorted({finding.code for finding in errors}))
             raise UrdfgenpyError(f'{len(errors)} validation error(s) in the model: fix them '
-                                 '(listed above) before publishing')
+                                 '(listed above) before publishing, or publish anyway with '
+                                 f"-p \"ignore:=['{codes}']\"")
         return robot, watched
 
     def _joint_states(self, robot: Robot) -> JointStates:
