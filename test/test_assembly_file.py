@@ -162,6 +162,7 @@ def test_attach_command_writes_what_attach_does(tmp_path: Path) -> None:
     assert clash.exit_code == 2 and clash.output.count('\n') == 1
     assert clash.output.startswith("urdfgenpy: cannot attach 'rover' to 'rover': 9 names "
                                    "taken: link 'base_link', ")
+    assert '(give the part --prefix rover_, or pass --joint-name for ' in clash.output
     assert not (tmp_path / 'x.urdf').exists()
     bad = CliRunner().invoke(main, [*arguments[:5], '--xyz', '1 2', '-o',
                                     str(tmp_path / 'y.urdf')])

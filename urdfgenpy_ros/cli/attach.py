@@ -18,12 +18,13 @@
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot
-from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.errors import ModelError, UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.resources import rebase_meshes
@@ -81,7 +82,12 @@ def attach(base: Path, part: Path, at: str, prefix: str, xyz: str, rpy: str, deg
     piece = read_robot(part, part_args, package_paths)
     rebase_meshes(robot, base.parent, output.parent)  # relative meshes still found
     rebase_meshes(piece, part.parent, output.parent)
-    robot.attach(piece, at, origin, prefix=prefix, joint_name=joint_name)
+    try:
+        robot.attach(piece, at, origin, prefix=prefix, joint_name=joint_name)
+    except ModelError as error:  # its fix in the words of this command's options
+        text = re.sub(r"prefix='([^']*)'", r'--prefix \1', str(error))
+        raise ModelError(text.replace('pass joint_name= for', 'pass --joint-name for')
+                         .replace('another joint_name', 'another --joint-name')) from None
     robot.save(output)
     joint = robot.parent_joint(prefix + piece.root.name)
     click.echo(f'wrote {output}: {len(robot.links)} links, {len(robot.joints)} joints '
