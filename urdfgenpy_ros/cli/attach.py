@@ -18,8 +18,8 @@
 from __future__ import annotations
 
 import math
-import re
 from pathlib import Path
+import re
 
 import click
 
