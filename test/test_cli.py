@@ -137,3 +137,12 @@ def test_meshlab_figures_pasted_as_printed_negative_numbers_included() -> None:
     for name, printed in (('ixx', '0.0000056249300217'), ('ixy', '-0.0000000007514029')):
         value = float(pasted.stdout.split(f'{name}="')[1].split('"')[0])
         assert f'{value:.16f}' == printed
+
+
+def test_a_file_nothing_reads_names_what_can_be_read(tmp_path: Path) -> None:
+    mesh = tmp_path / 'part.STL'
+    mesh.write_text('solid part\nendsolid part\n')
+    result = CliRunner().invoke(main, ['tree', str(mesh)])
+    assert result.exit_code == 2 and result.output.count('\n') == 1, result.output
+    assert "unknown suffix '.stl' (urdfgenpy reads .urdf, .xacro and .urdf.xacro" \
+        in result.output and '.sdf' not in result.output

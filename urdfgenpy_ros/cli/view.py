@@ -18,6 +18,7 @@
 from __future__ import annotations
 
 from pathlib import Path
+import sys
 import threading
 
 import click
@@ -51,6 +52,7 @@ def view(path: Path, arguments: tuple[str, ...], port: int, host: str,
     viewer.watch()
     click.echo(f'urdfgenpy view: {viewer.url} shows {viewer.robot.name!r} '
                f'({len(viewer.findings)} findings); Ctrl-C stops')
+    sys.stdout.flush()  # the address shows at once when the output is a pipe or a file
     try:
         threading.Event().wait()
     except KeyboardInterrupt:

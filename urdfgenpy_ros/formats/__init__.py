@@ -61,6 +61,10 @@ def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
             return Robot.from_assembly(path, list(search_paths))
         from urdfgenpy_ros.dh import DHTable
         return DHTable.from_file(path).to_robot(Path(path).name.split('.')[0])
+    if Path(path).suffix.lower() not in WRITERS:
+        raise ModelError(f'{path}: unknown suffix {Path(path).suffix.lower()!r} (urdfgenpy '
+                         'reads .urdf, .xacro and .urdf.xacro files, and DH tables and '
+                         'assembly files in .yaml, .yml or .csv)')
     kind = format_of(path)
     if kind == 'sdf':
         raise ModelError(f'{path}: reading SDF is not supported (convert from URDF or Xacro)')
