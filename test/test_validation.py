@@ -228,3 +228,20 @@ def test_r301_matches_check_urdf_on_every_corpus_file(path: Path) -> None:
     except Exception:  # noqa: B902 - unreadable or Xacro: judged elsewhere
         pytest.skip('not plain URDF that urdfgenpy reads')
     assert _r301(robot) == _undefined_materials(path)
+
+
+def test_i204_judges_a_tensor_only_by_a_link_made_of_one_primitive() -> None:
+    """A foot's four 5 mm contact spheres say nothing of the foot's tensor (Unitree G1)."""
+    from urdfgenpy_ros import Collision, Inertial, Origin, Sphere
+    foot = Inertial(0.608, ixx=2.2e-4, iyy=1.6e-3, izz=1.7e-3)
+
+    def codes(count: int) -> set[str]:
+        link = Link('foot')
+        link.set_inertial(foot)
+        for index in range(count):
+            link.add_collision(Collision(Sphere(0.005), origin=Origin((0.05 * index, 0, 0))))
+        robot = Robot('r').add_link(link)
+        return {finding.code for finding in robot.validate()}
+
+    assert 'I204' not in codes(4)
+    assert 'I204' in codes(1)  # one sphere is the whole body: 192 times its tensor

@@ -154,11 +154,12 @@ def _check_tensor(inertial: Inertial, element: str, where: str, findings: Findin
 
 def _check_plausible(link: Link, inertial: Inertial, element: str, where: str,
                      findings: Findings) -> None:
-    items: tuple[Shape, ...] = (*link.collisions, *link.visuals)
-    shape = next((item.geometry for item in items
-                  if isinstance(item.geometry, (Box, Cylinder, Sphere))), None)
-    if shape is None:
+    # One primitive is the whole body: with several shapes (a foot's contact spheres) or
+    # a mesh, one of them says nothing of the link's tensor.
+    items: tuple[Shape, ...] = tuple(link.collisions) or tuple(link.visuals)
+    if len(items) != 1 or not isinstance(items[0].geometry, (Box, Cylinder, Sphere)):
         return
+    shape = items[0].geometry
     if isinstance(shape, Box):
         expected = box_tensor(inertial.mass, *shape.size)
     elif isinstance(shape, Cylinder):
