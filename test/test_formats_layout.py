@@ -92,6 +92,7 @@ def test_a_scalar_edit_changes_one_line(path: Path, edit, tmp_path: Path) -> Non
     assert len(removed) == len(added) == 1, (removed, added)
     assert needle in added[0] and value in added[0]
     assert added[0].replace(value, '') != removed[0]
+    assert added[0].endswith(' />') == removed[0].endswith(' />')  # the file's own style
     load_yourdfpy(tmp_path / 'out.urdf')  # and another reader accepts it
 
 
@@ -104,7 +105,7 @@ def test_an_edit_in_an_exporter_style_file_touches_only_the_edited_element(
     text = robot.to_urdf(tmp_path / 'out.urdf')
     removed, added = _changed(_source(path), text)
     assert [line.strip() for line in removed] == ['<mass', 'value="0.5" />']
-    assert [line.strip() for line in added] == ['<mass value="0.75"/>']
+    assert [line.strip() for line in added] == ['<mass value="0.75" />']  # its ' />' kept
     arm = next(link for link in load_yourdfpy(tmp_path / 'out.urdf').links if link.name == 'arm')
     assert arm.inertial.mass == 0.75
 

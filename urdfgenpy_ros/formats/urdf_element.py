@@ -188,12 +188,15 @@ class ElementWriter:
         return body[:-2] if body.endswith('/>') else body[:-1]
 
     def _empty(self, tag: str, attrs: str, node: Any) -> str:
-        """Return an element without content: ``<x/>``, or ``<x></x>`` as its source had it."""
+        """Return an element without content: ``<x/>``, or ``<x></x>``, ``<x />`` as written."""
         extras = self.robot.extras
         recorded = extras.start_tags.get(node) if extras is not None and node is not None \
             else None
-        if recorded is not None and not recorded[0].endswith('/>'):
-            return f'<{tag}{attrs}></{tag}>'
+        if recorded is not None:
+            if not recorded[0].endswith('/>'):
+                return f'<{tag}{attrs}></{tag}>'
+            if recorded[0][-3:-2].isspace() and attrs and not attrs[-1].isspace():
+                return f'<{tag}{attrs} />'  # the space the source put before its end
         return f'<{tag}{attrs}/>'
 
     def _inner(self, node: Any, pad: str | None) -> str | None:
