@@ -90,11 +90,16 @@ class UrdfWriter(ElementWriter):
             declaration = layout.declaration
             before, after = ([self.source_text(node) for node in nodes]
                              for nodes in extras.outside)
-        first = declaration + layout.gap  # no declaration: the white space the file began with
-        leading = [*before, self.write_robot()]
         spaces = layout.between if len(layout.between) == len(before) else ['\n'] * len(before)
-        opening = leading[0] + ''.join(map(str.__add__, spaces, leading[1:]))
-        text = first + '\n'.join([opening, *after]) + layout.end
+        # One join: the robot's text is most of the file, and each '+' would copy it again.
+        parts = [declaration, layout.gap]  # no declaration: the white space the file began with
+        for node, space in zip(before, spaces):
+            parts += [node, space]
+        parts.append(self.write_robot())
+        for node in after:
+            parts += ['\n', node]
+        parts.append(layout.end)
+        text = ''.join(parts)
         if layout.quote == "'":
             text = _single_quotes(text)
         if layout.newline != '\n':
