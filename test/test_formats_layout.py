@@ -260,3 +260,15 @@ def test_comments_before_the_root_keep_their_blank_lines(before: str) -> None:
         robot.get_link('a').name = 'b'
         assert _changed(source, robot.to_urdf()) == (['  <link name="a"/>'],
                                                      ['  <link name="b"/>'])
+
+
+def test_a_line_break_inside_a_value_does_not_decide_the_files_line_ends() -> None:
+    """An exporter's CRLF inside an attribute of an LF file (Unitree's hand files)."""
+    text = ('<robot name="r">\n  <link name="a">\n    <inertial>\n      <mass value="1" />\n'
+            '      <inertia ixx="0.1" ixy="0" ixz="0.0\r\n" iyy="0.1" iyz="0" izz="0.1" />\n'
+            '    </inertial>\n  </link>\n</robot>\n')
+    robot = Robot.from_urdf_string(text)
+    assert robot.to_urdf() == text
+    robot.get_link('a').inertial.mass = 2.0
+    removed, added = _changed(text, robot.to_urdf())
+    assert removed == ['      <mass value="1" />'] and added == ['      <mass value="2" />']

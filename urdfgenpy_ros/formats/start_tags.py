@@ -68,7 +68,8 @@ _UNUSUAL = re.compile(r'<(?:!--.*?-->|!\[CDATA\[.*?\]\]>|\?.*?\?>|![^>]*>|'
                       r'(?:[^>"\']++|"[^"]*"|\'[^\']*\')*+>)', re.DOTALL)
 
 
-def unusual_start_tags(document: Any, text: str, start: int | None = None) -> SourceTags:
+def unusual_start_tags(document: Any, text: str, start: int | None = None,
+                       newline: str = '\n') -> SourceTags:
     """
     Return the source start tags of the document's elements that lxml would write otherwise.
 
@@ -77,6 +78,7 @@ def unusual_start_tags(document: Any, text: str, start: int | None = None) -> So
     writes ``<link/>``). ``text`` is the whole source; its start tags come in the
     elements' order; ``start`` is where the document element starts in it, if known (its
     own start tag is not recorded then: writers put the source's back as it was).
+    ``newline`` is the file's line end, which the writer puts back at each line break.
     """
     if start is not None:
         written = etree.tostring(document, encoding='unicode', with_tail=False)
@@ -98,7 +100,7 @@ def unusual_start_tags(document: Any, text: str, start: int | None = None) -> So
         element = next(elements, None)
         if element is None:
             break
-        found[element] = (tag.replace('\r\n', '\n'),  # the writer puts the file's ends
+        found[element] = (tag.replace(newline, '\n'),  # the writer puts the file's ends
                           tuple(element.attrib.items()))
         index += 1
         taken = index

@@ -199,10 +199,11 @@ class _Reader:
                 record(link)
         text = self.source.data.decode('utf-8', 'replace')
         head, start = _opening_tag(text, root) if root is top else (None, None)
+        layout = self._layout(root, head, text)
         robot.extras = DocumentPreserved(
             root, order, (list(root.itersiblings(preceding=True))[::-1],
-                          list(root.itersiblings())), self._layout(root, head, text),
-            unusual_start_tags(top, text, start))
+                          list(root.itersiblings())), layout,
+            unusual_start_tags(top, text, start, layout.newline))
         return robot
 
     def _layout(self, root: Any, head: str | None, text: str) -> Layout:
@@ -211,7 +212,8 @@ class _Reader:
         ws = root.text or ''
         unit = ws.rsplit('\n', 1)[-1] if '\n' in ws else ''
         unit = unit if unit and not unit.strip() else '  '
-        newline = '\r\n' if b'\r' in data and b'\r\n' in data else '\n'
+        crlf = data.count(b'\r\n') if b'\r' in data else 0  # the ends most lines have
+        newline = '\r\n' if 2 * crlf > data.count(b'\n') else '\n'
         quote = "'" if b"'" in data and data.count(b"='") > data.count(b'="') else '"'
         match = _DECLARATION.match(text, 0, 4096)
         if match is None and root.getparent() is None and text[:4096].lstrip().startswith('<'):
