@@ -24,13 +24,18 @@ from urdfgenpy_ros.inertial import box_tensor, cylinder_tensor, Inertial, sphere
 from urdfgenpy_ros.joint import JointType
 from urdfgenpy_ros.link import Link, Shape
 from urdfgenpy_ros.robot import Robot
-from urdfgenpy_ros.transforms import symmetric_eigenvalues
+from urdfgenpy_ros.transforms import Matrix3
 from urdfgenpy_ros.validation.findings import Findings, link_path
 from urdfgenpy_ros.validation.preflight import sdformat_conversion, SDFORMAT_ZERO_MASS
 
-# MuJoCo's mjMINVAL: the mass and every principal moment of a moving body must exceed it
-# (its compiler refuses the model otherwise); Gazebo's tools test the same things.
+# MuJoCo's mjMINVAL (include/mujoco/mjtype.h): a moving body needs a mass of at least this
+# (user_model.cc, CheckBodyMassInertia), as do its moments when all six are zero.
 MINIMUM = 1e-15
+# MuJoCo's mjEPS (src/user/user_util.h): its URDF reader keeps the six numbers as a full
+# tensor (xml_urdf.cc) unless all are zero, and every body's tensor needs eigenvalues of at
+# least this, whether the body moves or not (user_util.cc, mjuu_fullInertia: "inertia must
+# have positive eigenvalues"; mjCBody::Compile).
+EIGENVALUE_MINIMUM = 1e-14
 ROUNDING = 8 * sys.float_info.epsilon  # relative error of the computed principal moments
 IMPLAUSIBLE = 100.0  # a tensor this many times off the geometry's is a unit slip
 
@@ -45,7 +50,7 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
         joint = parent_joint.get(link.name)
         inertial = link.inertial
         if lumped_mass.get(link.name, 0.0) >= SDFORMAT_ZERO_MASS and (
-                inertial is None or not inertial.mass > MINIMUM):
+                inertial is None or not inertial.mass >= MINIMUM):
             continue  # a fixed child lumped into it gives it mass, in Gazebo and MuJoCo
         moves = joint is not None and joint.type is not JointType.FIXED
         where, element = link_path(link.name) + '/inertial', f'link {link.name!r}'
@@ -69,7 +74,7 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
             findings.add('I205', inertial, element, where, 'the root link has an inertia',
                          'KDL ignores it (and warns): add a massless root link, e.g. '
                          'base_footprint, joined by a fixed joint', 'inertial')
-        if not inertial.mass > MINIMUM:
+        if not inertial.mass >= MINIMUM:
             if moves and joint is not None:
                 findings.add('I201', inertial, element, where + '/mass',
                              f'mass is {inertial.mass:g} on a link that moves '
@@ -117,19 +122,21 @@ def _check_tensor(inertial: Inertial, element: str, where: str, findings: Findin
     """
     Check the principal moments as the engines do; return whether the tensor is usable.
 
-    MuJoCo refuses a body whose moments are not all above its minimum (I202) or break the
-    triangle inequality (I203), whether it moves or not. The one exception is a tensor of
-    zeros on a link that does not move, a point mass or a frame: Gazebo's converter and
-    MuJoCo accept it (I208, a warning).
+    MuJoCo refuses a body whose tensor has an eigenvalue below 1e-14 (I202), or whose
+    principal moments break the triangle inequality (I203), whether it moves or not. The
+    one exception is a tensor of zeros, which MuJoCo does not read as a tensor: on a link
+    that does not move (a point mass or a frame) Gazebo's converter and MuJoCo accept it
+    (I208, a warning); on a moving link MuJoCo refuses it (I202).
     """
     values = (inertial.ixx, inertial.ixy, inertial.ixz, inertial.iyy, inertial.iyz,
               inertial.izz)
     if not all(math.isfinite(value) for value in values):
         return False  # reported as R305
-    small, middle, large = moments = symmetric_eigenvalues(inertial.tensor)
+    small, middle, large = moments = principal_moments(inertial.tensor)
     listed = ', '.join(f'{m:.4g}' for m in moments)
-    if small <= MINIMUM:
-        problem = f'principal moments {listed} are not all above {MINIMUM:g}'
+    minimum = EIGENVALUE_MINIMUM if any(values) else MINIMUM
+    if small < minimum:
+        problem = f'principal moments {listed} are not all at least {minimum:g}'
     elif small + middle < large * (1.0 - ROUNDING):
         problem = f'principal moments {small:.4g} + {middle:.4g} < {large:.4g}'
     else:
@@ -139,7 +146,7 @@ def _check_tensor(inertial: Inertial, element: str, where: str, findings: Findin
                      'a point mass on a link that does not move: Gazebo and MuJoCo accept '
                      'it; compute the tensor from the geometry (Inertial.from_geometry) if '
                      'the link will ever move', 'inertia')
-    elif small <= MINIMUM:
+    elif small < minimum:
         findings.add('I202', inertial, element, where + '/inertia', problem,
                      'every body has positive moments (MuJoCo refuses the model; only a link '
                      'that does not move may have six zeros): compute the '
@@ -150,6 +157,39 @@ def _check_tensor(inertial: Inertial, element: str, where: str, findings: Findin
                      'no rigid body has that: check the tensor (MuJoCo refuses it, even on '
                      'a link that does not move)', 'inertia')
     return False
+
+
+def principal_moments(tensor: Matrix3) -> tuple[float, float, float]:
+    """
+    Return the eigenvalues of a symmetric 3x3 tensor, smallest first, to rounding.
+
+    Jacobi rotations: unlike the closed form, they keep two nearly equal moments (a rod, a
+    disc turned off its axes) and a tiny one accurate, which the limits above need.
+    """
+    a = [list(row) for row in tensor]
+    for _ in range(32):
+        turned = False
+        for p, q in ((0, 1), (0, 2), (1, 2)):
+            apq = a[p][q]
+            if abs(apq) <= 1e-18 * (abs(a[p][p]) + abs(a[q][q])):
+                continue
+            turned = True
+            theta = (a[q][q] - a[p][p]) / (2.0 * apq)
+            t = (1.0 / (2.0 * theta) if abs(theta) > 1e150 else
+                 math.copysign(1.0, theta) / (abs(theta) + math.sqrt(theta * theta + 1.0)))
+            c = 1.0 / math.sqrt(t * t + 1.0)
+            s = t * c
+            a[p][p] -= t * apq
+            a[q][q] += t * apq
+            a[p][q] = a[q][p] = 0.0
+            r = 3 - p - q
+            arp, arq = a[r][p], a[r][q]
+            a[r][p] = a[p][r] = c * arp - s * arq
+            a[r][q] = a[q][r] = s * arp + c * arq
+        if not turned:
+            break
+    small, middle, large = sorted((a[0][0], a[1][1], a[2][2]))
+    return small, middle, large
 
 
 def _check_plausible(link: Link, inertial: Inertial, element: str, where: str,
