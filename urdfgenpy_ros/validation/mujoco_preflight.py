@@ -21,7 +21,8 @@ fused into their parent body and the root into the world (M501); a link without
 range (M503); a mesh collides as its convex hull (M504, decided with trimesh when it is
 installed). The model MuJoCo compiles has its mesh URIs resolved to absolute paths and its
 visuals left out (MuJoCo discards them); a collision mesh it cannot read is left out too and
-reported (M506). Without the ``mujoco`` package, M501 and M503 follow its rules.
+reported (M506). MuJoCo then reads the user's file itself, as written (M505 when it refuses
+what the rebuilt model hid). Without the ``mujoco`` package, M501 and M503 follow its rules.
 """
 
 from __future__ import annotations
