@@ -21,6 +21,7 @@ engines themselves in the test (check_urdf, MuJoCo), never written down.
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 from helpers import check_urdf_verdict, FIXTURES, require_module
@@ -237,8 +238,15 @@ _TENSOR_ROBOT = """<robot name="tensor">
 """
 
 
-def _tensor(ixx: float, iyy: float, izz: float, ixy: float = 0.0) -> str:
-    return f'ixx="{ixx!r}" ixy="{ixy!r}" ixz="0.0" iyy="{iyy!r}" iyz="0.0" izz="{izz!r}"'
+def _tensor(ixx: float, iyy: float, izz: float, ixy: float = 0.0, iyz: float = 0.0) -> str:
+    return (f'ixx="{ixx!r}" ixy="{ixy!r}" ixz="0.0" iyy="{iyy!r}" iyz="{iyz!r}" '
+            f'izz="{izz!r}"')
+
+
+def _turned_disc(degrees: int, a: float = 0.25e-3) -> str:
+    """Return a disc's tensor (moments a, a, 2a) turned about x: on the triangle limit."""
+    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+    return _tensor(a, a * c * c + 2 * a * s * s, a * s * s + 2 * a * c * c, iyz=a * c * s)
 
 
 _EVEN = _tensor(0.01, 0.01, 0.01)
@@ -254,6 +262,16 @@ TENSORS = {
     'needle_0.99e-14': ('arm', 'revolute', 1.0, _tensor(1e-3, 1e-3, 0.99e-14)),
     'turned_1.1e-14': ('arm', 'revolute', 1.0, _tensor(_A, _A, 2 * _A, _A - 1.1e-14)),
     'turned_0.9e-14': ('arm', 'revolute', 1.0, _tensor(_A, _A, 2 * _A, _A - 0.9e-14)),
+    # the triangle inequality, as MuJoCo adds the moments (flat plates: ixx + iyy = izz)
+    'disc_exact': ('arm', 'revolute', 1.0, _tensor(0.25e-3, 0.25e-3, 0.5e-3)),
+    'disc_over': ('arm', 'revolute', 1.0, _tensor(0.25e-3, 0.25e-3, 0.5e-3 * (1 + 1e-15))),
+    'plate_rounded_in': ('arm', 'fixed', 1.0, _tensor(
+        0.0016333333333333336, 0.0008333333333333335, 0.002466666666666667)),
+    'plate_rounded_out': ('arm', 'fixed', 1.0, _tensor(
+        0.010208333333333335, 0.0008333333333333335, 0.01104166666666667)),
+    # discs turned about x: on the limit, MuJoCo's rounding decides (7: it refuses, 8: not)
+    'disc_turned_7': ('arm', 'revolute', 1.0, _turned_disc(7)),
+    'disc_turned_8': ('arm', 'revolute', 1.0, _turned_disc(8)),
     'zeros_moving': ('arm', 'revolute', 1.0, _tensor(0.0, 0.0, 0.0)),
     'zeros_fixed': ('arm', 'fixed', 1.0, _tensor(0.0, 0.0, 0.0)),
     'mass_1e-15': ('arm', 'revolute', 1e-15, _EVEN),

@@ -17,7 +17,6 @@
 from __future__ import annotations
 
 import math
-import sys
 
 from urdfgenpy_ros.geometry import Box, Cylinder, Sphere
 from urdfgenpy_ros.inertial import box_tensor, cylinder_tensor, Inertial, sphere_tensor
@@ -36,7 +35,7 @@ MINIMUM = 1e-15
 # least this, whether the body moves or not (user_util.cc, mjuu_fullInertia: "inertia must
 # have positive eigenvalues"; mjCBody::Compile).
 EIGENVALUE_MINIMUM = 1e-14
-ROUNDING = 8 * sys.float_info.epsilon  # relative error of the computed principal moments
+BORDER = 64 * 2.0 ** -52  # closer to a limit than this (relative), rounding decides
 IMPLAUSIBLE = 100.0  # a tensor this many times off the geometry's is a unit slip
 
 
@@ -135,9 +134,14 @@ def _check_tensor(inertial: Inertial, element: str, where: str, findings: Findin
     small, middle, large = moments = principal_moments(inertial.tensor)
     listed = ', '.join(f'{m:.4g}' for m in moments)
     minimum = EIGENVALUE_MINIMUM if any(values) else MINIMUM
-    if small < minimum:
+    below, uneven = small < minimum, small + middle < large  # as MuJoCo adds them
+    if any(values[index] for index in (1, 2, 4)) and (
+            abs(small - minimum) <= BORDER * large or abs(small + middle - large)
+            <= BORDER * large):
+        below, uneven = _mujoco_verdict(values, (below, uneven))
+    if below:
         problem = f'principal moments {listed} are not all at least {minimum:g}'
-    elif small + middle < large * (1.0 - ROUNDING):
+    elif uneven:
         problem = f'principal moments {small:.4g} + {middle:.4g} < {large:.4g}'
     else:
         return True
@@ -148,15 +152,38 @@ def _check_tensor(inertial: Inertial, element: str, where: str, findings: Findin
                      'the link will ever move', 'inertia')
     elif small < minimum:
         findings.add('I202', inertial, element, where + '/inertia', problem,
-                     'every body has positive moments (MuJoCo refuses the model; only a link '
-                     'that does not move may have six zeros): compute the '
-                     'tensor from the geometry (Inertial.from_geometry) or from CAD',
+                     'MuJoCo refuses the model (it needs every moment of at least 1e-14; only '
+                     'a link that does not move may have six zeros): compute the tensor from '
+                     'the geometry (Inertial.from_geometry) or from CAD',
                      'inertia')
     else:
         findings.add('I203', inertial, element, where + '/inertia', problem,
                      'no rigid body has that: check the tensor (MuJoCo refuses it, even on '
                      'a link that does not move)', 'inertia')
     return False
+
+
+def _mujoco_verdict(values: tuple[float, ...], ours: tuple[bool, bool]) -> tuple[bool, bool]:
+    """
+    Return MuJoCo's (eigenvalue too small, triangle broken) for a turned tensor at a limit.
+
+    Within rounding of a limit, a tensor with products of inertia passes or fails by how
+    MuJoCo's own eigenvalue routine rounds: a one-link URDF asks it, when it is installed.
+    """
+    try:
+        import mujoco
+    except ImportError:
+        return ours
+    names = ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz')
+    tensor = ' '.join(f'{name}="{value!r}"' for name, value in zip(names, values))
+    try:
+        mujoco.MjModel.from_xml_string(
+            f'<robot name="tensor"><link name="body"><inertial><mass value="1"/>'
+            f'<inertia {tensor}/></inertial></link></robot>')
+    except ValueError as error:
+        said = str(error)
+        return 'eigenvalues' in said, 'A + B >= C' in said
+    return False, False
 
 
 def principal_moments(tensor: Matrix3) -> tuple[float, float, float]:
