@@ -16,13 +16,15 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 import re
 import subprocess
 
 from click.testing import CliRunner
 from helpers import (
-    build_sdf_checker, CORPUS, corpus_cases, FIXTURES, parse_xml, require_module)
+    build_sdf_checker, check_urdf_verdict, CORPUS, corpus_cases, FIXTURES, parse_xml,
+    require_module)
 from lxml import etree
 import pytest
 from registry_robots import absolute_meshes, robot_id, robots, search_paths
@@ -304,4 +306,83 @@ def test_relative_file_and_mesh_paths_reach_mujoco(tmp_path: Path, monkeypatch) 
     mujoco.MjModel.from_xml_path(str(tmp_path / 'robot' / 'cube.urdf'))  # MuJoCo reads it
     monkeypatch.chdir(tmp_path)
     result = CliRunner().invoke(main, ['check', '--engines', 'mujoco', 'robot/cube.urdf'])
+    assert ' M505 ' not in result.output and ' M506 ' not in result.output, result.output
+
+
+def _mujoco_refusal(path: Path) -> str | None:
+    """Return why MuJoCo refuses the file where it is (None: it compiles it)."""
+    mujoco = require_module('mujoco')
+    try:
+        mujoco.MjModel.from_xml_path(str(path))
+    except ValueError as error:
+        return str(error)
+    return None
+
+
+def _check_mujoco(path: Path, work: Path, monkeypatch) -> list[str]:
+    """Run ``check --engines mujoco`` from ``work``; return its M505 lines."""
+    monkeypatch.chdir(work)
+    result = CliRunner().invoke(main, ['check', '--engines', 'mujoco', str(path)])
+    assert result.exit_code in (0, 1), result.output
+    return [line for line in result.stdout.splitlines() if ' M505 ' in line]
+
+
+def test_a_file_mujoco_refuses_as_written_is_reported(tmp_path: Path, monkeypatch) -> None:
+    # a <visual> with two <material>: check_urdf reads it, MuJoCo refuses the file
+    path = tmp_path / 'repeated_material.urdf'
+    text = (PREFLIGHT / 'repeated_material.urdf').read_text()
+    path.write_text(text)
+    refusal = _mujoco_refusal(path)
+    assert refusal is not None and check_urdf_verdict(path)
+    (said,) = _check_mujoco(path, tmp_path, monkeypatch)
+    line = re.search(r'line (\d+)', refusal)  # where MuJoCo says, the <material>
+    assert line and '<material name=' in text.splitlines()[int(line.group(1)) - 1]
+    assert said.startswith(f'{path}:{line.group(1)}:') and "'repeated_material'" in said
+    assert ' '.join(refusal.split()) in said
+    assert sorted(item.name for item in tmp_path.iterdir()) == [path.name]  # no log
+    # with one <material> MuJoCo compiles it, and nothing is said
+    path.write_text(text.replace('      <material name="grey"/>\n', ''))
+    assert _mujoco_refusal(path) is None
+    assert _check_mujoco(path, tmp_path, monkeypatch) == []
+
+
+def test_meshes_are_looked_up_as_mujoco_does_with_the_files_meshdir(
+        tmp_path: Path, monkeypatch) -> None:
+    trimesh = require_module('trimesh')
+    (tmp_path / 'meshes').mkdir()
+    trimesh.creation.box((0.1, 0.1, 0.3)).export(tmp_path / 'meshes' / 'arm.STL')
+    text = (PREFLIGHT / 'meshdir_twice.urdf').read_text()
+    path = tmp_path / 'meshdir_twice.urdf'
+    path.write_text(text)
+    refusal = _mujoco_refusal(path)
+    assert refusal is not None and 'meshes/meshes/arm.STL' in refusal
+    work = tmp_path / 'elsewhere'
+    work.mkdir()
+    (said,) = _check_mujoco(path, work, monkeypatch)
+    assert 'meshes/meshes/arm.STL' in said and 'meshdir' in said
+    assert list(work.iterdir()) == [] and 'MUJOCO_LOG.TXT' not in os.listdir(tmp_path)
+    # written relative to the meshdir, or without it, MuJoCo finds the mesh
+    for fixed in (text.replace('"meshes/arm.STL"', '"arm.STL"'),
+                  re.sub(r'\s*<mujoco>.*</mujoco>', '', text, flags=re.S)):
+        path.write_text(fixed)
+        assert _mujoco_refusal(path) is None
+        assert _check_mujoco(path, work, monkeypatch) == []
+
+
+def test_package_meshes_reach_mujoco_reading_the_file_as_written(
+        tmp_path: Path, monkeypatch) -> None:
+    trimesh = require_module('trimesh')
+    package = tmp_path / 'src' / 'arm_description'
+    (package / 'meshes').mkdir(parents=True)
+    (package / 'package.xml').write_text('<package><name>arm_description</name></package>')
+    trimesh.creation.box((0.1, 0.1, 0.3)).export(package / 'meshes' / 'arm.STL')
+    text = (PREFLIGHT / 'meshdir_twice.urdf').read_text()
+    text = re.sub(r'\s*<mujoco>.*</mujoco>', '', text, flags=re.S).replace(
+        '"meshes/arm.STL"', '"package://arm_description/meshes/arm.STL"')
+    path = package / 'arm.urdf'
+    path.write_text(text)
+    assert _mujoco_refusal(path) is not None  # MuJoCo itself knows no package://
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(main, ['check', '--engines', 'mujoco', '--package-path',
+                                       str(tmp_path / 'src'), str(path)])
     assert ' M505 ' not in result.output and ' M506 ' not in result.output, result.output

@@ -21,6 +21,7 @@ engines themselves in the test (check_urdf, MuJoCo), never written down.
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 from helpers import check_urdf_verdict, FIXTURES, require_module
@@ -223,3 +224,72 @@ def test_findings_on_a_crlf_file_carry_the_same_lines(name: str, tmp_path: Path)
                 for finding in Robot.from_urdf(path).validate()]
     assert located(crlf) == located(source)
     assert all(line is not None for _, line, _ in located(crlf))
+
+
+_TENSOR_ROBOT = """<robot name="tensor">
+  <link name="base_link">
+    <inertial><mass value="{root_mass}"/><inertia {root}/></inertial>
+  </link>
+  <link name="arm">
+    <inertial><mass value="{mass}"/><inertia {arm}/></inertial>
+  </link>
+  <joint name="shoulder" type="{joint}">
+    <parent link="base_link"/><child link="arm"/><axis xyz="0 0 1"/>
+    <limit lower="-1" upper="1" effort="1" velocity="1"/>
+  </joint>
+</robot>
+"""
+
+
+def _tensor(ixx: float, iyy: float, izz: float, ixy: float = 0.0, iyz: float = 0.0) -> str:
+    return (f'ixx="{ixx!r}" ixy="{ixy!r}" ixz="0.0" iyy="{iyy!r}" iyz="{iyz!r}" '
+            f'izz="{izz!r}"')
+
+
+def _turned_disc(degrees: int, a: float = 0.25e-3) -> str:
+    """Return a disc's tensor (moments a, a, 2a) turned about x: on the triangle limit."""
+    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+    return _tensor(a, a * c * c + 2 * a * s * s, a * s * s + 2 * a * c * c, iyz=a * c * s)
+
+
+_EVEN = _tensor(0.01, 0.01, 0.01)
+_A = 1e-3  # ixx = iyy = a, izz = 2a, ixy = a - d: eigenvalues d, 2a - d, 2a
+# (part, joint, mass, tensor): just above and just below MuJoCo's limits
+TENSORS = {
+    'cube_1e-14': ('arm', 'revolute', 1e-3, _tensor(1e-14, 1e-14, 1e-14)),
+    'cube_0.99e-14': ('arm', 'revolute', 1e-3, _tensor(0.99e-14, 0.99e-14, 0.99e-14)),
+    'cube_5e-15': ('arm', 'revolute', 1e-3, _tensor(5e-15, 5e-15, 5e-15)),
+    'cube_5e-15_fixed': ('arm', 'fixed', 1e-3, _tensor(5e-15, 5e-15, 5e-15)),
+    'cube_5e-15_root': ('root', 'revolute', 1.0, _tensor(5e-15, 5e-15, 5e-15)),
+    'needle_1.01e-14': ('arm', 'revolute', 1.0, _tensor(1e-3, 1e-3, 1.01e-14)),
+    'needle_0.99e-14': ('arm', 'revolute', 1.0, _tensor(1e-3, 1e-3, 0.99e-14)),
+    'turned_1.1e-14': ('arm', 'revolute', 1.0, _tensor(_A, _A, 2 * _A, _A - 1.1e-14)),
+    'turned_0.9e-14': ('arm', 'revolute', 1.0, _tensor(_A, _A, 2 * _A, _A - 0.9e-14)),
+    # the triangle inequality, as MuJoCo adds the moments (flat plates: ixx + iyy = izz)
+    'disc_exact': ('arm', 'revolute', 1.0, _tensor(0.25e-3, 0.25e-3, 0.5e-3)),
+    'disc_over': ('arm', 'revolute', 1.0, _tensor(0.25e-3, 0.25e-3, 0.5e-3 * (1 + 1e-15))),
+    'plate_rounded_in': ('arm', 'fixed', 1.0, _tensor(
+        0.0016333333333333336, 0.0008333333333333335, 0.002466666666666667)),
+    'plate_rounded_out': ('arm', 'fixed', 1.0, _tensor(
+        0.010208333333333335, 0.0008333333333333335, 0.01104166666666667)),
+    # discs turned about x: on the limit, MuJoCo's rounding decides (7: it refuses, 8: not)
+    'disc_turned_7': ('arm', 'revolute', 1.0, _turned_disc(7)),
+    'disc_turned_8': ('arm', 'revolute', 1.0, _turned_disc(8)),
+    'zeros_moving': ('arm', 'revolute', 1.0, _tensor(0.0, 0.0, 0.0)),
+    'zeros_fixed': ('arm', 'fixed', 1.0, _tensor(0.0, 0.0, 0.0)),
+    'mass_1e-15': ('arm', 'revolute', 1e-15, _EVEN),
+    'mass_0.99e-15': ('arm', 'revolute', 0.99e-15, _EVEN),
+}
+
+
+@pytest.mark.parametrize('name', sorted(TENSORS))
+def test_inertia_errors_are_exactly_what_mujoco_refuses(name: str, tmp_path: Path) -> None:
+    part, joint, mass, tensor = TENSORS[name]
+    path = tmp_path / f'{name}.urdf'
+    path.write_text(_TENSOR_ROBOT.format(
+        root_mass=mass if part == 'root' else 1.0, root=tensor if part == 'root' else _EVEN,
+        mass=1.0 if part == 'root' else mass, arm=_EVEN if part == 'root' else tensor,
+        joint=joint))
+    errors = [finding for finding in Robot.from_urdf(path).validate()
+              if finding.code in ('I201', 'I202', 'I203')]
+    assert bool(errors) == (not mujoco_accepts(path)), errors

@@ -17,21 +17,25 @@
 from __future__ import annotations
 
 import math
-import sys
 
 from urdfgenpy_ros.geometry import Box, Cylinder, Sphere
 from urdfgenpy_ros.inertial import box_tensor, cylinder_tensor, Inertial, sphere_tensor
 from urdfgenpy_ros.joint import JointType
 from urdfgenpy_ros.link import Link, Shape
 from urdfgenpy_ros.robot import Robot
-from urdfgenpy_ros.transforms import symmetric_eigenvalues
+from urdfgenpy_ros.transforms import Matrix3
 from urdfgenpy_ros.validation.findings import Findings, link_path
 from urdfgenpy_ros.validation.preflight import sdformat_conversion, SDFORMAT_ZERO_MASS
 
-# MuJoCo's mjMINVAL: the mass and every principal moment of a moving body must exceed it
-# (its compiler refuses the model otherwise); Gazebo's tools test the same things.
+# MuJoCo's mjMINVAL (include/mujoco/mjtype.h): a moving body needs a mass of at least this
+# (user_model.cc, CheckBodyMassInertia), as do its moments when all six are zero.
 MINIMUM = 1e-15
-ROUNDING = 8 * sys.float_info.epsilon  # relative error of the computed principal moments
+# MuJoCo's mjEPS (src/user/user_util.h): its URDF reader keeps the six numbers as a full
+# tensor (xml_urdf.cc) unless all are zero, and every body's tensor needs eigenvalues of at
+# least this, whether the body moves or not (user_util.cc, mjuu_fullInertia: "inertia must
+# have positive eigenvalues"; mjCBody::Compile).
+EIGENVALUE_MINIMUM = 1e-14
+BORDER = 64 * 2.0 ** -52  # closer to a limit than this (relative), rounding decides
 IMPLAUSIBLE = 100.0  # a tensor this many times off the geometry's is a unit slip
 
 
@@ -45,7 +49,7 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
         joint = parent_joint.get(link.name)
         inertial = link.inertial
         if lumped_mass.get(link.name, 0.0) >= SDFORMAT_ZERO_MASS and (
-                inertial is None or not inertial.mass > MINIMUM):
+                inertial is None or not inertial.mass >= MINIMUM):
             continue  # a fixed child lumped into it gives it mass, in Gazebo and MuJoCo
         moves = joint is not None and joint.type is not JointType.FIXED
         where, element = link_path(link.name) + '/inertial', f'link {link.name!r}'
@@ -69,7 +73,7 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
             findings.add('I205', inertial, element, where, 'the root link has an inertia',
                          'KDL ignores it (and warns): add a massless root link, e.g. '
                          'base_footprint, joined by a fixed joint', 'inertial')
-        if not inertial.mass > MINIMUM:
+        if not inertial.mass >= MINIMUM:
             if moves and joint is not None:
                 findings.add('I201', inertial, element, where + '/mass',
                              f'mass is {inertial.mass:g} on a link that moves '
@@ -117,20 +121,27 @@ def _check_tensor(inertial: Inertial, element: str, where: str, findings: Findin
     """
     Check the principal moments as the engines do; return whether the tensor is usable.
 
-    MuJoCo refuses a body whose moments are not all above its minimum (I202) or break the
-    triangle inequality (I203), whether it moves or not. The one exception is a tensor of
-    zeros on a link that does not move, a point mass or a frame: Gazebo's converter and
-    MuJoCo accept it (I208, a warning).
+    MuJoCo refuses a body whose tensor has an eigenvalue below 1e-14 (I202), or whose
+    principal moments break the triangle inequality (I203), whether it moves or not. The
+    one exception is a tensor of zeros, which MuJoCo does not read as a tensor: on a link
+    that does not move (a point mass or a frame) Gazebo's converter and MuJoCo accept it
+    (I208, a warning); on a moving link MuJoCo refuses it (I202).
     """
     values = (inertial.ixx, inertial.ixy, inertial.ixz, inertial.iyy, inertial.iyz,
               inertial.izz)
     if not all(math.isfinite(value) for value in values):
         return False  # reported as R305
-    small, middle, large = moments = symmetric_eigenvalues(inertial.tensor)
+    small, middle, large = moments = principal_moments(inertial.tensor)
     listed = ', '.join(f'{m:.4g}' for m in moments)
-    if small <= MINIMUM:
-        problem = f'principal moments {listed} are not all above {MINIMUM:g}'
-    elif small + middle < large * (1.0 - ROUNDING):
+    minimum = EIGENVALUE_MINIMUM if any(values) else MINIMUM
+    below, uneven = small < minimum, small + middle < large  # as MuJoCo adds them
+    if any(values[index] for index in (1, 2, 4)) and (
+            abs(small - minimum) <= BORDER * large or abs(small + middle - large)
+            <= BORDER * large):
+        below, uneven = _mujoco_verdict(values, (below, uneven))
+    if below:
+        problem = f'principal moments {listed} are not all at least {minimum:g}'
+    elif uneven:
         problem = f'principal moments {small:.4g} + {middle:.4g} < {large:.4g}'
     else:
         return True
@@ -139,17 +150,73 @@ def _check_tensor(inertial: Inertial, element: str, where: str, findings: Findin
                      'a point mass on a link that does not move: Gazebo and MuJoCo accept '
                      'it; compute the tensor from the geometry (Inertial.from_geometry) if '
                      'the link will ever move', 'inertia')
-    elif small <= MINIMUM:
+    elif small < minimum:
         findings.add('I202', inertial, element, where + '/inertia', problem,
-                     'every body has positive moments (MuJoCo refuses the model; only a link '
-                     'that does not move may have six zeros): compute the '
-                     'tensor from the geometry (Inertial.from_geometry) or from CAD',
+                     'MuJoCo refuses the model (it needs every moment of at least 1e-14; only '
+                     'a link that does not move may have six zeros): compute the tensor from '
+                     'the geometry (Inertial.from_geometry) or from CAD',
                      'inertia')
     else:
         findings.add('I203', inertial, element, where + '/inertia', problem,
                      'no rigid body has that: check the tensor (MuJoCo refuses it, even on '
                      'a link that does not move)', 'inertia')
     return False
+
+
+def _mujoco_verdict(values: tuple[float, ...], ours: tuple[bool, bool]) -> tuple[bool, bool]:
+    """
+    Return MuJoCo's (eigenvalue too small, triangle broken) for a turned tensor at a limit.
+
+    Within rounding of a limit, a tensor with products of inertia passes or fails by how
+    MuJoCo's own eigenvalue routine rounds: a one-link URDF asks it, when it is installed.
+    """
+    try:
+        import mujoco
+    except ImportError:
+        return ours
+    names = ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz')
+    tensor = ' '.join(f'{name}="{value!r}"' for name, value in zip(names, values))
+    try:
+        mujoco.MjModel.from_xml_string(
+            f'<robot name="tensor"><link name="body"><inertial><mass value="1"/>'
+            f'<inertia {tensor}/></inertial></link></robot>')
+    except ValueError as error:
+        said = str(error)
+        return 'eigenvalues' in said, 'A + B >= C' in said
+    return False, False
+
+
+def principal_moments(tensor: Matrix3) -> tuple[float, float, float]:
+    """
+    Return the eigenvalues of a symmetric 3x3 tensor, smallest first, to rounding.
+
+    Jacobi rotations: unlike the closed form, they keep two nearly equal moments (a rod, a
+    disc turned off its axes) and a tiny one accurate, which the limits above need.
+    """
+    a = [list(row) for row in tensor]
+    for _ in range(32):
+        turned = False
+        for p, q in ((0, 1), (0, 2), (1, 2)):
+            apq = a[p][q]
+            if abs(apq) <= 1e-18 * (abs(a[p][p]) + abs(a[q][q])):
+                continue
+            turned = True
+            theta = (a[q][q] - a[p][p]) / (2.0 * apq)
+            t = (1.0 / (2.0 * theta) if abs(theta) > 1e150 else
+                 math.copysign(1.0, theta) / (abs(theta) + math.sqrt(theta * theta + 1.0)))
+            c = 1.0 / math.sqrt(t * t + 1.0)
+            s = t * c
+            a[p][p] -= t * apq
+            a[q][q] += t * apq
+            a[p][q] = a[q][p] = 0.0
+            r = 3 - p - q
+            arp, arq = a[r][p], a[r][q]
+            a[r][p] = a[p][r] = c * arp - s * arq
+            a[r][q] = a[q][r] = s * arp + c * arq
+        if not turned:
+            break
+    small, middle, large = sorted((a[0][0], a[1][1], a[2][2]))
+    return small, middle, large
 
 
 def _check_plausible(link: Link, inertial: Inertial, element: str, where: str,

@@ -21,7 +21,8 @@ fused into their parent body and the root into the world (M501); a link without
 range (M503); a mesh collides as its convex hull (M504, decided with trimesh when it is
 installed). The model MuJoCo compiles has its mesh URIs resolved to absolute paths and its
 visuals left out (MuJoCo discards them); a collision mesh it cannot read is left out too and
-reported (M506). Without the ``mujoco`` package, M501 and M503 follow its rules.
+reported (M506). MuJoCo then reads the user's file itself, as written (M505 when it refuses
+what the rebuilt model hid). Without the ``mujoco`` package, M501 and M503 follow its rules.
 """
 
 from __future__ import annotations
@@ -33,11 +34,12 @@ import dataclasses
 import math
 import os
 from pathlib import Path
+import re
 import sys
 import tempfile
 from typing import Any
 
-from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.errors import SourceLocation, UrdfgenpyError
 from urdfgenpy_ros.geometry import Mesh
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import JointType
@@ -77,6 +79,8 @@ def mujoco_findings(robot: Robot, findings: Findings, search_paths: list[Any],
                      PREFLIGHT_HINTS['M507'], 'robot')
     if model is None:
         return
+    if not any(finding.code == 'M506' for finding in findings.items):
+        _as_written(robot, findings, search_paths, base, mujoco)
     bodies = {model.body(index).name: index for index in range(model.nbody)}
     into = _fused(robot, set(bodies), findings)
     _masses(robot, model, bodies, into, findings)
@@ -110,6 +114,70 @@ def _quiet(said: list[str]) -> Iterator[None]:
             text = printed.read().decode('utf-8', 'replace')
             said += [' '.join(line.removeprefix('WARNING:').split())
                      for line in text.splitlines() if line.strip()]
+
+
+def _as_written(robot: Robot, findings: Findings, search_paths: list[Any],
+                base: Path | None, mujoco: Any) -> None:
+    """
+    Let MuJoCo read the user's file itself; report a refusal the rebuilt model hides (M505).
+
+    The model compiled above is rebuilt (visuals left out, absolute mesh paths), so MuJoCo
+    never sees, say, a repeated ``<material>`` or a mesh path its ``<compiler meshdir>``
+    does not find. Here it reads the file where it is, as written; only the URIs it cannot
+    open (``package://``, ``file://``) are handed to it resolved, as assets. It still runs
+    in a folder of its own (see _quiet). Skipped when the robot is not that file's (Xacro,
+    or edited since it was read).
+    """
+    from urdfgenpy_ros.formats import load
+    source = robot.source.file if robot.source is not None else None
+    if not source or not Path(source).is_file():
+        return
+    path = Path(source).resolve()
+    try:
+        again = load(path)
+    except (UrdfgenpyError, OSError, ValueError):
+        return
+    if any(note.code.startswith('X') for note in again.read_warnings) \
+            or again.to_urdf() != robot.to_urdf():
+        return
+    resolver = PackageResolver(search_paths)
+    assets: dict[str, bytes] = {}
+    uses_meshdir = False
+    for node in _elements(path):
+        uses_meshdir |= node.tag == 'compiler' and node.get('meshdir') is not None
+        uri = node.get('filename', '') if node.tag == 'mesh' else ''
+        if '://' in uri:
+            try:
+                assets[uri] = resolver.resolve(uri, base).read_bytes()
+            except (UrdfgenpyError, OSError):
+                continue  # a visual mesh (MuJoCo drops visuals), or said as M506
+    try:
+        with _quiet([]):  # its warnings were said once (M507)
+            mujoco.MjModel.from_xml_path(str(path), assets)
+    except ValueError as error:
+        said = ' '.join(str(error).split())
+        line = re.search(r"Element '([\w:-]+)', line (\d+)", said)
+        where: Any = robot
+        tag = 'robot'
+        if line:
+            where, tag = SourceLocation(str(path), int(line.group(2))), line.group(1)
+        hint = PREFLIGHT_HINTS['M505']
+        if uses_meshdir and 'Error opening file' in said:
+            hint = ('MuJoCo looks for meshes under the <compiler meshdir> of the file: write '
+                    'their filenames relative to it, or drop the meshdir')
+        findings.add('M505', where, f'robot {robot.name!r}', '/robot',
+                     f'MuJoCo refuses {path.name} as it is written: {said}', hint, tag)
+
+
+def _elements(path: Path) -> Iterator[Any]:
+    """Return the elements of the file at ``path`` (none when it is not XML)."""
+    from lxml import etree
+    try:
+        tree = etree.parse(str(path), etree.XMLParser(resolve_entities=False,
+                                                      no_network=True))
+    except (etree.Error, OSError):
+        return iter(())
+    return (node for node in tree.iter() if isinstance(node.tag, str))
 
 
 def _compilable(robot: Robot, findings: Findings, search_paths: list[Any],
