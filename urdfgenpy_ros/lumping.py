@@ -16,9 +16,9 @@
 Merge links joined by fixed joints, as SDFormat's URDF conversion does.
 
 The child's visuals, collisions, sensors (also those in its ``<gazebo>`` blocks) and joints
-move onto the parent with their poses composed; the inertials combine (masses add, the centre of mass is their weighted mean, and
-the tensors are turned into the parent's frame and shifted there by the parallel axis
-theorem).
+move onto the parent with their poses composed; the inertials combine (masses add, the
+centre of mass is their weighted mean, and the tensors are turned into the parent's frame
+and shifted there by the parallel axis theorem).
 """
 
 from __future__ import annotations

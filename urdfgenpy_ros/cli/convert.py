@@ -73,7 +73,7 @@ def _refuse_invalid_inertia(robot: Robot, source: Path, target: Path,
     """Print one line per link whose inertia libsdformat refuses; then refuse the SDF."""
     refused = refused_inertias(robot, lump_fixed)
     for finding, parent in refused:
-        fix = (f'pass --lump-fixed (it merges the link into {parent!r}, as libsdformat\'s '
+        fix = (f"pass --lump-fixed (it merges the link into {parent!r}, as libsdformat's "
                'conversion does) or fix the tensor (urdfgenpy check --fix)'
                if parent is not None else 'fix the tensor (urdfgenpy check --fix)')
         click.echo(f'{finding.location}: error {finding.code} {finding.element}: '
