@@ -29,6 +29,7 @@ from urdfgenpy_ros.cli._options import input_options, read_robot
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.formats.sdf_inertia import refused_inertias
+from urdfgenpy_ros.lumping import lump_fixed_joints
 from urdfgenpy_ros.resources import rebase_meshes
 from urdfgenpy_ros.robot import Robot
 
@@ -61,10 +62,9 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     if kind == 'sdf':
         _refuse_invalid_inertia(robot, source, target, lump_fixed)
     rebase_meshes(robot, source.parent, target.parent)  # relative meshes still found
-    if kind == 'sdf':
-        robot.to_sdf(target, lump_fixed=lump_fixed)
-    else:
-        robot.save(target)
+    if lump_fixed:
+        robot = lump_fixed_joints(robot)  # what to_sdf(lump_fixed=True) writes
+    robot.save(target)
     click.echo(f'wrote {target}: {len(robot.links)} links, {len(robot.joints)} joints')
 
 
