@@ -105,6 +105,22 @@ def test_convert_says_so_when_lumping_cannot_help(sdformat_refused, tmp_path: Pa
     assert result.stderr.splitlines()[-1].endswith('fix them and convert again')
 
 
+def test_a_refused_link_the_validator_passes_over_is_named_too(
+        sdformat_refused, tmp_path: Path) -> None:
+    # A massless link that a lumped child gives mass: the validator does not judge its tensor.
+    source = tmp_path / 'massless.urdf'
+    source.write_text(FIXTURE.read_text().replace('<mass value="0.5"/>', '<mass value="0"/>')
+                      .replace('ixx="0" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"',
+                               'ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.01"'))
+    result = CliRunner().invoke(main, ['convert', str(source), str(tmp_path / 'out.sdf')])
+    assert result.exit_code == 2
+    Robot.from_urdf(source).to_sdf(tmp_path / 'direct.sdf')
+    _, refused = sdformat_refused(tmp_path / 'direct.sdf')
+    assert _named(result.stderr) == refused == {'camera', 'rod', 'flap'}
+    assert f"{source}:22:1: error I203 link 'rod': principal moments 0.001, 0.001, 0.01 " \
+        'break the triangle inequality' in result.stderr
+
+
 def test_anymal_converts_only_with_lump_fixed(sdformat_refused, tmp_path: Path) -> None:
     try:
         robots = metadata.distribution('example-robot-data').locate_file(

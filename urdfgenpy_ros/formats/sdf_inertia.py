@@ -26,10 +26,11 @@ from __future__ import annotations
 import sys
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.errors import ValidationError
+from urdfgenpy_ros.errors import Severity, SourceLocation, ValidationError
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.lumping import lumps, WORLD
 from urdfgenpy_ros.transforms import symmetric_eigenvalues
+from urdfgenpy_ros.validation.findings import link_path
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -41,27 +42,36 @@ def _epsilon(moments: tuple[float, float, float]) -> float:
     return _TOLERANCE * sys.float_info.epsilon * 2.0 * max(moments)
 
 
-def sdformat_refuses(inertial: Inertial) -> bool:
-    """Return whether libsdformat refuses a link with ``inertial``, as gz-math judges it."""
+def _problem(inertial: Inertial) -> tuple[str, str] | None:
+    """Return the finding code and problem libsdformat refuses ``inertial`` for, or None."""
     (ixx, ixy, ixz), (_, iyy, iyz), (_, _, izz) = inertial.tensor
     epsilon = _epsilon((ixx, iyy, izz))
     determinant = (ixx * (iyy * izz - iyz * iyz) - ixy * (ixy * izz - iyz * ixz)
                    + ixz * (ixy * iyz - iyy * ixz))
-    near_positive = (inertial.mass >= 0.0 and ixx >= -epsilon
-                     and ixx * iyy - ixy * ixy >= -epsilon and determinant >= -epsilon)
     moments = symmetric_eigenvalues(inertial.tensor)
+    listed = ', '.join(f'{m:.4g}' for m in moments)
+    if not (inertial.mass >= 0.0 and ixx >= -epsilon and ixx * iyy - ixy * ixy >= -epsilon
+            and determinant >= -epsilon):
+        return 'I202', f'principal moments {listed} are not all positive or zero'
     epsilon = _epsilon(moments)
     a, b, c = moments
-    valid = (min(moments) + epsilon >= 0.0 and a + b + epsilon >= c
-             and b + c + epsilon >= a and c + a + epsilon >= b)
-    return not (near_positive and valid)
+    if not (a + epsilon >= 0.0 and a + b + epsilon >= c and b + c + epsilon >= a
+            and c + a + epsilon >= b):
+        return 'I203', f'principal moments {listed} break the triangle inequality'
+    return None
+
+
+def sdformat_refuses(inertial: Inertial) -> bool:
+    """Return whether libsdformat refuses a link with ``inertial``, as gz-math judges it."""
+    return _problem(inertial) is not None
 
 
 def refused_inertias(robot: Robot, lump_fixed: bool = False
                      ) -> list[tuple[ValidationError, str | None]]:
     """
-    Return the I202/I203 findings on links SDF export writes that libsdformat refuses.
+    Return an I202/I203 finding for each link SDF export writes that libsdformat refuses.
 
+    The validator's finding when it has one (with the file and line), else one made here.
     Each comes with the parent of the link when ``lump_fixed`` would merge the link into it
     (as libsdformat's own URDF conversion does), else None.
     """
@@ -73,11 +83,19 @@ def refused_inertias(robot: Robot, lump_fixed: bool = False
                and sdformat_refuses(link.inertial)}
     if not refused:
         return []
+    findings = {finding.element: finding for finding in validate(written, check_meshes=False)
+                if finding.code in ('I202', 'I203') and finding.element in refused}
     found = []
-    for finding in validate(written, check_meshes=False):
-        link = refused.get(finding.element)
-        if finding.code in ('I202', 'I203') and link is not None:
-            joint = written.parent_joint(link.name)
-            found.append((finding, joint.parent if joint is not None and lumps(joint)
-                          else None))
+    for element, link in refused.items():
+        assert link.inertial is not None
+        finding = findings.get(element)
+        if finding is None:
+            code, problem = _problem(link.inertial) or ('I202', '')
+            source = link.inertial.source
+            where = (source if source is not None and source.line is not None
+                     else SourceLocation(path=link_path(link.name) + '/inertial/inertia'))
+            finding = ValidationError(code, Severity.ERROR, element, where, problem,
+                                      'libsdformat refuses it')
+        joint = written.parent_joint(link.name)
+        found.append((finding, joint.parent if joint is not None and lumps(joint) else None))
     return found
