@@ -56,7 +56,7 @@ def _move_sensor_blocks(blocks: list[Extension], at: Origin, link: str) -> None:
     A pose with ``relative_to`` names its frame already and stays as it is.
     """
     for block in blocks:
-        for sensor in block.element.iter('sensor'):
+        for sensor in block.element.findall('sensor'):
             pose = sensor.find('pose')
             if pose is not None and pose.get('relative_to'):
                 continue
