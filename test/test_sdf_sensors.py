@@ -91,3 +91,22 @@ def test_a_sensor_pose_relative_to_a_frame_stays_and_a_bad_one_is_named() -> Non
     pose.text = '0.01 0 0.02'
     with pytest.raises(ModelError, match="sensor 'front_camera' has pose '0.01 0 0.02'"):
         robot.to_sdf(lump_fixed=True)
+
+
+def test_a_sensor_pose_in_degrees_is_merged_as_its_angles_mean(
+        sdformat_sensors, tmp_path: Path) -> None:
+    # libsdformat 12 reads the numbers of <pose degrees="true"> as radians when it merges the
+    # link; the reference is its merge of the same pose written in radians.
+    text = (FIXTURES / 'lumped_sensors.urdf').read_text()
+    degrees = tmp_path / 'degrees.urdf'
+    degrees.write_text(text.replace('<pose>0.01 0 0.02 0 0.1 0.2</pose>',
+                                    '<pose degrees="true">0.01 0 0.02 0 10 20</pose>'))
+    radians = tmp_path / 'radians.urdf'
+    radians.write_text(text.replace('<pose>0.01 0 0.02 0 0.1 0.2</pose>',
+                                    '<pose>0.01 0 0.02 0 0.17453292519943295 '
+                                    '0.3490658503988659</pose>'))
+    ours = tmp_path / 'ours.sdf'
+    Robot.from_urdf(degrees).to_sdf(ours, lump_fixed=True)
+    key = ('base_link', 'front_camera')
+    assert sdformat_sensors(ours)[key] == pytest.approx(sdformat_sensors(radians)[key],
+                                                        abs=1e-5)
