@@ -15,16 +15,22 @@
 """
 Merge links joined by fixed joints, as SDFormat's URDF conversion does.
 
-The child's visuals, collisions, sensors and joints move onto the parent with their poses
-composed; the inertials combine (masses add, the centre of mass is their weighted mean, and
-the tensors are turned into the parent's frame and shifted there by the parallel axis
-theorem).
+The child's visuals, collisions, sensors (also those in its ``<gazebo>`` blocks) and joints
+move onto the parent with their poses composed; the inertials combine (masses add, the
+centre of mass is their weighted mean, and the tensors are turned into the parent's frame
+and shifted there by the parallel axis theorem).
 """
 
 from __future__ import annotations
 
 import copy
+import math
 
+from lxml import etree
+
+from urdfgenpy_ros.errors import ModelError
+from urdfgenpy_ros.extensions import Extension
+from urdfgenpy_ros.floats import fmt_vec
 from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import Joint, JointType
@@ -41,6 +47,36 @@ def _compose(outer: Origin, inner: Origin) -> Origin:
     xyz, rpy = to_xyz_rpy(multiply(from_xyz_rpy(outer.xyz, outer.rpy),
                                    from_xyz_rpy(inner.xyz, inner.rpy)))
     return Origin(xyz, rpy)
+
+
+def _move_sensor_blocks(blocks: list[Extension], at: Origin, link: str) -> None:
+    """
+    Compose the ``<pose>`` of each ``<sensor>`` in ``blocks`` with ``at``, as SDFormat does.
+
+    A pose with ``relative_to`` names its frame already and stays as it is.
+    """
+    for block in blocks:
+        for sensor in block.element.findall('sensor'):
+            pose = sensor.find('pose')
+            if pose is not None and pose.get('relative_to'):
+                continue
+            values = (pose.text or '').split() if pose is not None else ['0'] * 6
+            try:
+                numbers = [float(value) for value in values]
+            except ValueError:
+                numbers = []
+            if len(numbers) != 6 or (pose is not None and pose.get('rotation_format')
+                                     not in (None, 'euler_rpy')):
+                raise ModelError(f"link {link!r}: sensor {sensor.get('name')!r} has pose "
+                                 f"{(pose.text or '').strip()!r}, not 'x y z roll pitch yaw': "
+                                 'write six numbers to merge it into the parent link')
+            if pose is not None and pose.get('degrees', '').strip().lower() in ('true', '1'):
+                numbers[3:] = [math.radians(angle) for angle in numbers[3:]]
+                del pose.attrib['degrees']
+            moved = _compose(at, Origin(tuple(numbers[:3]), tuple(numbers[3:])))
+            if pose is None:
+                pose = etree.SubElement(sensor, 'pose')
+            pose.text = f'{fmt_vec(moved.xyz)} {fmt_vec(moved.rpy)}'
 
 
 def _tensor_in(inertial: Inertial, frame: Matrix4) -> tuple[list[float], list[list[float]]]:
@@ -112,6 +148,8 @@ def lump_fixed_joints(robot: Robot) -> Robot:
             sensor.origin = _compose(at, sensor.origin)
             sensor.frame = parent.name
             parent.sensors.append(sensor)
+        _move_sensor_blocks(child.extensions, at, child.name)
+        parent.extensions.extend(child.extensions)
         for grandchild in merged.child_joints(child.name):
             grandchild.parent = parent.name
             grandchild.origin = _compose(at, grandchild.origin)

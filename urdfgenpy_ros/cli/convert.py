@@ -12,7 +12,12 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""``urdfgenpy convert``: read one format, write another."""
+"""
+``urdfgenpy convert``: read one format, write another.
+
+An SDF that libsdformat would refuse (a link's inertia it finds invalid) is not written:
+each such link gets one line naming the fix, and the exit status is 2.
+"""
 
 from __future__ import annotations
 
@@ -23,7 +28,10 @@ import click
 from urdfgenpy_ros.cli._options import input_options, read_robot
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
+from urdfgenpy_ros.formats.sdf_inertia import refused_inertias
+from urdfgenpy_ros.lumping import lump_fixed_joints
 from urdfgenpy_ros.resources import rebase_meshes
+from urdfgenpy_ros.robot import Robot
 
 
 @click.command()
@@ -31,14 +39,48 @@ from urdfgenpy_ros.resources import rebase_meshes
 @click.argument('target', type=click.Path(dir_okay=False, path_type=Path))
 @click.argument('arguments', nargs=-1, metavar='[NAME:=VALUE]...')
 @click.option('--force', '-f', is_flag=True, help='Overwrite TARGET if it exists.')
+@click.option('--lump-fixed', is_flag=True,
+              help='SDF output: merge links joined by fixed joints into their parents, as '
+                   "libsdformat's own URDF conversion does.")
 @input_options
 def convert(source: Path, target: Path, arguments: tuple[str, ...],
-            package_paths: tuple[Path, ...], force: bool) -> None:
-    """Convert SOURCE to TARGET; the suffixes choose the formats (.urdf, .xacro)."""
-    format_of(target)
+            package_paths: tuple[Path, ...], force: bool, lump_fixed: bool) -> None:
+    """
+    Convert SOURCE to TARGET; the suffixes choose the formats.
+
+    SOURCE is .urdf, .xacro (.urdf.xacro), a DH table (.yaml, .yml, .csv) or an assembly
+    (.assembly.yaml); TARGET is .urdf, .xacro or .sdf. An SDF that libsdformat would
+    refuse (a link's inertia) is not written: exit status 2, one line per link.
+    """
+    kind = format_of(target)
+    if lump_fixed and kind != 'sdf':
+        raise UrdfgenpyError(f'{target}: --lump-fixed applies to .sdf output only: drop it '
+                             'or write .sdf')
     if target.exists() and not force:
         raise UrdfgenpyError(f'{target} exists: pass --force to overwrite it')
     robot = read_robot(source, arguments, package_paths)
+    if kind == 'sdf':
+        _refuse_invalid_inertia(robot, source, target, lump_fixed)
     rebase_meshes(robot, source.parent, target.parent)  # relative meshes still found
+    if lump_fixed:
+        robot = lump_fixed_joints(robot)  # what to_sdf(lump_fixed=True) writes
     robot.save(target)
     click.echo(f'wrote {target}: {len(robot.links)} links, {len(robot.joints)} joints')
+
+
+def _refuse_invalid_inertia(robot: Robot, source: Path, target: Path,
+                            lump_fixed: bool) -> None:
+    """Print one line per link whose inertia libsdformat refuses; then refuse the SDF."""
+    refused = refused_inertias(robot, lump_fixed)
+    for finding, parent in refused:
+        fix = (f"pass --lump-fixed (it merges the link into {parent!r}, as libsdformat's "
+               'conversion does) or fix the tensor (urdfgenpy check --fix)'
+               if parent is not None else 'fix the tensor (urdfgenpy check --fix)')
+        click.echo(f'{finding.location}: error {finding.code} {finding.element}: '
+                   f'{finding.message}, which libsdformat refuses: {fix}', err=True)
+    if refused:
+        lumpable = all(parent is not None for _, parent in refused)
+        raise UrdfgenpyError(
+            f'{target} not written: libsdformat would refuse the inertia of '
+            f'{len(refused)} link(s) (above): '
+            + ('pass --lump-fixed' if lumpable else 'fix them and convert again'))
