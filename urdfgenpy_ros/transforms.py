@@ -98,23 +98,34 @@ def to_xyz_rpy(matrix: Matrix4, snap: float = 1e-15) -> tuple[tuple[float, float
 
 
 def symmetric_eigenvalues(matrix: Matrix3) -> tuple[float, float, float]:
-    """Return the eigenvalues of a symmetric 3x3 matrix, smallest first (closed form)."""
-    (a, d, e), (_, b, f), (_, _, c) = matrix
-    off = d * d + e * e + f * f
-    if off == 0.0:
-        return tuple(sorted((a, b, c)))  # type: ignore[return-value]
-    mean = (a + b + c) / 3.0
-    spread = math.sqrt(((a - mean) ** 2 + (b - mean) ** 2 + (c - mean) ** 2 + 2.0 * off)
-                       / 6.0)
-    if spread == 0.0:
-        return (mean, mean, mean)
-    # B = (A - mean I) / spread; its determinant / 2 is cos(3 phi).
-    ba, bb, bc = (a - mean) / spread, (b - mean) / spread, (c - mean) / spread
-    bd, be, bf = d / spread, e / spread, f / spread
-    half_det = (ba * (bb * bc - bf * bf) - bd * (bd * bc - bf * be)
-                + be * (bd * bf - bb * be)) / 2.0
-    phi = math.acos(min(1.0, max(-1.0, half_det))) / 3.0
-    largest = mean + 2.0 * spread * math.cos(phi)
-    smallest = mean + 2.0 * spread * math.cos(phi + 2.0 * math.pi / 3.0)
-    middle = 3.0 * mean - largest - smallest
-    return (smallest, middle, largest)
+    """
+    Return the eigenvalues of a symmetric 3x3 matrix, smallest first, to rounding.
+
+    Jacobi rotations: unlike the closed form, they keep two nearly equal eigenvalues (a
+    rod's moments, a disc turned off its axes) and a tiny one accurate, which the engines'
+    inertia limits (validation/inertia.py) need.
+    """
+    a = [list(row) for row in matrix]
+    for _ in range(32):
+        turned = False
+        for p, q in ((0, 1), (0, 2), (1, 2)):
+            apq = a[p][q]
+            if abs(apq) <= 1e-18 * (abs(a[p][p]) + abs(a[q][q])):
+                continue
+            turned = True
+            theta = (a[q][q] - a[p][p]) / (2.0 * apq)
+            t = (1.0 / (2.0 * theta) if abs(theta) > 1e150 else
+                 math.copysign(1.0, theta) / (abs(theta) + math.sqrt(theta * theta + 1.0)))
+            c = 1.0 / math.sqrt(t * t + 1.0)
+            s = t * c
+            a[p][p] -= t * apq
+            a[q][q] += t * apq
+            a[p][q] = a[q][p] = 0.0
+            r = 3 - p - q
+            arp, arq = a[r][p], a[r][q]
+            a[r][p] = a[p][r] = c * arp - s * arq
+            a[r][q] = a[q][r] = s * arp + c * arq
+        if not turned:
+            break
+    small, middle, large = sorted((a[0][0], a[1][1], a[2][2]))
+    return small, middle, large

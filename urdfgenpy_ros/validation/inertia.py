@@ -23,7 +23,7 @@ from urdfgenpy_ros.inertial import box_tensor, cylinder_tensor, Inertial, sphere
 from urdfgenpy_ros.joint import JointType
 from urdfgenpy_ros.link import Link, Shape
 from urdfgenpy_ros.robot import Robot
-from urdfgenpy_ros.transforms import Matrix3
+from urdfgenpy_ros.transforms import symmetric_eigenvalues
 from urdfgenpy_ros.validation.findings import Findings, link_path
 from urdfgenpy_ros.validation.preflight import sdformat_conversion, SDFORMAT_ZERO_MASS
 
@@ -131,7 +131,7 @@ def _check_tensor(inertial: Inertial, element: str, where: str, findings: Findin
               inertial.izz)
     if not all(math.isfinite(value) for value in values):
         return False  # reported as R305
-    small, middle, large = moments = principal_moments(inertial.tensor)
+    small, middle, large = moments = symmetric_eigenvalues(inertial.tensor)
     listed = ', '.join(f'{m:.4g}' for m in moments)
     minimum = EIGENVALUE_MINIMUM if any(values) else MINIMUM
     below, uneven = small < minimum, small + middle < large  # as MuJoCo adds them
@@ -184,39 +184,6 @@ def _mujoco_verdict(values: tuple[float, ...], ours: tuple[bool, bool]) -> tuple
         said = str(error)
         return 'eigenvalues' in said, 'A + B >= C' in said
     return False, False
-
-
-def principal_moments(tensor: Matrix3) -> tuple[float, float, float]:
-    """
-    Return the eigenvalues of a symmetric 3x3 tensor, smallest first, to rounding.
-
-    Jacobi rotations: unlike the closed form, they keep two nearly equal moments (a rod, a
-    disc turned off its axes) and a tiny one accurate, which the limits above need.
-    """
-    a = [list(row) for row in tensor]
-    for _ in range(32):
-        turned = False
-        for p, q in ((0, 1), (0, 2), (1, 2)):
-            apq = a[p][q]
-            if abs(apq) <= 1e-18 * (abs(a[p][p]) + abs(a[q][q])):
-                continue
-            turned = True
-            theta = (a[q][q] - a[p][p]) / (2.0 * apq)
-            t = (1.0 / (2.0 * theta) if abs(theta) > 1e150 else
-                 math.copysign(1.0, theta) / (abs(theta) + math.sqrt(theta * theta + 1.0)))
-            c = 1.0 / math.sqrt(t * t + 1.0)
-            s = t * c
-            a[p][p] -= t * apq
-            a[q][q] += t * apq
-            a[p][q] = a[q][p] = 0.0
-            r = 3 - p - q
-            arp, arq = a[r][p], a[r][q]
-            a[r][p] = a[p][r] = c * arp - s * arq
-            a[r][q] = a[q][r] = s * arp + c * arq
-        if not turned:
-            break
-    small, middle, large = sorted((a[0][0], a[1][1], a[2][2]))
-    return small, middle, large
 
 
 def _check_plausible(link: Link, inertial: Inertial, element: str, where: str,
