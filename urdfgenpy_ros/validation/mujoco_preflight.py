@@ -128,6 +128,8 @@ def _as_written(robot: Robot, findings: Findings, search_paths: list[Any],
     in a folder of its own (see _quiet). Skipped when the robot is not that file's (Xacro,
     or edited since it was read).
     """
+    from lxml import etree
+
     from urdfgenpy_ros.formats import load
     source = robot.source.file if robot.source is not None else None
     if not source or not Path(source).is_file():
@@ -138,12 +140,12 @@ def _as_written(robot: Robot, findings: Findings, search_paths: list[Any],
     except (UrdfgenpyError, OSError, ValueError):
         return
     if any(note.code.startswith('X') for note in again.read_warnings) \
-            or again.to_urdf() != robot.to_urdf():
+            or again.extras is None or again.to_urdf() != robot.to_urdf():
         return
     resolver = PackageResolver(search_paths)
     assets: dict[str, bytes] = {}
     uses_meshdir = False
-    for node in _elements(path):
+    for node in again.extras.node.getroottree().iter(etree.Element):  # the file as read
         uses_meshdir |= node.tag == 'compiler' and node.get('meshdir') is not None
         uri = node.get('filename', '') if node.tag == 'mesh' else ''
         if '://' in uri:
@@ -167,17 +169,6 @@ def _as_written(robot: Robot, findings: Findings, search_paths: list[Any],
                     'their filenames relative to it, or drop the meshdir')
         findings.add('M505', where, f'robot {robot.name!r}', '/robot',
                      f'MuJoCo refuses {path.name} as it is written: {said}', hint, tag)
-
-
-def _elements(path: Path) -> Iterator[Any]:
-    """Return the elements of the file at ``path`` (none when it is not XML)."""
-    from lxml import etree
-    try:
-        tree = etree.parse(str(path), etree.XMLParser(resolve_entities=False,
-                                                      no_network=True))
-    except (etree.Error, OSError):
-        return iter(())
-    return (node for node in tree.iter() if isinstance(node.tag, str))
 
 
 def _compilable(robot: Robot, findings: Findings, search_paths: list[Any],
