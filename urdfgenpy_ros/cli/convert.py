@@ -59,19 +59,18 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     if target.exists() and not force:
         raise UrdfgenpyError(f'{target} exists: pass --force to overwrite it')
     robot = read_robot(source, arguments, package_paths)
-    if kind == 'sdf':
-        _refuse_invalid_inertia(robot, source, target, lump_fixed)
-    rebase_meshes(robot, source.parent, target.parent)  # relative meshes still found
     if lump_fixed:
         robot = lump_fixed_joints(robot)  # what to_sdf(lump_fixed=True) writes
+    if kind == 'sdf':
+        _refuse_invalid_inertia(robot, target)
+    rebase_meshes(robot, source.parent, target.parent)  # relative meshes still found
     robot.save(target)
     click.echo(f'wrote {target}: {len(robot.links)} links, {len(robot.joints)} joints')
 
 
-def _refuse_invalid_inertia(robot: Robot, source: Path, target: Path,
-                            lump_fixed: bool) -> None:
-    """Print one line per link whose inertia libsdformat refuses; then refuse the SDF."""
-    refused = refused_inertias(robot, lump_fixed)
+def _refuse_invalid_inertia(robot: Robot, target: Path) -> None:
+    """Print one line per link of ``robot`` whose inertia libsdformat refuses; then refuse."""
+    refused = refused_inertias(robot)
     for finding, parent in refused:
         fix = (f"pass --lump-fixed (it merges the link into {parent!r}, as libsdformat's "
                'conversion does) or fix the tensor (urdfgenpy check --fix)'
