@@ -272,3 +272,33 @@ def test_a_line_break_inside_a_value_does_not_decide_the_files_line_ends() -> No
     robot.get_link('a').inertial.mass = 2.0
     removed, added = _changed(text, robot.to_urdf())
     assert removed == ['      <mass value="1" />'] and added == ['      <mass value="2" />']
+
+
+_ATTRIBUTES_ON_LINES = """<?xml version="1.0"?>
+<robot name="lines">
+  <link
+    name="base"/>
+  <link name="arm"></link>
+  <joint name="j" type="fixed"><parent link="base"/><child link="arm"/></joint>
+  <gazebo
+    reference="arm">
+    <material>Gazebo/Red</material>
+  </gazebo>
+</robot>
+"""
+
+
+def test_a_block_edited_before_the_first_write_is_written_edited() -> None:
+    """A source node changed in place before anything was written keeps its change."""
+    from lxml import etree
+    robot = Robot.from_urdf_string(_ATTRIBUTES_ON_LINES)
+    block = robot.get_link('arm').extensions[0]
+    block.element.set('reference', 'arm')  # the same value, set again
+    block.element.set('name', 'tip')
+    etree.SubElement(block.element, 'self_collide').text = 'true'
+    written = etree.fromstring(robot.to_urdf().encode())
+    assert [dict(node.attrib) for node in written.iter('gazebo')] == [
+        {'reference': 'arm', 'name': 'tip'}]
+    assert written.find('gazebo/self_collide').text == 'true'
+    text = Robot.from_urdf_string(_ATTRIBUTES_ON_LINES).to_urdf()
+    assert text == _ATTRIBUTES_ON_LINES

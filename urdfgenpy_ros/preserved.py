@@ -17,6 +17,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any, NamedTuple
 
 
@@ -62,17 +63,44 @@ class Preserved:
 
 
 class DocumentPreserved(Preserved):
-    """What a reader kept of the ``<robot>`` element: its items' order, layout, comments."""
+    """
+    What a reader kept of the ``<robot>`` element: its items' order, layout, comments.
 
-    __slots__ = ('order', 'outside', 'layout', 'start_tags')
+    ``layout`` and ``start_tags`` are only needed to write: ``details``, given by the reader,
+    works them out from the source text on first use and is then dropped.
+    """
+
+    __slots__ = ('order', 'outside', '_layout', '_start_tags', '_details')
 
     def __init__(self, node: Any, order: list[Any], outside: tuple[list[Any], list[Any]],
-                 layout: Layout,
-                 start_tags: dict[Any, tuple[str, tuple[tuple[str, str], ...]]] | None = None
+                 layout: Layout | None = None,
+                 start_tags: dict[Any, tuple[str, tuple[tuple[str, str], ...]]] | None = None,
+                 details: Callable[[Any], tuple[Layout, dict[Any, Any]]] | None = None
                  ) -> None:
         super().__init__(node)
         self.order = order
         self.outside = outside
-        self.layout = layout
+        self._layout = layout or Layout()
         # the source start tags lxml would write otherwise (formats/start_tags.py)
-        self.start_tags = start_tags or {}
+        self._start_tags = start_tags or {}
+        self._details = details
+
+    def _work_out(self) -> None:
+        details, self._details = self._details, None
+        if details is not None:
+            self._layout, self._start_tags = details(self.node)
+
+    @property
+    def layout(self) -> Layout:  # type: ignore[override]
+        """Return how the file was written (indentation, line ends, quotes, first lines)."""
+        if self._details is not None:
+            self._work_out()
+        return self._layout
+
+    @property
+    def start_tags(  # type: ignore[override]
+            self) -> dict[Any, tuple[str, tuple[tuple[str, str], ...]]]:
+        """Return the source start tags lxml would write otherwise, by element."""
+        if self._details is not None:
+            self._work_out()
+        return self._start_tags

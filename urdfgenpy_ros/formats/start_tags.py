@@ -80,10 +80,8 @@ def unusual_start_tags(document: Any, text: str, start: int | None = None,
     own start tag is not recorded then: writers put the source's back as it was).
     ``newline`` is the file's line end, which the writer puts back at each line break.
     """
-    if start is not None:
-        written = etree.tostring(document, encoding='unicode', with_tail=False)
-        if text.startswith(written[tag_end(written, 0):], tag_end(text, start)):
-            return {}  # lxml writes all inside the root's start tag as the source has it
+    if start is not None and written_as_source(document, text, start):
+        return {}
     found = _Recorded()
     elements = document.iter(etree.Element)
     index = taken = 0  # start tags seen before ``position``; elements taken from the tree
@@ -104,6 +102,37 @@ def unusual_start_tags(document: Any, text: str, start: int | None = None,
                           tuple(element.attrib.items()))
         index += 1
         taken = index
+    return found
+
+
+def written_as_source(document: Any, text: str, start: int) -> bool:
+    """Return whether lxml writes all inside the root's start tag as ``text`` has it."""
+    written = etree.tostring(document, encoding='unicode', with_tail=False)
+    return text.startswith(written[tag_end(written, 0):], tag_end(text, start))
+
+
+def carried_over(tags: SourceTags, source: Any, document: Any) -> SourceTags:
+    """
+    Return ``tags``, found on the tree ``source``, for the same elements of ``document``.
+
+    ``document`` is the tree the model holds, ``source`` a fresh parse of the same text,
+    so the attributes recorded are the file's, whatever was changed in ``document`` since.
+    Elements are paired by their place among their siblings; a pair that no longer
+    matches costs nothing, as a tag is only put back while its element still has the
+    attributes recorded with it.
+    """
+    if not tags:
+        return tags
+    found = _Recorded()
+    pairs = [(source, document)]
+    while pairs:
+        theirs, mine = pairs.pop()
+        recorded = tags.get(theirs)
+        if recorded is not None:
+            found[mine] = recorded
+        if len(theirs):
+            pairs.extend(zip(theirs.iterchildren(etree.Element),
+                             mine.iterchildren(etree.Element)))
     return found
 
 

@@ -23,6 +23,7 @@ whatever nobody edited and everything the model does not hold.
 
 from __future__ import annotations
 
+from functools import partial
 import re
 from typing import Any
 
@@ -30,7 +31,8 @@ from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import ParseError, ReadWarning, SourceLocation
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._parse import parse_xml, Source
-from urdfgenpy_ros.formats.start_tags import tag_end, unusual_start_tags
+from urdfgenpy_ros.formats.start_tags import (
+    carried_over, SourceTags, tag_end, unusual_start_tags, written_as_source)
 from urdfgenpy_ros.formats.urdf_readers import READERS
 from urdfgenpy_ros.formats.urdf_schema import GEOMETRY, record, unusable
 from urdfgenpy_ros.joint import Joint, JointType
@@ -156,7 +158,6 @@ class _Reader:
 
     def robot(self, root: Any) -> Robot:
         """Read the ``<robot>`` element and everything in it."""
-        top = root
         root = self._robot_element(root)
         name = root.get('name')
         if not name:
@@ -197,41 +198,12 @@ class _Reader:
         if self.unresolved:
             for link in _share_materials(robot):
                 record(link)
-        text = self.source.data.decode('utf-8', 'replace')
-        head, start = _opening_tag(text, root) if root is top else (None, None)
-        layout = self._layout(root, head, text)
         robot.extras = DocumentPreserved(
             root, order, (list(root.itersiblings(preceding=True))[::-1],
-                          list(root.itersiblings())), layout,
-            unusual_start_tags(top, text, start, layout.newline))
+                          list(root.itersiblings())),
+            details=partial(_document_details, self.source.data, self.file,
+                            any(warning.code == 'P102' for warning in self.warnings)))
         return robot
-
-    def _layout(self, root: Any, head: str | None, text: str) -> Layout:
-        """Return how the file is written: indentation, line ends, quotes, first lines."""
-        data = self.source.data
-        ws = root.text or ''
-        unit = ws.rsplit('\n', 1)[-1] if '\n' in ws else ''
-        unit = unit if unit and not unit.strip() else '  '
-        crlf = data.count(b'\r\n') if b'\r' in data else 0  # the ends most lines have
-        newline = '\r\n' if 2 * crlf > data.count(b'\n') else '\n'
-        quote = "'" if b"'" in data and data.count(b"='") > data.count(b'="') else '"'
-        match = _DECLARATION.match(text, 0, 4096)
-        if match is None and root.getparent() is None and text[:4096].lstrip().startswith('<'):
-            declaration = ''  # the file has none: it gets none
-        else:
-            declaration = match.group(1) if match and not any(
-                warning.code == 'P102' for warning in self.warnings) else '<?xml version="1.0"?>'
-        body = text.rstrip()
-        end = text[len(body):].replace('\r\n', '\n') if body.endswith('>') else '\n'
-        gap = '\n' if declaration else ''
-        between: tuple[str, ...] = ()
-        start = match.end(1) if match is not None and declaration == match.group(1) else \
-            0 if not declaration else None
-        if start is not None:
-            spaces = _spaces_before(text, start, len(list(root.itersiblings(preceding=True))))
-            if spaces:
-                gap, between = spaces[0], tuple(spaces[1:])
-        return Layout(unit, newline, quote, declaration, head, end, gap, between)
 
     @staticmethod
     def _attach(robot: Robot, block: Extension) -> None:
@@ -264,6 +236,52 @@ class _Reader:
                                          'inner <robot> (remove the wrapper: urdfdom '
                                          'refuses it)'))
         return inner
+
+
+def _document_details(data: bytes, file: str | None, declaration_ignored: bool,
+                      root: Any) -> tuple[Layout, SourceTags]:
+    """
+    Return how the file of ``root`` is written and its unusual start tags (for writers).
+
+    Worked out on the first write, not at read: reading need not pay for it.
+    """
+    text = data.decode('utf-8', 'replace')
+    top = root.getroottree().getroot()
+    head, start = _opening_tag(text, root) if top is root else (None, None)
+    layout = _layout(data, text, root, head, declaration_ignored)
+    if start is not None and written_as_source(top, text, start):
+        return layout, {}
+    source = parse_xml(data, file)[0]  # the file's attributes, whatever changed since
+    return layout, carried_over(unusual_start_tags(source, text, start, layout.newline),
+                                source, top)
+
+
+def _layout(data: bytes, text: str, root: Any, head: str | None,
+            declaration_ignored: bool) -> Layout:
+    """Return how the file is written: indentation, line ends, quotes, first lines."""
+    ws = root.text or ''
+    unit = ws.rsplit('\n', 1)[-1] if '\n' in ws else ''
+    unit = unit if unit and not unit.strip() else '  '
+    crlf = data.count(b'\r\n') if b'\r' in data else 0  # the ends most lines have
+    newline = '\r\n' if 2 * crlf > data.count(b'\n') else '\n'
+    quote = "'" if b"'" in data and data.count(b"='") > data.count(b'="') else '"'
+    match = _DECLARATION.match(text, 0, 4096)
+    if match is None and root.getparent() is None and text[:4096].lstrip().startswith('<'):
+        declaration = ''  # the file has none: it gets none
+    else:
+        declaration = match.group(1) if match and not declaration_ignored \
+            else '<?xml version="1.0"?>'
+    body = text.rstrip()
+    end = text[len(body):].replace('\r\n', '\n') if body.endswith('>') else '\n'
+    gap = '\n' if declaration else ''
+    between: tuple[str, ...] = ()
+    start = match.end(1) if match is not None and declaration == match.group(1) else \
+        0 if not declaration else None
+    if start is not None:
+        spaces = _spaces_before(text, start, len(list(root.itersiblings(preceding=True))))
+        if spaces:
+            gap, between = spaces[0], tuple(spaces[1:])
+    return Layout(unit, newline, quote, declaration, head, end, gap, between)
 
 
 def _opening_tag(text: str, root: Any) -> tuple[str | None, int | None]:
