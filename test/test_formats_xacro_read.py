@@ -199,3 +199,13 @@ def test_broken_corpus_xacros_give_one_line(name: str, mappings: dict[str, str],
     assert '\n' not in message
     for word in words:
         assert word in message
+
+
+def test_a_missing_xacro_file_is_said_once(tmp_path: Path) -> None:
+    """xacro's message names the missing file; the OSError it appends is not repeated."""
+    missing = tmp_path / 'absent.urdf.xacro'
+    with pytest.raises(ParseError) as raised:
+        Robot.from_xacro(missing)
+    message = str(raised.value)
+    assert message.count(str(missing)) == 2  # where, and what is missing
+    assert message.count('No such file') == 1

@@ -21,6 +21,7 @@ from contextlib import contextmanager, redirect_stderr
 import io
 from os import PathLike
 from pathlib import Path
+import re
 import threading
 from typing import Any
 
@@ -115,6 +116,7 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
         cause = getattr(error, 'exc', None)  # xacro wraps what substitutions raise
         shown = cause if isinstance(cause, _PackageMissing) else error
         message = ' '.join(str(shown).split()) or type(error).__name__
+        message = _ERRNO_AGAIN.sub('', message)  # xacro adds the OSError it already told
         if ('ament_index_python' in message or 'PackageNotFound' in type(error).__name__) \
                 and 'search_paths' not in message:
             message += ' (pass the package folders in search_paths)'
@@ -127,6 +129,9 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
                      for line in _xacro_warnings(printed.getvalue())]
     included = [str(Path(name).resolve()) for name in names]
     return document.toprettyxml(indent='  '), included
+
+
+_ERRNO_AGAIN = re.compile(r" \[Errno \d+\] ([^:]+): '[^']*'$")
 
 
 def _xacro_warnings(printed: str) -> list[str]:
