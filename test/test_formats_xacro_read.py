@@ -202,7 +202,7 @@ def test_broken_corpus_xacros_give_one_line(name: str, mappings: dict[str, str],
 
 
 def test_a_missing_xacro_file_is_said_once(tmp_path: Path) -> None:
-    """xacro's message names the missing file; the OSError it appends is not repeated."""
+    """The message names the missing file; the OSError xacro appends is not repeated."""
     missing = tmp_path / 'absent.urdf.xacro'
     with pytest.raises(ParseError) as raised:
         Robot.from_xacro(missing)
