@@ -26,7 +26,10 @@ bare lxml floor on the same file (parse, tostring, or both), summarised over fil
 median and 90th percentile. "read a file" is what a user calls with a path (lxml's
 ``etree.parse``, ``Robot.from_urdf``, yourdfpy's ``URDF.load``, urdf_parser_py's
 ``URDF.from_xml_file``), on a copy of the file in a temporary folder, against
-``etree.parse``.
+``etree.parse``. Two more rows bound what any reader that builds its model at read
+time can reach, without a check or a number parsed: "every element touched" makes one
+object per element with its attributes, "a tree of objects" also keeps each element's
+attributes in a dict and its children in a list.
 
     python bench/bench_io.py [--corpus DIR] [--repeat 5] [--per-file]
 """
@@ -96,6 +99,27 @@ def corpus_files(corpus: Path) -> list[Path]:
 Library = tuple[Callable[[bytes], Any], Callable[[Any], Any], Callable[[str], Any]]
 
 
+class _Touched:
+    """An element seen from Python with its attributes: what any eager reader must do."""
+
+    __slots__ = ('element', 'items')
+
+    def __init__(self, element: Any) -> None:
+        self.element = element
+        self.items = element.items()
+
+
+class _Node:
+    """The least a tree-shaped model holds of an element: its attributes and children."""
+
+    __slots__ = ('element', 'attributes', 'children')
+
+    def __init__(self, element: Any, children: list[Any]) -> None:
+        self.element = element
+        self.attributes = dict(element.attrib)
+        self.children = children
+
+
 def _libraries() -> dict[str, Library]:
     """Return each library's (read bytes, write model, read a file) functions."""
     from lxml import etree
@@ -108,8 +132,21 @@ def _libraries() -> dict[str, Library]:
         return yourdfpy.URDF.load(data, load_meshes=False, build_scene_graph=False,
                                   build_collision_scene_graph=False)
 
+    def walk(root: Any) -> Any:
+        return _Node(root, [walk(child) for child in root.iterchildren(etree.Element)])
+
+    def touch(root: Any) -> list[_Touched]:
+        return [_Touched(element) for element in root.iter(etree.Element)]
+
     return {
         'lxml (floor)': (lambda data: etree.fromstring(data), etree.tostring, etree.parse),
+        # Eager floors: no checks, no numbers parsed (see _Touched, _Node)
+        'every element touched': (lambda data: touch(etree.fromstring(data)),
+                                  lambda nodes: etree.tostring(nodes[0].element),
+                                  lambda path: touch(etree.parse(path).getroot())),
+        'a tree of objects': (lambda data: walk(etree.fromstring(data)),
+                              lambda node: etree.tostring(node.element),
+                              lambda path: walk(etree.parse(path).getroot())),
         'urdfgenpy_ros': (Robot.from_urdf_string, lambda robot: robot.to_urdf(),
                           Robot.from_urdf),
         'yourdfpy': (_quiet(lambda data: load(io.BytesIO(data))),
