@@ -302,3 +302,19 @@ def test_a_block_edited_before_the_first_write_is_written_edited() -> None:
     assert written.find('gazebo/self_collide').text == 'true'
     text = Robot.from_urdf_string(_ATTRIBUTES_ON_LINES).to_urdf()
     assert text == _ATTRIBUTES_ON_LINES
+
+
+@pytest.mark.parametrize('wrapper', ['<urdf>', '<urdf xmlns:foo="http://foo">'])
+def test_a_wrapped_robot_is_written_without_its_wrapper(wrapper: str) -> None:
+    """The inner ``<robot>`` as it was written; a namespace the wrapper declared comes along."""
+    from lxml import etree
+    inner = ('  <robot name="r">\n    <link name="a"><foo:bar/></link>\n  </robot>'
+             if 'foo' in wrapper else '  <robot name="r">\n    <link name="a"/>\n  </robot>')
+    source = f'<?xml version="1.0"?>\n{wrapper}\n{inner}\n</urdf>\n'
+    text = Robot.from_urdf_string(source).to_urdf()
+    written = etree.fromstring(text.encode())
+    assert written.tag == 'robot' and [link.get('name') for link in written] == ['a']
+    if 'foo' in wrapper:
+        assert written[0][0].tag == '{http://foo}bar'
+    else:
+        assert text == f'<?xml version="1.0"?>\n{inner[2:]}\n'

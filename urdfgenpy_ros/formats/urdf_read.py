@@ -247,7 +247,10 @@ def _document_details(data: bytes, file: str | None, declaration_ignored: bool,
     """
     text = data.decode('utf-8', 'replace')
     top = root.getroottree().getroot()
-    head, start = _opening_tag(text, root) if top is root else (None, None)
+    # a <robot> wrapped in another element takes no namespace from it, or its tag won't do
+    head, start = _opening_tag(text, root) if top is root or not top.nsmap else (None, None)
+    if top is not root:
+        start = None  # the start tags are compared from the wrapper's
     layout = _layout(data, text, root, head, declaration_ignored)
     if start is not None and written_as_source(top, text, start):
         return layout, {}
