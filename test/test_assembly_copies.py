@@ -190,3 +190,39 @@ def test_transmission_elements_naming_joints_follow_and_unnamed_colours_stay() -
     assert joints == {'left_roll'}
     assert written.find('transmission/rightActuator').get('name') == 'left_r_motor'
     assert [m.get('name') for m in written.iter('material')] == ['']  # unnamed: unchanged
+
+
+def _coloured(name: str, rgba: tuple[float, float, float, float]) -> Robot:
+    from urdfgenpy_ros import Box, Link, Material, Visual
+    robot = Robot(name)
+    robot.add_material(Material('black', rgba))
+    robot.add_material(Material(f'{name}_only', (0.5, 0.5, 0.5, 1.0)))
+    robot.add_link(Link(f'{name}_base').add_visual(
+        Visual(Box(0.1, 0.1, 0.1), material=Material('black'))))
+    return robot
+
+
+def test_two_macro_files_defining_one_material_make_a_robot_urdfdom_reads(
+        tmp_path: Path) -> None:
+    """A material both robots define is defined once, by the file included first."""
+    for name, rgba in (('first', (0.0, 0.0, 0.0, 1.0)), ('second', (0.1, 0.1, 0.1, 1.0))):
+        _coloured(name, rgba).to_xacro(tmp_path / f'{name}.urdf.xacro', macro=True)
+    user = tmp_path / 'both.urdf.xacro'
+    user.write_text('<?xml version="1.0"?><robot name="both" '
+                    'xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                    '<xacro:include filename="first.macro.xacro"/>'
+                    '<xacro:include filename="second.macro.xacro"/>'
+                    '<xacro:include filename="first.macro.xacro"/>'  # again: still once
+                    '<link name="world"/>'
+                    '<xacro:first prefix="a_" parent="world"><origin xyz="0 0 0"/></xacro:first>'
+                    '<xacro:second prefix="b_" parent="world"><origin xyz="1 0 0"/>'
+                    '</xacro:second></robot>')
+    path = tmp_path / 'both.urdf'
+    path.write_text(xacro_expand(user))
+    assert_check_urdf_accepts(path)
+    defined = etree.parse(str(path)).getroot().findall('material')
+    assert sorted(node.get('name') for node in defined) == ['black', 'first_only', 'second_only']
+    assert [node.find('color').get('rgba') for node in defined
+            if node.get('name') == 'black'] == ['0 0 0 1']
+    theirs = load_yourdfpy(path)
+    assert {link.name for link in theirs.links} == {'world', 'a_first_base', 'b_second_base'}

@@ -25,6 +25,7 @@ import subprocess
 import sys
 
 from helpers import assert_check_urdf_accepts, FIXTURES, require_module
+from lxml import etree
 import pytest
 
 from urdfgenpy_ros import Robot, Severity
@@ -87,6 +88,31 @@ def _sourced(workspace: Path, command: str) -> str:
                             timeout=120)
     assert result.returncode == 0, result.stderr
     return result.stdout
+
+
+def test_two_packages_macro_files_alone_make_one_coloured_robot(workspace: Path,
+                                                                tmp_path: Path) -> None:
+    """Another package includes only the macro files: every colour comes along, once."""
+    parts = ('example_cmake_description', 'builder_python_description')  # same materials
+    calls = ''.join(
+        f'<xacro:include filename="$(find {name})/urdf/ptu.macro.xacro"/>'
+        for name in parts)
+    user = tmp_path / 'two_units.urdf.xacro'
+    user.write_text(
+        '<?xml version="1.0"?><robot name="two" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+        f'{calls}<link name="world"/>'
+        '<xacro:ptu prefix="a_" parent="world"><origin xyz="0 0 0"/>'
+        '</xacro:ptu><xacro:ptu prefix="b_" parent="world">'
+        '<origin xyz="1 0 0"/></xacro:ptu></robot>')
+    expanded = tmp_path / 'two_units.urdf'
+    expanded.write_text(_sourced(workspace, f'xacro {user}'))
+    assert_check_urdf_accepts(expanded)
+    root = etree.parse(str(expanded)).getroot()
+    defined = [node.get('name') for node in root.findall('material')]
+    used = {node.get('name') for node in root.iterfind('link/visual/material')}
+    assert used and used <= set(defined) and len(defined) == len(set(defined))
+    robot = Robot.from_urdf(expanded)
+    assert [str(f) for f in robot.validate() if f.severity is Severity.ERROR] == []
 
 
 @pytest.mark.parametrize('name', PACKAGES)

@@ -107,7 +107,7 @@ class _Reader:
         """Return the ``count`` numbers of a vector attribute (kept: texts repeat)."""
         parts = text.split()
         try:
-            values = tuple([float(part) for part in parts])
+            values = tuple(map(float, parts))
         except ValueError:
             values = ()
         if len(values) != count:

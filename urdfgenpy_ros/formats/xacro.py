@@ -37,6 +37,7 @@ from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.link import Link
 
 if TYPE_CHECKING:
+    from urdfgenpy_ros.material import Material
     from urdfgenpy_ros.robot import Robot
 
 XACRO_NS = 'http://www.ros.org/wiki/xacro'
@@ -233,8 +234,8 @@ def macro_xacro(robot: Robot, *, includes: Sequence[str] = (), materials: bool =
     body = '\n'.join(unit + line if line.strip() else line for line in body.split('\n'))
     body = body.replace(PREFIX_MARK, '${prefix}')  # the writer escaped every other '$'
     root = with_prefix(esc(marked.root.name))
-    defined = [_dollars(writer.write_material(material, unit))
-               for material in robot.materials] if materials else []
+    defined = [line for material in robot.materials
+               for line in defined_once(writer, material, unit)] if materials else []
     e, inner, name = '$', unit * 2, macro_name(robot)
     mount = [f'{inner}<xacro:if value="{e}{{parent != \'\'}}">',
              f'{inner}{unit}<joint name="{e}{{parent}}_to_{root}" type="fixed">',
@@ -251,6 +252,21 @@ def macro_xacro(robot: Robot, *, includes: Sequence[str] = (), materials: bool =
              *mount, *([body] if body else []), *(inner + call for call in calls),
              f'{unit}</xacro:macro>', '</robot>', '']
     return '\n'.join(lines)
+
+
+def defined_once(writer: UrdfWriter, material: Material, unit: str) -> list[str]:
+    """
+    Return Xacro lines that define a robot-level material unless a file did so before.
+
+    Two robots' files that both define, say, ``black`` can then be included in one robot
+    (urdfdom refuses a material defined twice): the first file included defines it. The
+    flag is a global Xacro property named after the material (hex: any name will do).
+    """
+    flag = f'urdfgenpy_material_{material.name.encode("utf-8").hex()}'
+    return [f'{unit}<xacro:property name="{flag}" default="false"/>',
+            f'{unit}<xacro:unless value="${{{flag}}}">',
+            f'{unit * 2}<xacro:property name="{flag}" value="true" scope="global"/>',
+            _dollars(writer.write_material(material, unit * 2)), f'{unit}</xacro:unless>']
 
 
 def top_level_xacro(robot: Robot, includes: Sequence[str]) -> str:

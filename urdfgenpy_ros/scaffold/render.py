@@ -26,8 +26,8 @@ from urdfgenpy_ros.assembly import prefixed
 from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
 from urdfgenpy_ros.formats._xml import fragment, INDENT
 from urdfgenpy_ros.formats.urdf import UrdfWriter
-from urdfgenpy_ros.formats.xacro import (macro_name, macro_xacro, PREFIX_MARK, top_level_xacro,
-                                         with_prefix, XACRO_NS)
+from urdfgenpy_ros.formats.xacro import (defined_once, macro_name, macro_xacro, PREFIX_MARK,
+                                         top_level_xacro, with_prefix, XACRO_NS)
 from urdfgenpy_ros.geometry import Mesh
 from urdfgenpy_ros.link import Shape
 from urdfgenpy_ros.material import Material
@@ -48,10 +48,6 @@ _BRIDGE_TYPES = {'camera': ('sensor_msgs/msg/Image', 'gz.msgs.Image'),
 
 # RViz displays for what the sensors publish through the bridge (off until Gazebo runs).
 _DISPLAYS = {'camera': 'Image', 'gpu_lidar': 'LaserScan'}
-
-
-def _escape(text: str) -> str:
-    return text.replace('${', '$${').replace('$(', '$$(')
 
 
 def _fragment_file(lines: list[str]) -> str:
@@ -106,15 +102,17 @@ def _urdf_files(spec: PackageSpec, robot: Robot) -> tuple[dict[str, bytes], list
     """
     Return the Xacro files and the names of those the main one uses.
 
-    ``<robot>.urdf.xacro`` includes ``materials.xacro`` and ``<robot>.macro.xacro``, and
-    calls the robot's macro with the ``prefix`` argument (default ''); the macro file
-    includes ``<robot>.gazebo.xacro`` and ``<robot>.ros2_control.xacro``, macros of their
-    own taking the same prefix, when the robot has such blocks. Another package can
-    include the macro file and call the macro with a prefix and a parent link.
+    ``<robot>.urdf.xacro`` includes ``<robot>.macro.xacro`` and calls the robot's macro
+    with the ``prefix`` argument (default ''); the macro file includes ``materials.xacro``
+    (each material defined unless an earlier file did) and ``<robot>.gazebo.xacro`` and
+    ``<robot>.ros2_control.xacro``, macros of their own taking the same prefix, when the
+    robot has such blocks. Another package can include the macro file alone and call the
+    macro with a prefix and a parent link.
     """
     stem, macro = robot.name, macro_name(robot)
     writer = UrdfWriter(robot)
-    materials = [writer.write_material(m, INDENT) for m in robot.materials]
+    materials = [line for material in robot.materials
+                 for line in defined_once(writer, material, INDENT)]
     blocks: dict[str, list[str]] = {'gazebo': [], 'ros2_control': []}
     for block in prefixed(robot, PREFIX_MARK).extensions:
         if block.tag in blocks:
@@ -126,9 +124,10 @@ def _urdf_files(spec: PackageSpec, robot: Robot) -> tuple[dict[str, bytes], list
     find = f'$(find {spec.name})/urdf'
     files: dict[str, bytes] = {}
     used, calls, inside = [], [], []
-    if materials:
-        files['urdf/materials.xacro'] = _escape(_fragment_file(materials)).encode()
+    if materials:  # the macro file includes them: another package may include it alone
+        files['urdf/materials.xacro'] = _fragment_file(materials).encode()
         used.append('materials.xacro')
+        inside.append(f'{find}/materials.xacro')
     for tag, lines in blocks.items():
         if lines:
             name = f'{stem}.{tag}.xacro'
@@ -139,8 +138,7 @@ def _urdf_files(spec: PackageSpec, robot: Robot) -> tuple[dict[str, bytes], list
     files[f'urdf/{stem}.macro.xacro'] = macro_xacro(
         robot, includes=inside, materials=False, skip=tuple(blocks), calls=calls).encode()
     used.append(f'{stem}.macro.xacro')
-    top = [f'{find}/{name}' for name in ('materials.xacro', f'{stem}.macro.xacro')
-           if name in used]
+    top = [f'{find}/{stem}.macro.xacro']
     files[f'urdf/{stem}.urdf.xacro'] = top_level_xacro(robot, top).encode()
     return files, used, f'{stem}.urdf.xacro'
 
