@@ -86,9 +86,10 @@ class DocumentPreserved(Preserved):
         self._details = details
 
     def _work_out(self) -> None:
-        details, self._details = self._details, None
-        if details is not None:
+        details = self._details
+        if details is not None:  # two threads may both work it out: the same result
             self._layout, self._start_tags = details(self.node)
+            self._details = None
 
     @property
     def layout(self) -> Layout:  # type: ignore[override]
