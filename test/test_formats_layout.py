@@ -318,3 +318,16 @@ def test_a_wrapped_robot_is_written_without_its_wrapper(wrapper: str) -> None:
         assert written[0][0].tag == '{http://foo}bar'
     else:
         assert text == f'<?xml version="1.0"?>\n{inner[2:]}\n'
+
+
+def test_an_element_added_before_the_first_write_moves_no_tag_onto_another() -> None:
+    """Start tags are found by place in the file: a tree changed since keeps its names."""
+    from lxml import etree
+    source = ('<robot name="r">\n  <link name="a"/>\n  <gazebo reference="a">\n'
+              '    <p k="1"/>\n    <q\n      k="1"/>\n  </gazebo>\n</robot>\n')
+    robot = Robot.from_urdf_string(source)
+    block = robot.get_link('a').extensions[0].element
+    block.insert(0, etree.Element('new'))
+    written = etree.fromstring(robot.to_urdf().encode())
+    assert [(node.tag, dict(node.attrib)) for node in written.find('gazebo')] == [
+        ('new', {}), ('p', {'k': '1'}), ('q', {'k': '1'})]

@@ -22,6 +22,7 @@ tags: the reader records the unusual ones, the writer puts them back.
 
 from __future__ import annotations
 
+import html
 from itertools import islice
 import re
 from typing import Any
@@ -98,42 +99,53 @@ def unusual_start_tags(document: Any, text: str, start: int | None = None,
         element = next(elements, None)
         if element is None:
             break
-        found[element] = (tag.replace(newline, '\n'),  # the writer puts the file's ends
-                          tuple(element.attrib.items()))
+        attributes = tuple(element.attrib.items())
+        if _as_read(tag, element.tag, attributes):
+            found[element] = (tag.replace(newline, '\n'),  # the writer puts the file's ends
+                              attributes)
         index += 1
         taken = index
     return found
+
+
+_ATTRIBUTE = re.compile(r'([^\s=/>]+)\s*=\s*(?:"([^"]*)"|\'([^\']*)\')')
+_NAME_OF_TAG = re.compile(r'<([^\s/>]+)')
+
+
+def _as_read(tag: str, name: Any, attributes: tuple[tuple[str, str], ...]) -> bool:
+    """
+    Return whether the source start tag ``tag`` is the element's, with its attributes.
+
+    The tree may have changed since it was read (a block edited in place, an element
+    added): a tag is only recorded for an element that still has its name and values.
+    """
+    written = _NAME_OF_TAG.match(tag).group(1)  # type: ignore[union-attr]
+    if not isinstance(name, str) or written.rsplit(':', 1)[-1] != name.rsplit('}', 1)[-1]:
+        return False
+    found = [(key, double if double is not None else single)
+             for key, double, single in _ATTRIBUTE.findall(tag, len(written) + 1)
+             if key != 'xmlns' and not key.startswith('xmlns:')]
+    if len(found) != len(attributes):
+        return False
+    for (key, value), (have, text) in zip(found, attributes):
+        if key.rsplit(':', 1)[-1] != have.rsplit('}', 1)[-1] or _value(value) != text:
+            return False
+    return True
+
+
+def _value(source: str) -> str:
+    """Return an attribute's value as XML reads the source text of it."""
+    if '\r' in source:
+        source = source.replace('\r\n', ' ').replace('\r', ' ')
+    if '\n' in source or '\t' in source:
+        source = source.replace('\n', ' ').replace('\t', ' ')
+    return html.unescape(source) if '&' in source else source
 
 
 def written_as_source(document: Any, text: str, start: int) -> bool:
     """Return whether lxml writes all inside the root's start tag as ``text`` has it."""
     written = etree.tostring(document, encoding='unicode', with_tail=False)
     return text.startswith(written[tag_end(written, 0):], tag_end(text, start))
-
-
-def carried_over(tags: SourceTags, source: Any, document: Any) -> SourceTags:
-    """
-    Return ``tags``, found on the tree ``source``, for the same elements of ``document``.
-
-    ``document`` is the tree the model holds, ``source`` a fresh parse of the same text,
-    so the attributes recorded are the file's, whatever was changed in ``document`` since.
-    Elements are paired by their place among their siblings; a pair that no longer
-    matches costs nothing, as a tag is only put back while its element still has the
-    attributes recorded with it.
-    """
-    if not tags:
-        return tags
-    found = _Recorded()
-    pairs = [(source, document)]
-    while pairs:
-        theirs, mine = pairs.pop()
-        recorded = tags.get(theirs)
-        if recorded is not None:
-            found[mine] = recorded
-        if len(theirs):
-            pairs.extend(zip(theirs.iterchildren(etree.Element),
-                             mine.iterchildren(etree.Element)))
-    return found
 
 
 class _Recorded(dict[Any, tuple[str, tuple[tuple[str, str], ...]]]):

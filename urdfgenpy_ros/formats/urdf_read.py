@@ -31,8 +31,7 @@ from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import ParseError, ReadWarning, SourceLocation
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._parse import parse_xml, Source
-from urdfgenpy_ros.formats.start_tags import (
-    carried_over, SourceTags, tag_end, unusual_start_tags, written_as_source)
+from urdfgenpy_ros.formats.start_tags import SourceTags, tag_end, unusual_start_tags
 from urdfgenpy_ros.formats.urdf_readers import READERS
 from urdfgenpy_ros.formats.urdf_schema import GEOMETRY, record, unusable
 from urdfgenpy_ros.joint import Joint, JointType
@@ -201,7 +200,7 @@ class _Reader:
         robot.extras = DocumentPreserved(
             root, order, (list(root.itersiblings(preceding=True))[::-1],
                           list(root.itersiblings())),
-            details=partial(_document_details, self.source.data, self.file,
+            details=partial(_document_details, self.source.data,
                             any(warning.code == 'P102' for warning in self.warnings)))
         return robot
 
@@ -238,7 +237,7 @@ class _Reader:
         return inner
 
 
-def _document_details(data: bytes, file: str | None, declaration_ignored: bool,
+def _document_details(data: bytes, declaration_ignored: bool,
                       root: Any) -> tuple[Layout, SourceTags]:
     """
     Return how the file of ``root`` is written and its unusual start tags (for writers).
@@ -252,11 +251,7 @@ def _document_details(data: bytes, file: str | None, declaration_ignored: bool,
     if top is not root:
         start = None  # the start tags are compared from the wrapper's
     layout = _layout(data, text, root, head, declaration_ignored)
-    if start is not None and written_as_source(top, text, start):
-        return layout, {}
-    source = parse_xml(data, file)[0]  # the file's attributes, whatever changed since
-    return layout, carried_over(unusual_start_tags(source, text, start, layout.newline),
-                                source, top)
+    return layout, unusual_start_tags(top, text, start, layout.newline)
 
 
 def _layout(data: bytes, text: str, root: Any, head: str | None,
