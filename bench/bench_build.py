@@ -97,7 +97,10 @@ LIBRARIES: dict[str, tuple[Callable[[int, str], Any], Callable[[Any], str]]] = {
                       lambda robot: robot.to_urdf()),
     'urdfgenpy 0.4.0': (functools.partial(seed_build, 'urdfgenpy'),
                         lambda robot: robot.to_urdf()),
-    'yourdfpy': (yourdfpy_build, lambda urdf: urdf.write_xml_string().decode())}
+    'yourdfpy': (yourdfpy_build, lambda urdf: urdf.write_xml_string().decode()),
+    # no checks, one f-string per element: what CPython alone costs (floor_model.py)
+    'floor (no checks)': (functools.partial(seed_build, 'floor_model'),
+                          lambda robot: robot.to_urdf())}
 
 
 def _once(library: tuple[Callable[[int, str], Any], Callable[[Any], str]], count: int,

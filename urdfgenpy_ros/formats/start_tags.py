@@ -108,7 +108,7 @@ def unusual_start_tags(document: Any, text: str, start: int | None = None,
     return found
 
 
-_ATTRIBUTE = re.compile(r'([^\s=/>]+)\s*=\s*(?:"([^"]*)"|\'([^\']*)\')')
+_ATTRIBUTE = re.compile(r'([^\s=/>]+)\s*=\s*(["\'])(.*?)\2', re.DOTALL)
 _NAME_OF_TAG = re.compile(r'<([^\s/>]+)')
 
 
@@ -120,15 +120,19 @@ def _as_read(tag: str, name: Any, attributes: tuple[tuple[str, str], ...]) -> bo
     added): a tag is only recorded for an element that still has its name and values.
     """
     written = _NAME_OF_TAG.match(tag).group(1)  # type: ignore[union-attr]
-    if not isinstance(name, str) or written.rsplit(':', 1)[-1] != name.rsplit('}', 1)[-1]:
+    if written != name and (not isinstance(name, str) or
+                            written.rsplit(':', 1)[-1] != name.rsplit('}', 1)[-1]):
         return False
-    found = [(key, double if double is not None else single)
-             for key, double, single in _ATTRIBUTE.findall(tag, len(written) + 1)
-             if key != 'xmlns' and not key.startswith('xmlns:')]
-    if len(found) != len(attributes):
-        return False
-    for (key, value), (have, text) in zip(found, attributes):
-        if key.rsplit(':', 1)[-1] != have.rsplit('}', 1)[-1] or _value(value) != text:
+    found = _ATTRIBUTE.findall(tag, len(written) + 1)
+    if len(found) != len(attributes):  # namespace declarations are no attributes
+        found = [item for item in found if not item[0].startswith('xmlns')
+                 or item[0][5:6] not in ('', ':')]
+        if len(found) != len(attributes):
+            return False
+    for (key, _, value), (have, text) in zip(found, attributes):
+        if value != text and _value(value) != text:
+            return False
+        if key != have and key.rsplit(':', 1)[-1] != have.rsplit('}', 1)[-1]:
             return False
     return True
 
