@@ -209,3 +209,16 @@ def test_a_missing_xacro_file_is_said_once(tmp_path: Path) -> None:
     message = str(raised.value)
     assert message.count(str(missing)) == 2  # where, and what is missing
     assert message.count('No such file') == 1
+
+
+def test_a_file_of_macros_read_as_a_robot_says_so(tmp_path: Path) -> None:
+    """A macro library (ROS-Industrial's ``*_macro.xacro``) is not a robot: say which to read."""
+    library = tmp_path / 'arm_macro.xacro'
+    library.write_text('<?xml version="1.0"?>\n<robot xmlns:xacro="http://ros.org/wiki/xacro">\n'
+                       '  <xacro:macro name="arm" params="prefix">\n'
+                       '    <link name="${prefix}base"/>\n  </xacro:macro>\n</robot>\n')
+    with pytest.raises(ParseError) as raised:
+        Robot.from_xacro(library)
+    assert str(raised.value) == (
+        f'{library}: error X003 defines macros (arm) and no robot: read a robot file that '
+        'includes it and calls <xacro:arm .../>')

@@ -150,7 +150,28 @@ def read_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = N
     said: list[ReadWarning] = []
     text, included = expand_xacro(path, mappings, PackageResolver(search_paths, packages),
                                   said)
-    robot = read_urdf_bytes(text.encode('utf-8'), f'{path} (expanded)')
+    try:
+        robot = read_urdf_bytes(text.encode('utf-8'), f'{path} (expanded)')
+    except ParseError as error:
+        raise _macros_only(path, text) or error from None
     robot.read_warnings[:0] = said
     robot.included_files = [str(Path(path).resolve()), *included]
     return robot
+
+
+_MACRO = re.compile(r'<xacro:macro\s[^>]*?\bname\s*=\s*["\']([^"\']+)')
+
+
+def _macros_only(path: str | PathLike[str], expanded: str) -> ParseError | None:
+    """Return the error of a file of macros read as a robot, or None if it is not one."""
+    try:
+        source = Path(path).read_text('utf-8', 'replace')
+    except OSError:
+        return None
+    names = _MACRO.findall(source)
+    if not names or '<link' in expanded:
+        return None
+    return ParseError(
+        f'defines macros ({", ".join(names[:3])}{", ..." if len(names) > 3 else ""}) and no '
+        f'robot: read a robot file that includes it and calls <xacro:{names[0]} .../>',
+        SourceLocation(str(path)), 'X003')

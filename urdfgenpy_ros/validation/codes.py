@@ -35,6 +35,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'P107': (W, 'visual material with a malformed colour (urdfdom ignores it, MuJoCo refuses '
                 'it)'),
     'X002': (E, 'Xacro file given to the URDF reader'),
+    'X003': (E, 'Xacro file of macros only read as a robot'),
     'X101': (W, 'Xacro in a .urdf file, expanded with xacro'),
     'X102': (W, 'xacro warned while expanding the file'),
     # structure
