@@ -21,8 +21,7 @@ Readers turn them off with :func:`unchecked`, so that a faulty file still loads 
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
-from contextlib import contextmanager
+from collections.abc import Sequence
 from contextvars import ContextVar
 import math
 
@@ -38,14 +37,18 @@ def enabled() -> bool:
     return _ENABLED.get()
 
 
-@contextmanager
-def unchecked() -> Iterator[None]:
+class unchecked:  # noqa: N801 - used as a function: ``with checks.unchecked():``
     """Build elements without raising on bad values (readers use this)."""
-    token = _ENABLED.set(False)
-    try:
-        yield
-    finally:
-        _ENABLED.reset(token)
+
+    __slots__ = ('_token',)
+
+    def __enter__(self) -> None:
+        """Turn the checks off in this context."""
+        self._token = _ENABLED.set(False)
+
+    def __exit__(self, *exc: object) -> None:
+        """Turn them back to what they were."""
+        _ENABLED.reset(self._token)
 
 
 def to_float(owner: str, field: str, value: object) -> float:
