@@ -15,7 +15,7 @@
 """
 Argument checks run when model elements are built in Python.
 
-Readers turn them off with :func:`unchecked`, so that a faulty file still loads and
+Readers turn them off with :class:`unchecked`, so that a faulty file still loads and
 ``validate()`` can report every problem with its line instead of stopping at the first.
 """
 
