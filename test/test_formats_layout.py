@@ -331,3 +331,12 @@ def test_an_element_added_before_the_first_write_moves_no_tag_onto_another() -> 
     written = etree.fromstring(robot.to_urdf().encode())
     assert [(node.tag, dict(node.attrib)) for node in written.find('gazebo')] == [
         ('new', {}), ('p', {'k': '1'}), ('q', {'k': '1'})]
+
+
+def test_an_edit_after_the_layout_is_worked_out_is_written() -> None:
+    """The text lxml made while working out the layout serves only the write that made it."""
+    for touch in (lambda robot: robot.extras.layout, lambda robot: robot.to_urdf()):
+        robot = Robot.from_urdf_string(_ATTRIBUTES_ON_LINES)
+        touch(robot)
+        robot.get_link('arm').extensions[0].element.set('name', 'tip')
+        assert '<gazebo reference="arm" name="tip">' in robot.to_urdf()

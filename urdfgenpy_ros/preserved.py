@@ -57,6 +57,10 @@ class Preserved:
         self.node = node
         self.snapshot = snapshot
 
+    def writing(self) -> tuple[Layout, str | None]:
+        """Return the layout for a writer, and no text of the tree (see the document's)."""
+        return self.layout, None
+
     def __repr__(self) -> str:
         """Return the source tag and line."""
         return f'Preserved(<{self.node.tag}> line {self.node.sourceline})'
@@ -75,7 +79,7 @@ class DocumentPreserved(Preserved):
     def __init__(self, node: Any, order: list[Any], outside: tuple[list[Any], list[Any]],
                  layout: Layout | None = None,
                  start_tags: dict[Any, tuple[str, tuple[tuple[str, str], ...]]] | None = None,
-                 details: Callable[[Any], tuple[Layout, dict[Any, Any]]] | None = None
+                 details: Callable[[Any], tuple[Layout, dict[Any, Any], str | None]] | None = None
                  ) -> None:
         super().__init__(node)
         self.order = order
@@ -85,11 +89,24 @@ class DocumentPreserved(Preserved):
         self._start_tags = start_tags or {}
         self._details = details
 
-    def _work_out(self) -> None:
+    def _work_out(self) -> str | None:
         details = self._details
-        if details is not None:  # two threads may both work it out: the same result
-            self._layout, self._start_tags = details(self.node)
-            self._details = None
+        if details is None:
+            return None
+        # two threads may both work it out: the same result
+        self._layout, self._start_tags, written = details(self.node)
+        self._details = None
+        return written
+
+    def writing(self) -> tuple[Layout, str | None]:
+        """
+        Return the layout, and lxml's text of the tree if this call had to work it out.
+
+        A writer calls it first: the text is the tree as it is now, which the writer may
+        use instead of serialising it again.
+        """
+        written = self._work_out()
+        return self._layout, written
 
     @property
     def layout(self) -> Layout:  # type: ignore[override]

@@ -81,7 +81,8 @@ def unusual_start_tags(document: Any, text: str, start: int | None = None,
     own start tag is not recorded then: writers put the source's back as it was).
     ``newline`` is the file's line end, which the writer puts back at each line break.
     """
-    if start is not None and written_as_source(document, text, start):
+    if start is not None and same_as_source(
+            etree.tostring(document, encoding='unicode', with_tail=False), text, start):
         return {}
     found = _Recorded()
     elements = document.iter(etree.Element)
@@ -146,9 +147,8 @@ def _value(source: str) -> str:
     return html.unescape(source) if '&' in source else source
 
 
-def written_as_source(document: Any, text: str, start: int) -> bool:
-    """Return whether lxml writes all inside the root's start tag as ``text`` has it."""
-    written = etree.tostring(document, encoding='unicode', with_tail=False)
+def same_as_source(written: str, text: str, start: int) -> bool:
+    """Return whether lxml's ``written`` document has all inside the root's tag as ``text``."""
     return text.startswith(written[tag_end(written, 0):], tag_end(text, start))
 
 

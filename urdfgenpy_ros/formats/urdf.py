@@ -71,7 +71,8 @@ class UrdfWriter(ElementWriter):
 
     def __init__(self, robot: Robot) -> None:
         extras = robot.extras
-        self.layout = extras.layout if extras is not None else Layout()
+        # and lxml's text of the tree, if working out the layout just made it
+        self.layout, self._written = extras.writing() if extras is not None else (Layout(), None)
         super().__init__(robot, self.layout.unit, {
             prefix or '': uri for prefix, uri in extras.node.nsmap.items()
         } if extras is not None else {})
@@ -127,9 +128,9 @@ class UrdfWriter(ElementWriter):
         if extras is not None and self._untouched():
             head = extras.layout.head
             assert head is not None
-            text = restore_start_tags(
-                etree.tostring(extras.node, encoding='unicode', with_tail=False),
-                extras.node, extras.start_tags)
+            serialized = self._written or etree.tostring(extras.node, encoding='unicode',
+                                                         with_tail=False)
+            text = restore_start_tags(serialized, extras.node, extras.start_tags)
             return head + text[tag_end(text, 0):] if len(extras.node) else head[:-1] + '/>'
         items = [(fresh, text) for text in self.prologue()]
         materials, links, joints = self.materials, robot.links, robot.joints

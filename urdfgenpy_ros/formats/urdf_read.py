@@ -27,11 +27,14 @@ from functools import partial
 import re
 from typing import Any
 
+from lxml import etree
+
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import ParseError, ReadWarning, SourceLocation
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._parse import parse_xml, Source
-from urdfgenpy_ros.formats.start_tags import SourceTags, tag_end, unusual_start_tags
+from urdfgenpy_ros.formats.start_tags import (
+    same_as_source, SourceTags, tag_end, unusual_start_tags)
 from urdfgenpy_ros.formats.urdf_readers import READERS
 from urdfgenpy_ros.formats.urdf_schema import GEOMETRY, record, unusable
 from urdfgenpy_ros.joint import Joint, JointType
@@ -238,11 +241,12 @@ class _Reader:
 
 
 def _document_details(data: bytes, declaration_ignored: bool,
-                      root: Any) -> tuple[Layout, SourceTags]:
+                      root: Any) -> tuple[Layout, SourceTags, str | None]:
     """
-    Return how the file of ``root`` is written and its unusual start tags (for writers).
+    Return how the file of ``root`` is written, its unusual start tags, lxml's text of it.
 
-    Worked out on the first write, not at read: reading need not pay for it.
+    Worked out on the first write, not at read: reading need not pay for it. The text
+    (None for a wrapped robot) is what that first write would make again.
     """
     text = data.decode('utf-8', 'replace')
     top = root.getroottree().getroot()
@@ -251,7 +255,12 @@ def _document_details(data: bytes, declaration_ignored: bool,
     if top is not root:
         start = None  # the start tags are compared from the wrapper's
     layout = _layout(data, text, root, head, declaration_ignored)
-    return layout, unusual_start_tags(top, text, start, layout.newline)
+    if start is None:
+        return layout, unusual_start_tags(top, text, None, layout.newline), None
+    written = etree.tostring(top, encoding='unicode', with_tail=False)
+    if same_as_source(written, text, start):
+        return layout, {}, written
+    return layout, unusual_start_tags(top, text, None, layout.newline), written
 
 
 def _layout(data: bytes, text: str, root: Any, head: str | None,
