@@ -43,7 +43,7 @@ origins = st.builds(Origin, vec3, vec3)
 shapes = st.one_of(st.builds(Box, positive, positive, positive),
                    st.builds(Cylinder, positive, positive), st.builds(Sphere, positive))
 KINDS = ('origin_twice', 'geometry', 'mass', 'limit', 'joint_origin', 'replace_visual',
-         'rename_link')
+         'rename_link', 'block')
 
 
 def _their_geometry(yourdfpy, shape):
@@ -98,6 +98,15 @@ def _apply(data, kind: str, robot: Robot, theirs, yourdfpy) -> None:
         value = data.draw(positive, label='value')
         setattr(joint.limit, name, value)
         setattr(joints[joint.name].limit, name, value)
+    elif kind == 'block':  # edited in place, as lxml lets a user: an attribute, a child
+        block = data.draw(st.sampled_from(_blocks(robot)), label='block')
+        element = block.element
+        for node in element.iter():
+            if isinstance(node.tag, str) and data.draw(st.booleans(), label='touch'):
+                node.set('edited', str(data.draw(positive, label='value')))
+        if data.draw(st.booleans(), label='insert'):
+            from lxml import etree
+            element.insert(0, etree.Element('inserted', {'edited': 'first'}))
     elif kind == 'joint_origin':
         joint = data.draw(st.sampled_from(robot.joints), label='joint')
         joint.origin = origin = data.draw(origins, label='origin')
@@ -110,6 +119,19 @@ def _apply(data, kind: str, robot: Robot, theirs, yourdfpy) -> None:
         for joint in theirs.joints:
             joint.parent = new if joint.parent == old else joint.parent
             joint.child = new if joint.child == old else joint.child
+
+
+def _blocks(robot: Robot) -> list:
+    """Return every <gazebo>/<transmission>/<ros2_control> block of the robot."""
+    return [*robot.extensions, *[block for owner in [*robot.links, *robot.joints]
+                                 for block in owner.extensions]]
+
+
+def _content(element) -> list:
+    """Return a block's elements as (tag, attributes), its reference aside (renames)."""
+    return sorted((str(node.tag), sorted((key, value) for key, value in node.attrib.items()
+                                         if not (node is element and key == 'reference')))
+                  for node in element.iter() if isinstance(node.tag, str))
 
 
 def _normal(value):
@@ -142,7 +164,8 @@ def _check_edits(path: Path, data) -> None:
                   'limit': any(joint.limit for joint in robot.joints),
                   'joint_origin': bool(robot.joints),
                   'origin_twice': any(link.visuals for link in robot.links),
-                  'geometry': any(link.visuals for link in robot.links)}
+                  'geometry': any(link.visuals for link in robot.links),
+                  'block': bool(_blocks(robot))}
         if usable.get(kind, bool(robot.links)):
             _apply(data, kind, robot, theirs, yourdfpy)
     with tempfile.TemporaryDirectory() as folder:
@@ -150,6 +173,11 @@ def _check_edits(path: Path, data) -> None:
         robot.to_urdf(written)
         assert _normal(load_yourdfpy(written)) == _normal(theirs)
         assert Robot.from_urdf(written) == robot
+        from lxml import etree
+        root = etree.parse(str(written)).getroot()
+        blocks = [node for node in root if node.tag in ('gazebo', 'transmission', 'ros2_control')]
+        assert sorted(_content(node) for node in blocks) == \
+            sorted(_content(block.element) for block in _blocks(robot))
 
 
 @pytest.mark.parametrize('path', LAYOUTS, ids=[path.name for path in LAYOUTS])
