@@ -71,23 +71,22 @@ class DocumentPreserved(Preserved):
     What a reader kept of the ``<robot>`` element: its items' order, layout, comments.
 
     ``layout`` and ``start_tags`` are only needed to write: ``details``, given by the reader,
-    works them out from the source text on first use and is then dropped.
+    works them out from the source text on first use (with lxml's text of the tree, or
+    None) and is then dropped.
     """
 
     __slots__ = ('order', 'outside', '_layout', '_start_tags', '_details')
 
     def __init__(self, node: Any, order: list[Any], outside: tuple[list[Any], list[Any]],
-                 layout: Layout | None = None,
-                 start_tags: dict[Any, tuple[str, tuple[tuple[str, str], ...]]] | None = None,
-                 details: Callable[[Any], tuple[Layout, dict[Any, Any], str | None]] | None = None
-                 ) -> None:
+                 details: Callable[[Any], tuple[Layout, dict[Any, Any], str | None]]) -> None:
         super().__init__(node)
         self.order = order
         self.outside = outside
-        self._layout = layout or Layout()
+        self._layout = Layout()
         # the source start tags lxml would write otherwise (formats/start_tags.py)
-        self._start_tags = start_tags or {}
-        self._details = details
+        self._start_tags: dict[Any, tuple[str, tuple[tuple[str, str], ...]]] = {}
+        self._details: Callable[[Any], tuple[Layout, dict[Any, Any], str | None]] | None = \
+            details
 
     def _work_out(self) -> str | None:
         details = self._details

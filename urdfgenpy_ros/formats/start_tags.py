@@ -69,21 +69,18 @@ _UNUSUAL = re.compile(r'<(?:!--.*?-->|!\[CDATA\[.*?\]\]>|\?.*?\?>|![^>]*>|'
                       r'(?:[^>"\']++|"[^"]*"|\'[^\']*\')*+>)', re.DOTALL)
 
 
-def unusual_start_tags(document: Any, text: str, start: int | None = None,
-                       newline: str = '\n') -> SourceTags:
+def unusual_start_tags(document: Any, text: str, newline: str = '\n') -> SourceTags:
     """
     Return the source start tags of the document's elements that lxml would write otherwise.
 
     That is: line breaks, tabs, runs of spaces or single quotes inside the tag, and the
     start tag of an empty element written with an end tag (``<link></link>``, which lxml
     writes ``<link/>``). ``text`` is the whole source; its start tags come in the
-    elements' order; ``start`` is where the document element starts in it, if known (its
-    own start tag is not recorded then: writers put the source's back as it was).
-    ``newline`` is the file's line end, which the writer puts back at each line break.
+    elements' order, and a tag is recorded only for the element at its place that still
+    has the tag's name and attribute values (the tree may have changed since it was
+    read). ``newline`` is the file's line end, which the writer puts back at each line
+    break.
     """
-    if start is not None and same_as_source(
-            etree.tostring(document, encoding='unicode', with_tail=False), text, start):
-        return {}
     found = _Recorded()
     elements = document.iter(etree.Element)
     index = taken = 0  # start tags seen before ``position``; elements taken from the tree

@@ -203,8 +203,8 @@ class _Reader:
         robot.extras = DocumentPreserved(
             root, order, (list(root.itersiblings(preceding=True))[::-1],
                           list(root.itersiblings())),
-            details=partial(_document_details, self.source.data,
-                            any(warning.code == 'P102' for warning in self.warnings)))
+            partial(_document_details, self.source.data,
+                    any(warning.code == 'P102' for warning in self.warnings)))
         return robot
 
     @staticmethod
@@ -256,11 +256,11 @@ def _document_details(data: bytes, declaration_ignored: bool,
         start = None  # the start tags are compared from the wrapper's
     layout = _layout(data, text, root, head, declaration_ignored)
     if start is None:
-        return layout, unusual_start_tags(top, text, None, layout.newline), None
+        return layout, unusual_start_tags(top, text, layout.newline), None
     written = etree.tostring(top, encoding='unicode', with_tail=False)
     if same_as_source(written, text, start):
         return layout, {}, written
-    return layout, unusual_start_tags(top, text, None, layout.newline), written
+    return layout, unusual_start_tags(top, text, layout.newline), written
 
 
 def _layout(data: bytes, text: str, root: Any, head: str | None,

@@ -131,7 +131,7 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
     return document.toprettyxml(indent='  '), included
 
 
-_ERRNO_AGAIN = re.compile(r" \[Errno \d+\] ([^:]+): '[^']*'$")
+_ERRNO_AGAIN = re.compile(r" \[Errno \d+\] [^:]+: '[^']*'$")
 
 
 def _xacro_warnings(printed: str) -> list[str]:
