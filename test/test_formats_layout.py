@@ -19,10 +19,11 @@ from __future__ import annotations
 import difflib
 from pathlib import Path
 
-from helpers import load_yourdfpy
+from helpers import CORPUS, load_yourdfpy
 import pytest
+from registry_robots import robots as registry_robots
 
-from urdfgenpy_ros import Box, Material, Origin, Robot, Visual
+from urdfgenpy_ros import Box, Material, Origin, ParseError, Robot, Visual
 
 FIXTURES = Path(__file__).parent / 'fixtures' / 'io'
 LAYOUTS = sorted(FIXTURES.glob('*.urdf'))
@@ -340,3 +341,45 @@ def test_an_edit_after_the_layout_is_worked_out_is_written() -> None:
         touch(robot)
         robot.get_link('arm').extensions[0].element.set('name', 'tip')
         assert '<gazebo reference="arm" name="tip">' in robot.to_urdf()
+
+
+_REAL_URDFS = [*(path for path in sorted(Path(__file__).parent.joinpath('fixtures').rglob('*.urdf'))
+                 if path.parent.name != 'broken'),
+               *registry_robots(),
+               *(sorted(CORPUS.rglob('*.urdf')) if CORPUS.is_dir() else [])]
+
+
+def test_start_tags_put_back_by_place_match_a_full_reading() -> None:
+    """Skipping to each recorded tag gives what reading every start tag gives, on real files."""
+    from lxml import etree
+
+    from urdfgenpy_ros.formats import start_tags
+
+    compared = 0
+    for path in _REAL_URDFS:
+        try:
+            robot = Robot.from_urdf(path)
+        except (ParseError, OSError):
+            continue
+        extras = robot.extras
+        tags = extras.start_tags
+        if not tags:
+            continue
+        for node in [extras.node, *extras.node]:
+            serialized = etree.tostring(node, encoding='unicode', with_tail=False)
+            elements = list(node.iter(etree.Element))
+            assert start_tags._restore_few(serialized, elements, tags) == \
+                start_tags._restore(serialized, elements, tags), (path, node.tag)
+            compared += 1
+    assert compared > 10  # the fixtures alone have unusual start tags
+
+
+def test_many_unusual_start_tags_are_all_put_back() -> None:
+    """A file whose every tag is unusual (more than are found one by one) is written as read."""
+    from urdfgenpy_ros.formats import start_tags
+    links = ''.join(f"  <link  name='l{index}'>\n    <visual>\n      <geometry><box size='1 1 1'"
+                    f"/></geometry>\n    </visual>\n  </link>\n" for index in range(40))
+    source = f"<robot  name='r'>\n{links}</robot>\n"
+    robot = Robot.from_urdf_string(source)
+    assert len(robot.extras.start_tags) > start_tags._FEW
+    assert robot.to_urdf() == source

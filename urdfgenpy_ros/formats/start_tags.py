@@ -166,14 +166,63 @@ def restore_start_tags(serialized: str, node: Any, tags: SourceTags) -> str:
     memo = getattr(tags, 'memo', None)
     if memo is not None and memo[0] is node and memo[1] == serialized:
         return memo[2]  # written again unchanged (a node republishing, say): same text
-    restored = _restore(serialized, node, tags)
-    if isinstance(tags, _Recorded):
+    elements = list(node.iter(etree.Element))
+    if len(tags) > _FEW:
+        restored = _restore(serialized, elements, tags)
+    else:
+        restored = _restore_few(serialized, elements, tags)
+    if restored is not serialized and isinstance(tags, _Recorded):
         tags.memo = (node, serialized, restored)
     return restored
 
 
-def _restore(serialized: str, node: Any, tags: SourceTags) -> str:
-    elements = [item for item in node.iter() if isinstance(item.tag, str)]
+_FEW = 32  # up to this many recorded tags, find each one's place instead of reading all
+
+# Everything up to the '<' of the next start tag: text, comments, CDATA, processing
+# instructions and end tags are passed over, so each match is one start tag.
+_TO_NEXT_START = re.compile(r'(?:[^<]++|<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|'
+                            r'<![^>]*>|</[^>]*>)*+<', re.DOTALL)
+
+
+def _restore_few(serialized: str, elements: list[Any], tags: SourceTags) -> str:
+    """Put back a few recorded tags, skipping from one element's start tag to the next."""
+    places = []
+    for element, (_, attributes) in tags.items():
+        try:
+            index = elements.index(element)
+        except ValueError:  # not in this subtree
+            continue
+        if tuple(element.attrib.items()) == attributes:
+            places.append((index, element))
+    if not places:
+        return serialized
+    places.sort(key=lambda place: place[0])
+    starts = _TO_NEXT_START.finditer(serialized)
+    parts, position, seen = [], 0, 0
+    for index, element in places:
+        match = next(islice(starts, index - seen, None), None)
+        seen = index + 1
+        if match is None:
+            return serialized  # not the shape expected: keep lxml's text
+        start = match.end() - 1
+        end = serialized.find('>', start) + 1
+        name = _NAME.match(serialized, start)
+        if not end or name is None or not _names_tag(name.group(1), element.tag):
+            return serialized
+        parts += [serialized[position:start],
+                  _as_source(tags[element][0], serialized[start:end])]
+        position = end
+    parts.append(serialized[position:])
+    return ''.join(parts)
+
+
+def _names_tag(written: str, tag: str) -> bool:
+    """Return whether a start tag's written name is the element tag (prefix and all)."""
+    return written == tag or written.rsplit(':', 1)[-1] == tag.rsplit('}', 1)[-1]
+
+
+def _restore(serialized: str, elements: list[Any], tags: SourceTags) -> str:
+    """Put back recorded tags, reading every start tag lxml wrote."""
     if not any(item in tags for item in elements):
         return serialized
     parts, position, index = [], 0, 0
