@@ -343,7 +343,7 @@ def test_an_edit_after_the_layout_is_worked_out_is_written() -> None:
         assert '<gazebo reference="arm" name="tip">' in robot.to_urdf()
 
 
-_REAL_URDFS = [*(path for path in sorted(Path(__file__).parent.joinpath('fixtures').rglob('*.urdf'))
+_REAL_URDFS = [*(path for path in sorted((FIXTURES.parent).rglob('*.urdf'))
                  if path.parent.name != 'broken'),
                *registry_robots(),
                *(sorted(CORPUS.rglob('*.urdf')) if CORPUS.is_dir() else [])]
@@ -378,8 +378,8 @@ def test_many_unusual_start_tags_are_all_put_back() -> None:
     """A file whose every tag is unusual (more than are found one by one) is written as read."""
     from urdfgenpy_ros.formats import start_tags
     links = ''.join(f"  <link  name='l{index}'>\n    <visual>\n      <geometry><box size='1 1 1'"
-                    f"/></geometry>\n    </visual>\n  </link>\n" for index in range(40))
-    source = f"<robot  name='r'>\n{links}</robot>\n"
+                    f'/></geometry>\n    </visual>\n  </link>\n' for index in range(40))
+    source = "<robot  name='r'>\n" + links + '</robot>\n'
     robot = Robot.from_urdf_string(source)
     assert len(robot.extras.start_tags) > start_tags._FEW
     assert robot.to_urdf() == source
