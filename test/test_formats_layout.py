@@ -383,3 +383,34 @@ def test_many_unusual_start_tags_are_all_put_back() -> None:
     robot = Robot.from_urdf_string(source)
     assert len(robot.extras.start_tags) > start_tags._FEW
     assert robot.to_urdf() == source
+
+
+def test_an_unedited_file_keeps_its_own_spelling_of_characters() -> None:
+    """Character references and ``<x />`` tags come back as written, not as lxml writes them."""
+    source = ('<?xml version="1.0"?>\n<robot name="r">\n  <link name="a" />\n'
+              '  <gazebo reference="a">\n    <plugin>x &quot;&#x41;&quot; &gt; y</plugin>\n'
+              '  </gazebo>\n</robot>\n')
+    robot = Robot.from_urdf_string(source)
+    assert robot.to_urdf() == source
+    assert robot.to_urdf() == source  # and again
+    robot.get_link('a').extensions[0].element[0].text = 'z'
+    assert '<plugin>z</plugin>' in robot.to_urdf()  # an edit since is written
+
+
+def test_a_file_in_another_encoding_keeps_its_characters(tmp_path: Path) -> None:
+    """A Latin-1 file comes back in Latin-1; a character it cannot hold makes it UTF-8."""
+    from lxml import etree
+    source = ('<?xml version="1.0" encoding="ISO-8859-1"?>\n<robot name="r">\n'
+              '  <!-- pi\xe8ce \xe0 main -->\n  <link name="a" />\n</robot>\n').encode('latin-1')
+    path = tmp_path / 'latin.urdf'
+    path.write_bytes(source)
+    robot = Robot.from_urdf(path)
+    text = robot.to_urdf(tmp_path / 'out.urdf')
+    assert '\ufffd' not in text and 'pi\xe8ce \xe0 main' in text
+    assert (tmp_path / 'out.urdf').read_bytes() == source
+    assert Robot.from_urdf_string(text).to_urdf() == text  # a string read as it declares
+    robot.rename_link('a', 'b\u20ac')
+    robot.to_urdf(tmp_path / 'euro.urdf')
+    written = etree.parse(str(tmp_path / 'euro.urdf')).getroot()
+    assert written[0].text == ' pi\xe8ce \xe0 main ' and written[1].get('name') == 'b\u20ac'
+    assert Robot.from_urdf(tmp_path / 'euro.urdf').links[0].name == 'b\u20ac'

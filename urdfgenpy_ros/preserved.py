@@ -34,6 +34,11 @@ class Layout(NamedTuple):
     between: tuple[str, ...] = ()  # the white space before each later node up to the root
 
 
+Details = tuple[Layout, Callable[[], dict[Any, Any]] | None, str | None,
+                tuple[str, str] | None]
+"""What a reader works out about a file when it is first written (see DocumentPreserved)."""
+
+
 class Preserved:
     """
     The source element of a model element and a by-value snapshot of what it read.
@@ -52,6 +57,7 @@ class Preserved:
     outside: tuple[list[Any], list[Any]] = ([], [])
     layout: Layout = Layout()
     start_tags: dict[Any, tuple[str, tuple[tuple[str, str], ...]]] = {}
+    verbatim: tuple[str, str] | None = None
 
     def __init__(self, node: Any, snapshot: tuple | None = None) -> None:
         self.node = node
@@ -70,30 +76,34 @@ class DocumentPreserved(Preserved):
     """
     What a reader kept of the ``<robot>`` element: its items' order, layout, comments.
 
-    ``layout`` and ``start_tags`` are only needed to write: ``details``, given by the reader,
-    works them out from the source text on first use (with lxml's text of the tree, or
-    None) and is then dropped.
+    ``layout``, ``start_tags`` and ``verbatim`` are only needed to write: ``details``,
+    given by the reader, works them out from the source text on first use and is then
+    dropped. It returns the layout, a function that finds the start tags (called when
+    they are first needed: a file written back unedited may never need them), lxml's
+    text of the tree (or None), and ``verbatim``.
     """
 
-    __slots__ = ('order', 'outside', '_layout', '_start_tags', '_details')
+    __slots__ = ('order', 'outside', '_layout', '_start_tags', '_find_tags', '_verbatim',
+                 '_details')
 
     def __init__(self, node: Any, order: list[Any], outside: tuple[list[Any], list[Any]],
-                 details: Callable[[Any], tuple[Layout, dict[Any, Any], str | None]]) -> None:
+                 details: Callable[[Any], Details]) -> None:
         super().__init__(node)
         self.order = order
         self.outside = outside
         self._layout = Layout()
         # the source start tags lxml would write otherwise (formats/start_tags.py)
         self._start_tags: dict[Any, tuple[str, tuple[tuple[str, str], ...]]] = {}
-        self._details: Callable[[Any], tuple[Layout, dict[Any, Any], str | None]] | None = \
-            details
+        self._find_tags: Callable[[], dict[Any, Any]] | None = None
+        self._verbatim: tuple[str, str] | None = None
+        self._details: Callable[[Any], Details] | None = details
 
     def _work_out(self) -> str | None:
         details = self._details
         if details is None:
             return None
         # two threads may both work it out: the same result
-        self._layout, self._start_tags, written = details(self.node)
+        self._layout, self._find_tags, written, self._verbatim = details(self.node)
         self._details = None
         return written
 
@@ -120,4 +130,20 @@ class DocumentPreserved(Preserved):
         """Return the source start tags lxml would write otherwise, by element."""
         if self._details is not None:
             self._work_out()
+        find = self._find_tags
+        if find is not None:
+            self._start_tags = find()
+            self._find_tags = None
         return self._start_tags
+
+    @property
+    def verbatim(self) -> tuple[str, str] | None:  # type: ignore[override]
+        """
+        Return lxml's text of the tree as read and the file's own text of the root, or None.
+
+        While lxml writes the tree as it wrote it at first, nothing in it changed: the
+        file's text of the root (its line ends as line feeds) is the tree as its author wrote it.
+        """
+        if self._details is not None:
+            self._work_out()
+        return self._verbatim

@@ -380,9 +380,10 @@ class Robot:
 
     @classmethod
     def from_urdf_string(cls, xml: str | bytes, file: str | None = None) -> Robot:
-        """Read URDF text; ``file`` names it in messages."""
+        """Read URDF text (bytes, or a string in the encoding it declares); ``file`` names it."""
+        from urdfgenpy_ros.formats._xml import xml_bytes
         from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
-        data = xml.encode('utf-8') if isinstance(xml, str) else xml
+        data = xml_bytes(xml, 'surrogateescape') if isinstance(xml, str) else xml
         return read_urdf_bytes(data, file)
 
     @classmethod

@@ -16,6 +16,7 @@
 
 from __future__ import annotations
 
+import codecs
 import copy
 from os import PathLike
 from pathlib import Path
@@ -27,7 +28,7 @@ from lxml import etree
 from urdfgenpy_ros.floats import fmt, fmt_vec
 
 __all__ = ['esc', 'escape_text', 'fmt', 'fmt_vec', 'fragment', 'INDENT', 'without_declared',
-           'write_text']
+           'write_text', 'xml_bytes']
 
 INDENT = '  '
 
@@ -75,8 +76,33 @@ def without_declared(text: str, declared: dict[str, str]) -> str:
     return head + text[end:]
 
 
+_ENCODING = re.compile(r'\s*<\?xml\b[^>]*?\bencoding\s*=\s*(["\'])([^"\']*)\1')
+
+
+def xml_bytes(text: str, errors: str = 'strict') -> bytes:
+    """
+    Return XML ``text`` encoded as its declaration says (UTF-8 when it names none).
+
+    A file read from ``encoding="ISO-8859-1"`` and written back keeps its declaration, so
+    its bytes must follow it. Text that the named encoding cannot hold is written as
+    UTF-8 and declared so.
+    """
+    match = _ENCODING.match(text, 0, 4096)
+    if match is not None:
+        try:
+            codec = codecs.lookup(match.group(2)).name
+        except LookupError:
+            codec = 'utf-8'
+        if codec != 'utf-8':
+            try:
+                return text.encode(codec, errors)
+            except UnicodeEncodeError:
+                text = f'{text[:match.start(2)]}UTF-8{text[match.end(2):]}'
+    return text.encode('utf-8', errors)
+
+
 def write_text(path: str | PathLike[str], text: str) -> None:
-    """Write ``text`` to ``path`` as UTF-8, creating parent directories."""
+    """Write XML ``text`` to ``path`` in its declared encoding, creating parent folders."""
     target = Path(path)
     target.parent.mkdir(parents=True, exist_ok=True)
-    target.write_text(text, encoding='utf-8')
+    target.write_bytes(xml_bytes(text))

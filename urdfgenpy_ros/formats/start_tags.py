@@ -159,6 +159,22 @@ class _Recorded(dict[Any, tuple[str, tuple[tuple[str, str], ...]]]):
         self.memo: tuple[Any, str, str] | None = None  # node, lxml's text, restored text
 
 
+def as_source(serialized: str, node: Any, extras: Any) -> str:
+    """
+    Return lxml's text of ``node`` as the source wrote it, as far as the tree is as read.
+
+    ``extras`` is the robot's :class:`~urdfgenpy_ros.preserved.DocumentPreserved`: while
+    the whole tree is as read, its text is the file's; otherwise the recorded start tags
+    are put back.
+    """
+    verbatim = extras.verbatim
+    if verbatim is not None and node is extras.node and serialized == verbatim[0]:
+        return verbatim[1]
+    if not isinstance(node.tag, str):  # a comment or processing instruction
+        return serialized
+    return restore_start_tags(serialized, node, extras.start_tags)
+
+
 def restore_start_tags(serialized: str, node: Any, tags: SourceTags) -> str:
     """Return lxml's serialisation of ``node`` with its elements' source start tags."""
     if not tags:

@@ -35,7 +35,7 @@ from lxml import etree
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._xml import esc, fragment, write_text
 from urdfgenpy_ros.formats.sdf import sensor_element
-from urdfgenpy_ros.formats.start_tags import restore_start_tags, tag_end
+from urdfgenpy_ros.formats.start_tags import as_source, tag_end
 from urdfgenpy_ros.formats.urdf_element import ElementWriter, prefixed
 from urdfgenpy_ros.formats.urdf_schema import MATERIAL, OF_CLASS, values
 from urdfgenpy_ros.joint import Joint
@@ -130,7 +130,7 @@ class UrdfWriter(ElementWriter):
             assert head is not None
             serialized = self._written or etree.tostring(extras.node, encoding='unicode',
                                                          with_tail=False)
-            text = restore_start_tags(serialized, extras.node, extras.start_tags)
+            text = as_source(serialized, extras.node, extras)
             return head + text[tag_end(text, 0):] if len(extras.node) else head[:-1] + '/>'
         items = [(fresh, text) for text in self.prologue()]
         materials, links, joints = self.materials, robot.links, robot.joints

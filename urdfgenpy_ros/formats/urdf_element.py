@@ -31,7 +31,7 @@ from lxml import etree
 
 from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import esc, without_declared
-from urdfgenpy_ros.formats.start_tags import restore_start_tags, source_tag
+from urdfgenpy_ros.formats.start_tags import as_source, source_tag
 from urdfgenpy_ros.formats.urdf_fresh import FRESH
 from urdfgenpy_ros.formats.urdf_schema import (
     Child, Element, ELEMENTS, FLOAT, INERTIAL, MATERIAL, OF_CLASS, REQUIRED, slot_of, SLOTS,
@@ -115,8 +115,8 @@ class ElementWriter:
         """Return a source node exactly as it was read (namespaces the root declares aside)."""
         text = etree.tostring(node, encoding='unicode', with_tail=False)
         extras = self.robot.extras
-        if extras is not None and extras.start_tags:
-            text = restore_start_tags(text, node, extras.start_tags)
+        if extras is not None:
+            text = as_source(text, node, extras)
         return without_declared(text, self.declared)
 
     # ---- any element, from its declaration -------------------------------------------

@@ -32,15 +32,15 @@ from lxml import etree
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import ParseError, ReadWarning, SourceLocation
 from urdfgenpy_ros.extensions import Extension
-from urdfgenpy_ros.formats._parse import parse_xml, Source
+from urdfgenpy_ros.formats._parse import parse_xml, PARSER, Source
 from urdfgenpy_ros.formats.start_tags import (
-    same_as_source, SourceTags, tag_end, unusual_start_tags)
+    same_as_source, tag_end, unusual_start_tags)
 from urdfgenpy_ros.formats.urdf_readers import READERS
 from urdfgenpy_ros.formats.urdf_schema import GEOMETRY, record, unusable
 from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.material import Material
-from urdfgenpy_ros.preserved import DocumentPreserved, Layout
+from urdfgenpy_ros.preserved import Details, DocumentPreserved, Layout
 from urdfgenpy_ros.robot import Robot
 
 EXTENSION_TAGS = frozenset(('gazebo', 'transmission', 'ros2_control'))
@@ -48,6 +48,7 @@ _TYPES = ', '.join(kind.value for kind in JointType)
 _SHAPES = 'box, cylinder, sphere or mesh'
 _SHAPE_TAGS = GEOMETRY.children[0].tags
 _DECLARATION = re.compile(r'^\s*(<\?xml\b[^>]*\?>)')
+_ENCODING = re.compile(rb'\s*<\?xml\b[^>]*?\bencoding\s*=\s*["\']([^"\']*)')
 
 
 def _spaces_before(text: str, start: int, comments: int) -> list[str]:
@@ -240,13 +241,14 @@ class _Reader:
         return inner
 
 
-def _document_details(data: bytes, declaration_ignored: bool,
-                      root: Any) -> tuple[Layout, SourceTags, str | None]:
+def _document_details(data: bytes, declaration_ignored: bool, root: Any) -> Details:
     """
-    Return how the file of ``root`` is written, its unusual start tags, lxml's text of it.
+    Return how the file of ``root`` is written, and what a writer keeps of its text.
 
-    Worked out on the first write, not at read: reading need not pay for it. The text
-    (None for a wrapped robot) is what that first write would make again.
+    Worked out on the first write, not at read: reading need not pay for it. That is the
+    layout; a function finding the start tags lxml would write otherwise; lxml's text
+    of the tree now (None for a wrapped robot), which the first write would make again;
+    and, when that text shows the tree is still as read, the file's own text of the root.
     """
     text = data.decode('utf-8', 'replace')
     top = root.getroottree().getroot()
@@ -255,12 +257,38 @@ def _document_details(data: bytes, declaration_ignored: bool,
     if top is not root:
         start = None  # the start tags are compared from the wrapper's
     layout = _layout(data, text, root, head, declaration_ignored)
+    tags = partial(unusual_start_tags, top, text, layout.newline)
     if start is None:
-        return layout, unusual_start_tags(top, text, layout.newline), None
+        return layout, tags, None, None
     written = etree.tostring(top, encoding='unicode', with_tail=False)
     if same_as_source(written, text, start):
-        return layout, {}, written
-    return layout, unusual_start_tags(top, text, layout.newline), written
+        return layout, None, written, None
+    return layout, tags, written, _as_read(data, text, start, written, root, layout.newline)
+
+
+def _as_read(data: bytes, text: str, start: int, written: str, root: Any,
+             newline: str) -> tuple[str, str] | None:
+    """
+    Return ``written`` and the file's text of the root if the tree is as read, else None.
+
+    lxml's text of the tree is compared with its text of the file parsed again: one parse
+    in C, where finding each unusual start tag costs Python time per tag (files that
+    write ``<x />`` have hundreds). The file's line ends (``newline``) are returned as
+    line feeds, which the writer turns back.
+    """
+    body = text.rstrip()
+    encoding = _ENCODING.match(data)
+    if root.getnext() is not None or not body.endswith('>') or '\ufffd' in text or (
+            encoding is not None and encoding.group(1).lower() not in (b'utf-8', b'utf8')):
+        return None  # something after the root, or text that is not plainly UTF-8
+    try:
+        fresh = etree.fromstring(data, PARSER)
+    except etree.XMLSyntaxError:
+        return None  # the reader had to mend it
+    if etree.tostring(fresh, encoding='unicode', with_tail=False) != written:
+        return None
+    source = body[start:]
+    return written, source if newline == '\n' else source.replace(newline, '\n')
 
 
 def _layout(data: bytes, text: str, root: Any, head: str | None,
