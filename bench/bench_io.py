@@ -29,7 +29,10 @@ median and 90th percentile. "read a file" is what a user calls with a path (lxml
 ``etree.parse``. Two more rows bound what any reader that builds its model at read
 time can reach, without a check or a number parsed: "every element touched" makes one
 object per element with its attributes, "a tree of objects" also keeps each element's
-attributes in a dict and its children in a list.
+attributes in a dict and its children in a list. A third bounds a lazy reader (one that
+reads a link's or joint's body only when asked) which still finds every error at read
+time: "lazy floor" checks the file against ``lazy_floor.xsd`` in C (libxml2) and makes a
+named shell per link and joint, nothing more.
 
     python bench/bench_io.py [--corpus DIR] [--repeat 5] [--per-file]
 """
@@ -120,6 +123,30 @@ class _Node:
         self.children = children
 
 
+class _Shell:
+    """A link or joint known by name and node only: its body would be read on demand."""
+
+    __slots__ = ('name', 'node', 'line', 'kind', 'parent', 'child')
+
+
+def _shells(root: Any, schema: Any) -> tuple[Any, dict[str, _Shell], dict[str, _Shell]]:
+    """Check ``root`` against ``schema`` and return it with a shell per link and joint."""
+    schema.validate(root)
+    links, joints = {}, {}
+    for node in root:
+        if node.tag == 'link':
+            shell = links[node.get('name')] = _Shell()
+        elif node.tag == 'joint':
+            shell = joints[node.get('name')] = _Shell()
+            shell.kind = node.get('type')
+            shell.parent = node.find('parent').get('link')
+            shell.child = node.find('child').get('link')
+        else:
+            continue
+        shell.node, shell.line = node, node.sourceline
+    return root, links, joints
+
+
 def _libraries() -> dict[str, Library]:
     """Return each library's (read bytes, write model, read a file) functions."""
     from lxml import etree
@@ -138,6 +165,8 @@ def _libraries() -> dict[str, Library]:
     def touch(root: Any) -> list[_Touched]:
         return [_Touched(element) for element in root.iter(etree.Element)]
 
+    schema = etree.XMLSchema(etree.parse(str(Path(__file__).with_name('lazy_floor.xsd'))))
+
     return {
         'lxml (floor)': (lambda data: etree.fromstring(data), etree.tostring, etree.parse),
         # Eager floors: no checks, no numbers parsed (see _Touched, _Node)
@@ -147,6 +176,10 @@ def _libraries() -> dict[str, Library]:
         'a tree of objects': (lambda data: walk(etree.fromstring(data)),
                               lambda node: etree.tostring(node.element),
                               lambda path: walk(etree.parse(path).getroot())),
+        # A lazy reader's floor: a schema check in C and a shell per link and joint
+        'lazy floor': (lambda data: _shells(etree.fromstring(data), schema),
+                       lambda shells: etree.tostring(shells[0]),
+                       lambda path: _shells(etree.parse(path).getroot(), schema)),
         'urdfgenpy_ros': (Robot.from_urdf_string, lambda robot: robot.to_urdf(),
                           Robot.from_urdf),
         'yourdfpy': (_quiet(lambda data: load(io.BytesIO(data))),
