@@ -105,10 +105,38 @@ def test_an_edit_in_an_exporter_style_file_touches_only_the_edited_element(
     robot.get_link('arm').inertial.mass = 0.75
     text = robot.to_urdf(tmp_path / 'out.urdf')
     removed, added = _changed(_source(path), text)
-    assert [line.strip() for line in removed] == ['<mass', 'value="0.5" />']
-    assert [line.strip() for line in added] == ['<mass value="0.75" />']  # its ' />' kept
+    assert [line.strip() for line in removed] == ['value="0.5" />']
+    assert [line.strip() for line in added] == ['value="0.75" />']  # its ' />' kept
     arm = next(link for link in load_yourdfpy(tmp_path / 'out.urdf').links if link.name == 'arm')
     assert arm.inertial.mass == 0.75
+
+
+def test_edited_values_stay_on_their_own_lines_in_the_sources_quotes(tmp_path: Path) -> None:
+    """Each edited value is one changed line; a new attribute puts the tag on one line."""
+    source = ("<robot name='r'>\n  <link name='a'>\n    <inertial>\n      <mass\n"
+              "        value='1' />\n      <inertia\n        ixx='1' ixy='0' ixz='0'\n"
+              "        iyy='1' iyz='0' izz='1'\n        note='&#x41;&amp;b' />\n"
+              "    </inertial>\n  </link>\n  <link name='b' />\n"
+              "  <joint name='j' type='revolute'>\n    <parent link='a' />\n"
+              "    <child link='b' />\n    <limit\n      effort='10'\n"
+              "      upper='1'\n      velocity='2' />\n  </joint>\n</robot>\n")
+    robot = Robot.from_urdf_string(source)
+    robot.get_link('a').inertial.mass = 2.5
+    robot.get_link('a').inertial.iyy = 0.5
+    robot.get_joint('j').limit.effort = 20.0
+    text = robot.to_urdf(tmp_path / 'out.urdf')
+    assert _changed(source, text) == (
+        ["        value='1' />", "        iyy='1' iyz='0' izz='1'", "      effort='10'"],
+        ["        value='2.5' />", "        iyy='0.5' iyz='0' izz='1'", "      effort='20'"])
+    model = load_yourdfpy(tmp_path / 'out.urdf')
+    link, joint = model.links[0], model.joints[0]
+    assert (link.inertial.mass, link.inertial.inertia[1][1]) == (2.5, 0.5)
+    assert joint.limit.effort == 20.0
+    robot.get_joint('j').limit.lower = -0.5  # an attribute the tag did not have
+    removed, added = _changed(source, robot.to_urdf(tmp_path / 'out.urdf'))
+    assert added[-1].strip() == \
+        "<limit effort='20' upper='1' velocity='2' lower='-0.5' />"
+    assert load_yourdfpy(tmp_path / 'out.urdf').joints[0].limit.lower == -0.5
 
 
 def test_renaming_a_link_changes_only_the_lines_naming_it(tmp_path: Path) -> None:

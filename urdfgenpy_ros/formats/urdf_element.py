@@ -25,6 +25,7 @@ that did not change all stay. Objects built in Python go through the compiled wr
 
 from __future__ import annotations
 
+import re
 from typing import Any, TYPE_CHECKING
 
 from lxml import etree
@@ -46,6 +47,10 @@ if TYPE_CHECKING:
 
 _LEAVES = frozenset((Origin, Box, Cylinder, Sphere, Mesh))
 _ATTRS = {tag: {attr.name: attr for attr in element.attrs} for tag, element in ELEMENTS.items()}
+# One attribute of a start tag: the space before it, its name, and what comes up to its
+# value's opening quote (group 3); then the value and its closing quote.
+_ATTRIBUTE = re.compile(r'(\s+)([^\s=/>]+)(\s*=\s*["\'])(?:(?<=")[^"]*"|(?<=\')[^\']*\')')
+_GIVEN = re.compile(r' ([^\s=]+)="([^"]*)"')  # one attribute as the writer gives it
 
 
 def _reads_as(kind: str, text: str, value: Any) -> bool:
@@ -178,14 +183,38 @@ class ElementWriter:
         return self._merge(element, attrs, children, node, pad, inner)
 
     def _as_written(self, tag: str, node: Any, attrs: str) -> str:
-        """Return the source's own attribute text (line breaks and all) if none changed."""
+        """
+        Return the source's own attribute text (line breaks and all), new values put in.
+
+        While the attributes are the same ones in the same order, only the values that
+        changed are replaced, in the source's quotes; otherwise ``attrs`` as given.
+        """
         extras = self.robot.extras
         source = source_tag(extras.start_tags, node) if extras is not None else None
-        if source is None or attrs != ''.join(
-                f' {prefixed(node, key)}="{esc(value)}"' for key, value in node.attrib.items()):
+        if source is None:
             return attrs
         body = source[len(tag) + 1:]
-        return body[:-2] if body.endswith('/>') else body[:-1]
+        body = body[:-2] if body.endswith('/>') else body[:-1]
+        read = [f' {prefixed(node, key)}="{esc(value)}"' for key, value in node.attrib.items()]
+        if attrs == ''.join(read):
+            return body
+        places = list(_ATTRIBUTE.finditer(body))
+        given = _GIVEN.findall(attrs)
+        if [name for name, _ in given] != [place.group(2) for place in places] or \
+                len(read) != len(places):
+            return attrs  # attributes added, removed or moved: the element's own line
+        parts, end = [], 0
+        for place, (name, value), was in zip(places, given, read):
+            if was == f' {name}="{value}"':
+                continue  # unchanged: the source's spelling stays
+            quote = place.group(3)[-1]
+            if quote == "'":
+                if "'" in value:
+                    return attrs
+                value = value.replace('&quot;', '"')
+            parts += [body[end:place.start(3)], place.group(3)[:-1], quote, value, quote]
+            end = place.end()
+        return ''.join(parts) + body[end:]
 
     def _empty(self, tag: str, attrs: str, node: Any) -> str:
         """Return an element without content: ``<x/>``, or ``<x></x>``, ``<x />`` as written."""
