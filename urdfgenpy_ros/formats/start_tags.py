@@ -106,7 +106,8 @@ def unusual_start_tags(document: Any, text: str, newline: str = '\n') -> SourceT
     return found
 
 
-_ATTRIBUTE = re.compile(r'([^\s=/>]+)\s*=\s*(["\'])(.*?)\2', re.DOTALL)
+# One attribute of a source start tag: its name, its quote and its value as written.
+ATTRIBUTE = re.compile(r'([^\s=/>]+)\s*=\s*(["\'])(.*?)\2', re.DOTALL)
 _NAME_OF_TAG = re.compile(r'<([^\s/>]+)')
 
 
@@ -121,7 +122,7 @@ def _as_read(tag: str, name: Any, attributes: tuple[tuple[str, str], ...]) -> bo
     if written != name and (not isinstance(name, str) or
                             written.rsplit(':', 1)[-1] != name.rsplit('}', 1)[-1]):
         return False
-    found = _ATTRIBUTE.findall(tag, len(written) + 1)
+    found = ATTRIBUTE.findall(tag, len(written) + 1)
     if len(found) != len(attributes):  # namespace declarations are no attributes
         found = [item for item in found if not item[0].startswith('xmlns')
                  or item[0][5:6] not in ('', ':')]

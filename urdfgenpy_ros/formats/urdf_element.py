@@ -32,7 +32,7 @@ from lxml import etree
 
 from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import esc, without_declared
-from urdfgenpy_ros.formats.start_tags import as_source, source_tag
+from urdfgenpy_ros.formats.start_tags import as_source, ATTRIBUTE, source_tag
 from urdfgenpy_ros.formats.urdf_fresh import FRESH
 from urdfgenpy_ros.formats.urdf_schema import (
     Child, Element, ELEMENTS, FLOAT, INERTIAL, MATERIAL, OF_CLASS, REQUIRED, slot_of, SLOTS,
@@ -47,9 +47,6 @@ if TYPE_CHECKING:
 
 _LEAVES = frozenset((Origin, Box, Cylinder, Sphere, Mesh))
 _ATTRS = {tag: {attr.name: attr for attr in element.attrs} for tag, element in ELEMENTS.items()}
-# One attribute of a start tag: the space before it, its name, and what comes up to its
-# value's opening quote (group 3); then the value and its closing quote.
-_ATTRIBUTE = re.compile(r'(\s+)([^\s=/>]+)(\s*=\s*["\'])(?:(?<=")[^"]*"|(?<=\')[^\']*\')')
 _GIVEN = re.compile(r' ([^\s=]+)="([^"]*)"')  # one attribute as the writer gives it
 
 
@@ -198,22 +195,21 @@ class ElementWriter:
         read = [f' {prefixed(node, key)}="{esc(value)}"' for key, value in node.attrib.items()]
         if attrs == ''.join(read):
             return body
-        places = list(_ATTRIBUTE.finditer(body))
+        places = list(ATTRIBUTE.finditer(body))
         given = _GIVEN.findall(attrs)
-        if [name for name, _ in given] != [place.group(2) for place in places] or \
+        if [name for name, _ in given] != [place.group(1) for place in places] or \
                 len(read) != len(places):
             return attrs  # attributes added, removed or moved: the element's own line
         parts, end = [], 0
         for place, (name, value), was in zip(places, given, read):
             if was == f' {name}="{value}"':
                 continue  # unchanged: the source's spelling stays
-            quote = place.group(3)[-1]
-            if quote == "'":
+            if place.group(2) == "'":
                 if "'" in value:
                     return attrs
                 value = value.replace('&quot;', '"')
-            parts += [body[end:place.start(3)], place.group(3)[:-1], quote, value, quote]
-            end = place.end()
+            parts += [body[end:place.start(3)], value]
+            end = place.end(3)
         return ''.join(parts) + body[end:]
 
     def _empty(self, tag: str, attrs: str, node: Any) -> str:
