@@ -442,3 +442,33 @@ def test_a_file_in_another_encoding_keeps_its_characters(tmp_path: Path) -> None
     written = etree.parse(str(tmp_path / 'euro.urdf')).getroot()
     assert written[0].text == ' pi\xe8ce \xe0 main ' and written[1].get('name') == 'b\u20ac'
     assert Robot.from_urdf(tmp_path / 'euro.urdf').links[0].name == 'b\u20ac'
+
+
+def test_text_spelled_with_references_stays_so_when_something_else_is_edited() -> None:
+    """A block's ``&quot;`` (Kinova's ros2_control params) is no changed line of an edit."""
+    from lxml import etree
+    source = ('<robot name="r">\r\n  <link name="a">\r\n    <inertial>\r\n'
+              '      <mass value="1"/>\r\n      <inertia ixx="1" ixy="0" ixz="0" iyy="1" '
+              'iyz="0" izz="1"/>\r\n    </inertial>\r\n  </link>\r\n'
+              '  <ros2_control name="c" type="system">\r\n    <hardware>\r\n'
+              '      <param name="prefix">&quot;&quot;</param>\r\n'
+              '      <param name="ip">&#x31;0.0.0.&#49;</param>\r\n'
+              "      <param name='q'>it&apos;s &gt; &amp;\r\n two lines</param>\r\n"
+              '      <param name="plain">a &gt; b</param>\r\n'
+              '    </hardware>\r\n  </ros2_control>\r\n</robot>\r\n')
+    robot = Robot.from_urdf_string(source)
+    robot.get_link('a').inertial.mass = 2.0
+    written = robot.to_urdf()
+    assert _changed(source, written) == (['      <mass value="1"/>'], ['      <mass value="2"/>'])
+    before = etree.fromstring(source.encode())
+    after = etree.fromstring(written.encode())
+    assert [node.text for node in after.iter('param')] == \
+        [node.text for node in before.iter('param')]  # as lxml reads them: the same
+    params = robot.extensions[0].element[0]
+    params[1].text = '10.0.0.2'  # a text edited in place is written edited
+    params.insert(0, etree.Element('param'))  # and the places of the others move
+    written = robot.to_urdf()
+    assert '<param name="ip">10.0.0.2</param>' in written
+    assert '<param name="prefix">&quot;&quot;</param>' in written
+    assert [node.text for node in etree.fromstring(written.encode()).iter('param')] == \
+        [None, '""', '10.0.0.2', "it's > &\n two lines", 'a > b']

@@ -17,7 +17,8 @@ Start tags as the source wrote them, where lxml would write them otherwise.
 
 lxml writes every start tag on one line with single spaces; CAD exporters (SolidWorks's
 among them) put each attribute on its own line. An unedited element keeps its source
-tags: the reader records the unusual ones, the writer puts them back.
+tags: the reader records the unusual ones, the writer puts them back. So too for a text
+that spells characters with references (``&quot;``), which lxml writes as characters.
 """
 
 from __future__ import annotations
@@ -103,7 +104,56 @@ def unusual_start_tags(document: Any, text: str, newline: str = '\n') -> SourceT
                               attributes)
         index += 1
         taken = index
+    if _TEXT_REFERENCE.search(text) is not None:
+        found.texts = _spelled_texts(document, text, newline)
     return found
+
+
+# Text right after a start tag that spells a character with a reference lxml would not
+# write (``&quot;``, ``&apos;``, ``&#...;``); lxml writes the character itself.
+_TEXT_REFERENCE = re.compile(r'>[^<]*&(?:quot;|apos;|#)')
+
+# What to pass over (comments, CDATA, processing instructions, declarations), or a start
+# tag followed by such text.
+_SPELLED = re.compile(r'<(?:!--.*?-->|!\[CDATA\[.*?\]\]>|\?.*?\?>|![^>]*>)|'
+                      r'<(?![/!?])(?:[^>"\']++|"[^"]*"|\'[^\']*\')*+>'
+                      r'(?=[^<]*&(?:quot;|apos;|#))', re.DOTALL)
+
+
+def _spelled_texts(document: Any, text: str, newline: str) -> dict[Any, tuple[str, str]]:
+    """
+    Return, per element whose text the source spells with references, that spelling.
+
+    With the text it stands for, which the element must still have for the spelling to
+    be put back. Only a spelling that reads as that text is recorded.
+    """
+    spelled: dict[Any, tuple[str, str]] = {}
+    elements = document.iter(etree.Element)
+    index = taken = position = 0
+    for match in _SPELLED.finditer(text):
+        index += text.count('<', position, match.start()) - \
+            text.count('</', position, match.start())
+        position = match.end()
+        if match.group()[1] in '!?':
+            continue
+        next(islice(elements, index - taken, index - taken), None)
+        element = next(elements, None)
+        index += 1
+        taken = index
+        if element is None:
+            break
+        end = text.find('<', position)
+        spelling = text[position:end if end >= 0 else len(text)].replace(newline, '\n')
+        name = _NAME.match(match.group())
+        if name is not None and _names_tag(name.group(1), element.tag) and \
+                element.text is not None and _text_value(spelling) == element.text:
+            spelled[element] = (spelling, element.text)
+    return spelled
+
+
+def _text_value(source: str) -> str:
+    """Return the text XML reads from the source text of it (no markup in it)."""
+    return html.unescape(source.replace('\r\n', '\n').replace('\r', '\n'))
 
 
 # One attribute of a source start tag: its name, its quote and its value as written.
@@ -153,11 +203,12 @@ def same_as_source(written: str, text: str, start: int) -> bool:
 class _Recorded(dict[Any, tuple[str, tuple[tuple[str, str], ...]]]):
     """The recorded start tags, and the last text they were put back into (``memo``)."""
 
-    __slots__ = ('memo',)
+    __slots__ = ('memo', 'texts')
 
     def __init__(self) -> None:
         super().__init__()
         self.memo: tuple[Any, str, str] | None = None  # node, lxml's text, restored text
+        self.texts: dict[Any, tuple[str, str]] = {}  # texts spelled with references
 
 
 def as_source(serialized: str, node: Any, extras: Any) -> str:
@@ -177,17 +228,26 @@ def as_source(serialized: str, node: Any, extras: Any) -> str:
 
 
 def restore_start_tags(serialized: str, node: Any, tags: SourceTags) -> str:
-    """Return lxml's serialisation of ``node`` with its elements' source start tags."""
-    if not tags:
+    """
+    Return lxml's serialisation of ``node`` with its elements' source start tags.
+
+    And with the source's spelling of texts written with references, while unchanged.
+    """
+    texts = getattr(tags, 'texts', None)
+    if not tags and not texts:
         return serialized
     memo = getattr(tags, 'memo', None)
     if memo is not None and memo[0] is node and memo[1] == serialized:
         return memo[2]  # written again unchanged (a node republishing, say): same text
     elements = list(node.iter(etree.Element))
-    if len(tags) > _FEW:
+    if not tags:
+        restored = serialized
+    elif len(tags) > _FEW:
         restored = _restore(serialized, elements, tags)
     else:
         restored = _restore_few(serialized, elements, tags)
+    if texts:
+        restored = _restore_texts(restored, elements, texts)
     if restored is not serialized and isinstance(tags, _Recorded):
         tags.memo = (node, serialized, restored)
     return restored
@@ -203,34 +263,66 @@ _TO_NEXT_START = re.compile(r'(?:[^<]++|<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>
 
 def _restore_few(serialized: str, elements: list[Any], tags: SourceTags) -> str:
     """Put back a few recorded tags, skipping from one element's start tag to the next."""
+    located = _start_tags_of(serialized, elements, [
+        element for element, (_, attributes) in tags.items()
+        if tuple(element.attrib.items()) == attributes])
+    if not located:
+        return serialized
+    parts, position = [], 0
+    for element, start, end in located:
+        parts += [serialized[position:start], _as_source(tags[element][0], serialized[start:end])]
+        position = end
+    parts.append(serialized[position:])
+    return ''.join(parts)
+
+
+def _restore_texts(serialized: str, elements: list[Any],
+                   texts: dict[Any, tuple[str, str]]) -> str:
+    """Put back the source's spelling of the texts still as read, after their start tags."""
+    located = _start_tags_of(serialized, elements, [
+        element for element, (_, value) in texts.items() if element.text == value])
+    if not located:
+        return serialized
+    parts, position = [], 0
+    for element, _, end in located:
+        stop = serialized.find('<', end)
+        stop = len(serialized) if stop < 0 else stop
+        if _text_value(serialized[end:stop]) != element.text:
+            return serialized  # not the shape expected: keep lxml's text
+        parts += [serialized[position:end], texts[element][0]]
+        position = stop
+    parts.append(serialized[position:])
+    return ''.join(parts)
+
+
+def _start_tags_of(serialized: str, elements: list[Any],
+                   chosen: list[Any]) -> list[tuple[Any, int, int]] | None:
+    """
+    Return where lxml's text of ``elements`` has the start tag of each chosen element.
+
+    In document order, as (element, start, end); None if the text is not of that shape.
+    Elements not among ``elements`` (another subtree) are left out.
+    """
     places = []
-    for element, (_, attributes) in tags.items():
+    for element in chosen:
         try:
-            index = elements.index(element)
+            places.append((elements.index(element), element))
         except ValueError:  # not in this subtree
             continue
-        if tuple(element.attrib.items()) == attributes:
-            places.append((index, element))
-    if not places:
-        return serialized
     places.sort(key=lambda place: place[0])
     starts = _TO_NEXT_START.finditer(serialized)
-    parts, position, seen = [], 0, 0
+    located, seen = [], 0
     for index, element in places:
         match = next(islice(starts, index - seen, None), None)
         seen = index + 1
         if match is None:
-            return serialized  # not the shape expected: keep lxml's text
+            return None
         start = match.end() - 1
-        end = serialized.find('>', start) + 1
         name = _NAME.match(serialized, start)
-        if not end or name is None or not _names_tag(name.group(1), element.tag):
-            return serialized
-        parts += [serialized[position:start],
-                  _as_source(tags[element][0], serialized[start:end])]
-        position = end
-    parts.append(serialized[position:])
-    return ''.join(parts)
+        if name is None or not _names_tag(name.group(1), element.tag):
+            return None
+        located.append((element, start, tag_end(serialized, start)))
+    return located
 
 
 def _names_tag(written: str, tag: str) -> bool:
