@@ -472,3 +472,29 @@ def test_text_spelled_with_references_stays_so_when_something_else_is_edited() -
     assert '<param name="prefix">&quot;&quot;</param>' in written
     assert [node.text for node in etree.fromstring(written.encode()).iter('param')] == \
         [None, '""', '10.0.0.2', "it's > &\n two lines", 'a > b']
+
+
+def test_a_byte_order_mark_is_kept_in_the_file_not_in_the_text(tmp_path: Path) -> None:
+    """Windows editors start UTF-8 files with a BOM: it comes back, edited or not."""
+    from lxml import etree
+    source = b'\xef\xbb\xbf<?xml version="1.0"?>\r\n<robot name="r">\r\n  <link name="a"/>\r\n' \
+        b'</robot>\r\n'
+    path = tmp_path / 'bom.urdf'
+    path.write_bytes(source)
+    robot = Robot.from_urdf(path)
+    assert robot.to_urdf(tmp_path / 'out.urdf').startswith('<?xml')  # text: no BOM
+    assert (tmp_path / 'out.urdf').read_bytes() == source
+    robot.rename_link('a', 'b')
+    robot.to_urdf(tmp_path / 'out.urdf')
+    assert (tmp_path / 'out.urdf').read_bytes() == source.replace(b'"a"', b'"b"')
+    assert etree.parse(str(tmp_path / 'out.urdf')).getroot()[0].get('name') == 'b'
+
+
+def test_a_mended_declaration_changes_only_its_own_line() -> None:
+    """A declaration like pybullet's ``version="0.0"`` is mended (P102); what follows stays."""
+    source = ('<?xml version="0.0" ?>\n<!-- c -->\n\n<robot name="r">\n  <link name="a"/>\n'
+              '</robot>\n')
+    robot = Robot.from_urdf_string(source)
+    assert [warning.code for warning in robot.read_warnings] == ['P102']
+    assert _changed(source, robot.to_urdf()) == (['<?xml version="0.0" ?>'],
+                                                 ['<?xml version="1.0"?>'])

@@ -32,6 +32,7 @@ class Layout(NamedTuple):
     end: str = '\n'  # the white space after the document's last tag
     gap: str = '\n'  # the white space after the XML declaration (or before all, if none)
     between: tuple[str, ...] = ()  # the white space before each later node up to the root
+    bom: bool = False  # the file began with a UTF-8 byte order mark
 
 
 Details = tuple[Layout, Callable[[], dict[Any, Any]] | None, str | None,

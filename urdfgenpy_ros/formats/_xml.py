@@ -101,8 +101,15 @@ def xml_bytes(text: str, errors: str = 'strict') -> bytes:
     return text.encode('utf-8', errors)
 
 
-def write_text(path: str | PathLike[str], text: str) -> None:
-    """Write XML ``text`` to ``path`` in its declared encoding, creating parent folders."""
+def write_text(path: str | PathLike[str], text: str, *, bom: bool = False) -> None:
+    """
+    Write XML ``text`` to ``path`` in its declared encoding, creating parent folders.
+
+    With ``bom``, a file written in UTF-8 starts with the byte order mark its source had.
+    """
     target = Path(path)
     target.parent.mkdir(parents=True, exist_ok=True)
-    target.write_bytes(xml_bytes(text))
+    data = xml_bytes(text)
+    if bom and data == text.encode('utf-8', 'surrogateescape'):
+        data = codecs.BOM_UTF8 + data
+    target.write_bytes(data)

@@ -273,7 +273,8 @@ class UrdfWriter(ElementWriter):
 
 def write_urdf(robot: Robot, path: str | PathLike[str] | None = None) -> str:
     """Return the URDF text of ``robot``; also write it to ``path`` when given."""
-    text = UrdfWriter(robot).document()
+    writer = UrdfWriter(robot)
+    text = writer.document()
     if path is not None:
-        write_text(path, text)
+        write_text(path, text, bom=writer.layout.bom)
     return text

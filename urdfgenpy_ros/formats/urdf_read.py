@@ -251,12 +251,15 @@ def _document_details(data: bytes, declaration_ignored: bool, root: Any) -> Deta
     and, when that text shows the tree is still as read, the file's own text of the root.
     """
     text = data.decode('utf-8', 'replace')
+    bom = text.startswith('\ufeff')  # kept for the file, not in the text
+    if bom:
+        text = text[1:]
     top = root.getroottree().getroot()
     # a <robot> wrapped in another element takes no namespace from it, or its tag won't do
     head, start = _opening_tag(text, root) if top is root or not top.nsmap else (None, None)
     if top is not root:
         start = None  # the start tags are compared from the wrapper's
-    layout = _layout(data, text, root, head, declaration_ignored)
+    layout = _layout(data, text, root, head, declaration_ignored)._replace(bom=bom)
     tags = partial(unusual_start_tags, top, text, layout.newline)
     if start is None:
         return layout, tags, None, None
@@ -310,8 +313,8 @@ def _layout(data: bytes, text: str, root: Any, head: str | None,
     end = text[len(body):].replace('\r\n', '\n') if body.endswith('>') else '\n'
     gap = '\n' if declaration else ''
     between: tuple[str, ...] = ()
-    start = match.end(1) if match is not None and declaration == match.group(1) else \
-        0 if not declaration else None
+    # the white space around a declaration the writer mends (P102) stays as well
+    start = match.end(1) if match is not None else 0 if not declaration else None
     if start is not None:
         spaces = _spaces_before(text, start, len(list(root.itersiblings(preceding=True))))
         if spaces:
