@@ -17,12 +17,14 @@
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
+from helpers import load_yourdfpy
 import pytest
 
 from urdfgenpy_ros import (
-    Box, Cylinder, Inertial, Joint, JointLimit, JointMimic, Link, Material, Mesh, Origin,
-    Robot, Sphere, Visual)
+    Box, Cylinder, Inertial, Joint, JointLimit, JointMimic, JointType, Link, Material, Mesh,
+    ModelError, Origin, Robot, Sphere, Visual)
 
 
 def _chain(count: int) -> Robot:
@@ -40,6 +42,22 @@ def test_building_chains_and_keeps_order() -> None:
     assert [link.name for link in robot.links] == ['a', 'b']
     assert [joint.name for joint in robot.joints] == ['j']
     assert robot.materials[0].rgba == (1.0, 0.0, 0.0, 1.0)
+
+
+def test_a_joint_type_set_by_name_is_a_joint_type(ptu: Robot, tmp_path: Path) -> None:
+    """``joint.type = 'fixed'`` works like the constructor's name; a wrong one fails there."""
+    joint = ptu.get_joint('tilt_joint')
+    joint.type = 'fixed'
+    joint.limit = None
+    assert joint.type is JointType.FIXED and not joint.is_movable
+    assert 'tilt_joint [fixed]' in ptu.tree_string()
+    assert not [finding for finding in ptu.validate() if finding.severity == 'error']
+    ptu.to_urdf(tmp_path / 'ptu.urdf')
+    written = load_yourdfpy(tmp_path / 'ptu.urdf').joints
+    assert [joint.type for joint in written if joint.name == 'tilt_joint'] == ['fixed']
+    with pytest.raises(ModelError, match="joint 'tilt_joint': unknown type 'hinge'"):
+        joint.type = 'hinge'
+    assert joint.type is JointType.FIXED  # the joint is as it was
 
 
 def test_inertial_is_mutable_through_get_link(ptu: Robot) -> None:

@@ -211,11 +211,7 @@ class Joint:
     def __post_init__(self) -> None:
         """Check the name and type; coerce the axis."""
         checks.name('joint', self.name)
-        kind = _TYPES.get(self.type)
-        if kind is None:
-            raise ModelError(f'joint {self.name!r}: unknown type {self.type!r} '
-                             f'(use one of {_TYPE_NAMES})')
-        self.type = kind
+        kind = self.type  # a JointType: the field coerces what is set (_TypeField)
         if not (type(self.parent) is str and self.parent and type(self.child) is str
                 and self.child):
             checks.name(f'joint {self.name!r} parent', self.parent)
@@ -245,3 +241,28 @@ class Joint:
         """Attach a block that belongs to this joint; return the joint."""
         self.extensions.append(extension)
         return self
+
+
+class _TypeField:
+    """
+    ``Joint.type``: a type name set (``joint.type = 'fixed'``) is stored as its JointType.
+
+    An unknown name fails where it is set, naming the joint, as in the constructor.
+    """
+
+    def __init__(self, slot: Any) -> None:
+        self._get = slot.__get__
+        self._set = slot.__set__
+
+    def __get__(self, joint: Joint | None, owner: type | None = None) -> Any:
+        return self if joint is None else self._get(joint, owner)
+
+    def __set__(self, joint: Joint, value: object) -> None:
+        kind = value if type(value) is JointType else _TYPES.get(value)
+        if kind is None:
+            raise ModelError(f'joint {joint.name!r}: unknown type {value!r} '
+                             f'(use one of {_TYPE_NAMES})')
+        self._set(joint, kind)
+
+
+Joint.type = _TypeField(Joint.__dict__['type'])  # type: ignore[assignment,misc]
