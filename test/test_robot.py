@@ -60,6 +60,24 @@ def test_a_joint_type_set_by_name_is_a_joint_type(ptu: Robot, tmp_path: Path) ->
     assert joint.type is JointType.FIXED  # the joint is as it was
 
 
+def test_a_value_of_the_wrong_kind_names_its_link_and_overwrites_nothing(
+        ptu: Robot, tmp_path: Path) -> None:
+    """``inertial.mass = 'abc'`` on a read robot: one error naming the link; the file stays."""
+    target = tmp_path / 'ptu.urdf'
+    ptu.to_urdf(target)
+    robot = Robot.from_urdf(target)
+    robot.get_link('tilt_link').inertial.mass = 'abc'
+    robot.get_joint('pan_joint').origin = 'up'
+    with pytest.raises(ModelError, match="^link 'tilt_link': cannot be written.*'abc'"):
+        robot.to_urdf(target)
+    with pytest.raises(ModelError, match="^link 'tilt_link'"):
+        robot.to_xacro(tmp_path / 'ptu.urdf.xacro')
+    assert Robot.from_urdf(target) == ptu  # the file as it was
+    robot.get_link('tilt_link').inertial.mass = 0.25
+    with pytest.raises(ModelError, match="^joint 'pan_joint': cannot be written"):
+        robot.to_urdf(target)
+
+
 def test_inertial_is_mutable_through_get_link(ptu: Robot) -> None:
     ptu.get_link('base_plate').inertial.mass = 100.0
     assert ptu.get_link('base_plate').inertial.mass == 100.0

@@ -32,6 +32,7 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
+from urdfgenpy_ros.errors import ModelError, UrdfgenpyError
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._xml import esc, fragment, write_text
 from urdfgenpy_ros.formats.sdf import sensor_element
@@ -64,6 +65,10 @@ def _sensor_block(sensor: Any, reference: str) -> Any:
     return block.element
 
 
+# What writing a value of the wrong kind raises (a string for a number, say)
+_UNWRITABLE = (TypeError, ValueError, AttributeError, KeyError)
+
+
 class UrdfWriter(ElementWriter):
     """Turn a Robot into URDF text; the Xacro writer overrides a few hooks."""
 
@@ -81,7 +86,36 @@ class UrdfWriter(ElementWriter):
         self.extensions = robot.extensions
 
     def document(self) -> str:
-        """Return the whole file, with the comments a read file had around its root."""
+        """
+        Return the whole file, with the comments a read file had around its root.
+
+        :raises ModelError: naming the link or joint that holds a value set since that is
+            not of its kind (``inertial.mass = 'abc'``), instead of the error deep inside.
+        """
+        try:
+            return self._document()
+        except UrdfgenpyError:
+            raise  # already the model's own one-line error
+        except _UNWRITABLE as error:
+            raise self._unwritable(error) from error
+
+    def _unwritable(self, error: Exception) -> ModelError:
+        """Return the one-line error of a model that cannot be written, found item by item."""
+        robot = self.robot
+        items: list[Link | Joint] = [*robot.links, *robot.joints]
+        for item in items:
+            try:
+                self.object_text(item, self.unit)
+            except UrdfgenpyError:
+                raise
+            except _UNWRITABLE as found:
+                kind = 'link' if isinstance(item, Link) else 'joint'
+                return ModelError(f'{kind} {item.name!r}: cannot be written, a value set in it '
+                                  f'is not of its kind ({found}): e.g. inertial.mass = 1.5, '
+                                  'joint.origin = Origin((0, 0, 0.1))')
+        return ModelError(f'robot {robot.name!r}: cannot be written ({error})')
+
+    def _document(self) -> str:
         extras = self.robot.extras
         layout = self.layout
         before: list[str] = []
