@@ -222,3 +222,8 @@ def test_a_file_of_macros_read_as_a_robot_says_so(tmp_path: Path) -> None:
     assert str(raised.value) == (
         f'{library}: error X003 defines macros (arm) and no robot: read a robot file that '
         'includes it and calls <xacro:arm .../>')
+    named = tmp_path / 'fr3.xacro'  # franka_description's: a robot name, still no robot
+    named.write_text(library.read_text().replace('<robot ', '<robot name="fr3" '))
+    with pytest.raises(ParseError, match='X003 defines macros .arm. and no robot'):
+        Robot.from_xacro(named)
+

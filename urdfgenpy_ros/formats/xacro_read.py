@@ -154,6 +154,10 @@ def read_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = N
         robot = read_urdf_bytes(text.encode('utf-8'), f'{path} (expanded)')
     except ParseError as error:
         raise _macros_only(path, text) or error from None
+    if not robot.links:  # a macro library with a robot name (franka's fr3.xacro)
+        library = _macros_only(path, text)
+        if library is not None:
+            raise library
     robot.read_warnings[:0] = said
     robot.included_files = [str(Path(path).resolve()), *included]
     return robot
