@@ -164,8 +164,9 @@ def test_what_xacro_prints_while_failing_ends_the_one_line(tmp_path: Path, capfd
     path.write_text(MACRO_WITH.format(attributes='p0arams="side"'))
     with pytest.raises(ParseError) as raised:
         Robot.from_xacro(path)
-    assert str(raised.value) == (f'{path}: error X001 xacro: Invalid parameter "side" (xacro '
-                                 'warned: xacro:macro: unknown attribute(s): p0arams)')
+    assert str(raised.value) == (f'{path}: error X001 xacro: Invalid parameter "side" (when '
+                                 f'instantiating macro leg ({path})) (xacro warned: '
+                                 'xacro:macro: unknown attribute(s): p0arams)')
     assert capfd.readouterr().err == ''
 
 
@@ -227,3 +228,20 @@ def test_a_file_of_macros_read_as_a_robot_says_so(tmp_path: Path) -> None:
     with pytest.raises(ParseError, match='X003 defines macros .arm. and no robot'):
         Robot.from_xacro(named)
 
+
+def test_an_error_inside_a_macro_names_the_macros_as_xacro_does(tmp_path: Path) -> None:
+    """X001 keeps xacro's context: which macro, called from which, in which file."""
+    (tmp_path / 'lib.xacro').write_text(
+        '<robot xmlns:xacro="http://ros.org/wiki/xacro">\n'
+        '  <xacro:macro name="inner" params="a"><link name="${b}"/></xacro:macro>\n'
+        '  <xacro:macro name="outer" params=""><xacro:inner a="1"/></xacro:macro>\n'
+        '</robot>\n')
+    top = tmp_path / 'top.urdf.xacro'
+    top.write_text('<robot name="r" xmlns:xacro="http://ros.org/wiki/xacro">\n'
+                   '  <xacro:include filename="lib.xacro"/>\n  <xacro:outer/>\n</robot>\n')
+    with pytest.raises(ParseError) as raised:
+        Robot.from_xacro(top)
+    message = str(raised.value)
+    assert message.startswith(f'{top}: error X001 xacro: name ') and '\n' not in message
+    assert message.endswith(f"(when instantiating macro inner ({tmp_path / 'lib.xacro'}), "
+                            f"from outer ({tmp_path / 'lib.xacro'}))")

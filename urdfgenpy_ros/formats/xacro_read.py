@@ -107,10 +107,15 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
     resolver = resolver or PackageResolver()
     where = SourceLocation(str(path))
     printed = io.StringIO()
+    context = ''
     try:
         with _LOCK, redirect_stderr(printed), _fresh_state(xacro) as includes, \
                 _finding_with(resolver):
-            document = xacro.process_file(str(path), mappings=dict(mappings or {}))
+            try:
+                document = xacro.process_file(str(path), mappings=dict(mappings or {}))
+            except Exception:  # noqa: B902 - where it was, before the stacks are reset
+                context = _macro_context(xacro)
+                raise
             names = list(dict.fromkeys(includes))
     except Exception as error:  # noqa: B902 - xacro raises many types; all are one line
         cause = getattr(error, 'exc', None)  # xacro wraps what substitutions raise
@@ -120,6 +125,8 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
         if ('ament_index_python' in message or 'PackageNotFound' in type(error).__name__) \
                 and 'search_paths' not in message:
             message += ' (pass the package folders in search_paths)'
+        if context:
+            message += f' ({context})'
         said = _xacro_warnings(printed.getvalue())
         if said:
             message += f' (xacro warned: {"; ".join(said)})'
@@ -129,6 +136,16 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
                      for line in _xacro_warnings(printed.getvalue())]
     included = [str(Path(name).resolve()) for name in names]
     return document.toprettyxml(indent='  '), included
+
+
+def _macro_context(xacro: Any) -> str:
+    """Return the macros xacro was instantiating, innermost first, as its CLI names them."""
+    try:
+        calls = [f'{macro.body.getAttribute("name")} ({macro.history[-1][-1]})'
+                 for macro in reversed(xacro.macrostack or [])]
+    except (AttributeError, IndexError, TypeError):  # xacro's internals changed
+        return ''
+    return f'when instantiating macro {", from ".join(calls)}' if calls else ''
 
 
 _ERRNO_AGAIN = re.compile(r" \[Errno \d+\] [^:]+: '[^']*'$")
