@@ -23,6 +23,7 @@ that spells characters with references (``&quot;``), which lxml writes as charac
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 import html
 from itertools import islice
 import re
@@ -83,27 +84,12 @@ def unusual_start_tags(document: Any, text: str, newline: str = '\n') -> SourceT
     break.
     """
     found = _Recorded()
-    elements = document.iter(etree.Element)
-    index = taken = 0  # start tags seen before ``position``; elements taken from the tree
-    position = 0
-    for match in _UNUSUAL.finditer(text):
-        # Between two tokens every '<' opens a start tag or an end tag.
-        index += text.count('<', position, match.start()) - \
-            text.count('</', position, match.start())
-        position = match.end()
+    for match, element in _opened(document, text, _UNUSUAL):
         tag = match.group()
-        if tag[1] in '!?':
-            continue
-        next(islice(elements, index - taken, index - taken), None)  # skip to the index-th
-        element = next(elements, None)
-        if element is None:
-            break
         attributes = tuple(element.attrib.items())
         if _as_read(tag, element.tag, attributes):
             found[element] = (tag.replace(newline, '\n'),  # the writer puts the file's ends
                               attributes)
-        index += 1
-        taken = index
     if _TEXT_REFERENCE.search(text) is not None:
         found.texts = _spelled_texts(document, text, newline)
     return found
@@ -128,27 +114,39 @@ def _spelled_texts(document: Any, text: str, newline: str) -> dict[Any, tuple[st
     be put back. Only a spelling that reads as that text is recorded.
     """
     spelled: dict[Any, tuple[str, str]] = {}
-    elements = document.iter(etree.Element)
-    index = taken = position = 0
-    for match in _SPELLED.finditer(text):
-        index += text.count('<', position, match.start()) - \
-            text.count('</', position, match.start())
-        position = match.end()
-        if match.group()[1] in '!?':
-            continue
-        next(islice(elements, index - taken, index - taken), None)
-        element = next(elements, None)
-        index += 1
-        taken = index
-        if element is None:
-            break
-        end = text.find('<', position)
-        spelling = text[position:end if end >= 0 else len(text)].replace(newline, '\n')
+    for match, element in _opened(document, text, _SPELLED):
+        end = text.find('<', match.end())
+        spelling = text[match.end():end if end >= 0 else len(text)].replace(newline, '\n')
         name = _NAME.match(match.group())
         if name is not None and _names_tag(name.group(1), element.tag) and \
                 element.text is not None and _text_value(spelling) == element.text:
             spelled[element] = (spelling, element.text)
     return spelled
+
+
+def _opened(document: Any, text: str, tokens: re.Pattern[str]) -> Iterator[tuple[Any, Any]]:
+    """
+    Yield each start tag ``tokens`` matches in the source ``text``, with its element.
+
+    ``tokens`` also matches what is no start tag (comments, CDATA, processing
+    instructions, declarations), which is passed over; between two matches every ``<``
+    opens a start tag or an end tag, so counting them finds the element in document order.
+    """
+    elements = document.iter(etree.Element)
+    index = taken = position = 0  # start tags before ``position``; elements taken
+    for match in tokens.finditer(text):
+        index += text.count('<', position, match.start()) - \
+            text.count('</', position, match.start())
+        position = match.end()
+        if match.group()[1] in '!?':
+            continue
+        next(islice(elements, index - taken, index - taken), None)  # skip to the index-th
+        element = next(elements, None)
+        if element is None:
+            return
+        index += 1
+        taken = index
+        yield match, element
 
 
 def _text_value(source: str) -> str:
