@@ -24,8 +24,11 @@ from urdfgenpy_ros import checks
 from urdfgenpy_ros.checks import Vec3
 from urdfgenpy_ros.errors import ModelError, SourceLocation
 from urdfgenpy_ros.preserved import Preserved
+from urdfgenpy_ros.transforms import (
+    from_xyz_rpy, Matrix4, matrix_rpy, quaternion_matrix, rpy_quaternion)
 
 _ZERO: Vec3 = (0.0, 0.0, 0.0)
+Vec4 = tuple[float, float, float, float]
 
 
 def _setters(cls: type, *names: str) -> tuple:
@@ -46,25 +49,73 @@ _INF = math.inf
 
 @dataclass(slots=True, frozen=True, init=False)
 class Origin:
-    """Pose of a frame: translation ``xyz`` in metres, fixed-axis ``rpy`` in radians."""
+    """
+    Pose of a frame: translation ``xyz`` in metres and one rotation.
+
+    The rotation is given as fixed-axis ``rpy`` in radians, or as a quaternion
+    ``quat_xyzw`` (URDF 1.1). Given as a quaternion, ``quat_xyzw`` keeps it as written
+    and ``rpy`` holds the same rotation, so every consumer of either gets it right;
+    given as rpy, ``quat_xyzw`` is None (:attr:`quaternion` converts).
+    """
 
     xyz: Vec3 = _ZERO
     rpy: Vec3 = _ZERO
     _: KW_ONLY
+    quat_xyzw: Vec4 | None = None
     source: SourceLocation | None = field(default=None, compare=False, repr=False)
     extras: Preserved | None = field(default=None, compare=False, repr=False)
 
     def __init__(self, xyz: Sequence[float] = _ZERO, rpy: Sequence[float] = _ZERO, *,
+                 quat_xyzw: Sequence[float] | None = None,
                  source: SourceLocation | None = None, extras: Preserved | None = None) -> None:
         _ORIGIN_SLOTS[0](self, xyz if xyz is _ZERO else checks.vec3('origin', 'xyz', xyz))
-        _ORIGIN_SLOTS[1](self, rpy if rpy is _ZERO else checks.vec3('origin', 'rpy', rpy))
-        _ORIGIN_SLOTS[2](self, source)
-        _ORIGIN_SLOTS[3](self, extras)
+        if quat_xyzw is None:
+            _ORIGIN_SLOTS[1](self, rpy if rpy is _ZERO else checks.vec3('origin', 'rpy', rpy))
+            _ORIGIN_SLOTS[2](self, None)
+        else:
+            quat = _quaternion(quat_xyzw)
+            turned = quaternion_rpy(quat)
+            if rpy is not _ZERO and checks.vec3('origin', 'rpy', rpy) != turned:
+                raise ModelError('origin: give the rotation as rpy or as quat_xyzw, not both '
+                                 f'(rpy {tuple(rpy)!r}, quat_xyzw {quat!r})')
+            _ORIGIN_SLOTS[1](self, turned)
+            _ORIGIN_SLOTS[2](self, quat)
+        _ORIGIN_SLOTS[3](self, source)
+        _ORIGIN_SLOTS[4](self, extras)
 
     @property
     def is_identity(self) -> bool:
         """Return whether this origin neither moves nor turns."""
         return self.xyz == _ZERO and self.rpy == _ZERO
+
+    @property
+    def quaternion(self) -> Vec4:
+        """Return the rotation as a unit quaternion ``(x, y, z, w)``, however it was given."""
+        if self.quat_xyzw is not None:
+            x, y, z, w = self.quat_xyzw
+            norm = math.sqrt(x * x + y * y + z * z + w * w)
+            return (x / norm, y / norm, z / norm, w / norm) if norm else (0.0, 0.0, 0.0, 1.0)
+        return rpy_quaternion(self.rpy)
+
+    def matrix(self) -> Matrix4:
+        """Return the 4x4 transform of this origin (the quaternion's own, if given so)."""
+        if self.quat_xyzw is None:
+            return from_xyz_rpy(self.xyz, self.rpy)
+        result = quaternion_matrix(self.quat_xyzw)
+        result[0][3], result[1][3], result[2][3] = self.xyz
+        return result
+
+    def as_rpy(self) -> Origin:
+        """Return this origin with its rotation written as rpy."""
+        if self.quat_xyzw is None:
+            return self
+        return Origin(self.xyz, self.rpy, source=self.source)
+
+    def as_quaternion(self) -> Origin:
+        """Return this origin with its rotation written as a quaternion (``quat_xyzw``)."""
+        if self.quat_xyzw is not None:
+            return self
+        return Origin(self.xyz, quat_xyzw=self.quaternion, source=self.source)
 
     @classmethod
     def above(cls, geometry: Geometry, xy: tuple[float, float] = (0.0, 0.0),
@@ -72,7 +123,8 @@ class Origin:
         """
         Return the origin that puts the bottom of ``geometry`` at z = 0.
 
-        A box or cylinder is lifted by half its height, a sphere by its radius.
+        A box or cylinder is lifted by half its height, a sphere by its radius, a capsule
+        by half its length plus its radius.
         """
         return cls((xy[0], xy[1], geometry.half_height()), rpy)
 
@@ -82,7 +134,27 @@ class Origin:
         return cls(xyz=(xy[0], xy[1], z), rpy=(-math.pi / 2.0, 0.0, 0.0))
 
 
-_ORIGIN_SLOTS = _setters(Origin, 'xyz', 'rpy', 'source', 'extras')
+def quaternion_rpy(quat_xyzw: Sequence[float]) -> Vec3:
+    """Return the fixed-axis rpy of a quaternion ``(x, y, z, w)`` (normalised first)."""
+    x, y, z, w = quat_xyzw
+    return matrix_rpy(quaternion_matrix((x, y, z, w)))
+
+
+def _quaternion(value: Sequence[object]) -> Vec4:
+    """Return a quaternion of four finite numbers, not all zero; raise ModelError if not."""
+    try:
+        x, y, z, w = (float(part) for part in value)  # type: ignore[arg-type]
+    except (TypeError, ValueError):
+        raise ModelError(f'origin: quat_xyzw must have 4 numbers (x, y, z, w), got {value!r}'
+                         ) from None
+    total = x * x + y * y + z * z + w * w
+    if checks.enabled() and (total - total != 0.0 or total == 0.0):
+        raise ModelError(f'origin: quat_xyzw must be 4 finite numbers, not all 0, got '
+                         f'{value!r} (no rotation is 0 0 0 1)')
+    return (x, y, z, w)
+
+
+_ORIGIN_SLOTS = _setters(Origin, 'xyz', 'rpy', 'quat_xyzw', 'source', 'extras')
 IDENTITY = Origin()
 _BOX_SIZES = ('length', 'width', 'height')
 
@@ -179,6 +251,38 @@ class Sphere:
 _SPHERE_SLOTS = _setters(Sphere, 'radius', 'source', 'extras')
 
 
+@dataclass(slots=True, frozen=True, init=False)
+class Capsule:
+    """
+    A capsule along z, centred on its frame (URDF 1.1).
+
+    A cylinder of ``length`` capped by two half spheres of ``radius``: it is
+    ``length + 2 radius`` long in all, as in urdfdom, SDFormat and MuJoCo.
+    """
+
+    radius: float
+    length: float
+    _: KW_ONLY
+    source: SourceLocation | None = field(default=None, compare=False, repr=False)
+    extras: Preserved | None = field(default=None, compare=False, repr=False)
+
+    def __init__(self, radius: float, length: float, *, source: SourceLocation | None = None,
+                 extras: Preserved | None = None) -> None:
+        radius, length = _positive('capsule', ('radius', 'length'), radius, length)
+        set_radius, set_length, set_source, set_extras = _CAPSULE_SLOTS
+        set_radius(self, radius)
+        set_length(self, length)
+        set_source(self, source)
+        set_extras(self, extras)
+
+    def half_height(self) -> float:
+        """Return the distance from the centre to the lowest point."""
+        return self.length / 2.0 + self.radius
+
+
+_CAPSULE_SLOTS = _setters(Capsule, 'radius', 'length', 'source', 'extras')
+
+
 @dataclass(slots=True, frozen=True)
 class Mesh:
     """A mesh file (``package://``, ``file://`` or a path) with an optional scale."""
@@ -206,4 +310,4 @@ class Mesh:
             'give the origin explicitly, e.g. Origin(xyz=(0, 0, h / 2))')
 
 
-Geometry = Box | Cylinder | Sphere | Mesh
+Geometry = Box | Cylinder | Sphere | Capsule | Mesh

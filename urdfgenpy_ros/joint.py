@@ -60,6 +60,7 @@ class JointType(str, Enum):
 _ONE_DOF = frozenset((JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC))
 _TYPES: dict[object, JointType] = {**{t.value: t for t in JointType}, **{t: t for t in JointType}}
 _LIMIT_FIELDS = ('lower', 'upper', 'effort', 'velocity')
+_LIMITS_1_2 = ('acceleration', 'deceleration', 'jerk')
 _INF = float('inf')
 _TYPE_NAMES = ', '.join(t.value for t in JointType)
 
@@ -78,11 +79,18 @@ class JointLimit:
     _: KW_ONLY
     effort: float = 0.0
     velocity: float = 0.0
+    acceleration: float | None = None  # URDF 1.2: the joint's largest acceleration
+    deceleration: float | None = None  # URDF 1.2: its largest deceleration
+    jerk: float | None = None  # URDF 1.2: its largest jerk
     source: SourceLocation | None = _hidden()
     extras: Preserved | None = _hidden()
 
     def __post_init__(self) -> None:
-        """Coerce to floats; reject negative effort or velocity."""
+        """Coerce to floats; reject negative effort, velocity or URDF 1.2 limits."""
+        for name in _LIMITS_1_2:
+            value = getattr(self, name)
+            if value is not None:
+                setattr(self, name, checks.non_negative('limit', name, value, ''))
         try:
             lower, upper = self.lower, self.upper = float(self.lower), float(self.upper)
             effort, velocity = self.effort, self.velocity = (float(self.effort),

@@ -53,6 +53,7 @@ class Robot:
         self._materials: dict[str, Material] = {}
         self.extensions: list[Extension] = []
         self.source: SourceLocation | None = None
+        self.urdf_version: str | None = None  # the <robot version=...> given (None: 1.0)
         self.extras: Preserved | None = None
         self.read_warnings: list[ReadWarning] = []
         self.included_files: list[str] = []

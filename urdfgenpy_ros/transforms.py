@@ -12,7 +12,7 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""Small linear-algebra helpers that need no numpy: 4x4 transforms, rpy, eigenvalues."""
+"""Small linear-algebra helpers that need no numpy: 4x4 transforms, rpy, quaternions, eigenvalues."""
 
 from __future__ import annotations
 
@@ -95,6 +95,50 @@ def to_xyz_rpy(matrix: Matrix4, snap: float = 1e-15) -> tuple[tuple[float, float
         pitch = math.copysign(math.pi / 2.0, -r20)
         roll, yaw = 0.0, math.atan2(-r01, r11)
     return ((clean(x), clean(y), clean(z)), (clean(roll), clean(pitch), clean(yaw)))
+
+
+def quaternion_matrix(quat_xyzw: tuple[float, float, float, float]) -> Matrix4:
+    """
+    Return the rotation of a quaternion ``(x, y, z, w)`` as a 4x4 transform.
+
+    The quaternion is normalised first, as urdfdom does; a zero quaternion is no rotation.
+    """
+    x, y, z, w = quat_xyzw
+    norm = math.sqrt(x * x + y * y + z * z + w * w)
+    if norm == 0.0 or norm - norm != 0.0:
+        return [row[:] for row in IDENTITY4]
+    x, y, z, w = x / norm, y / norm, z / norm, w / norm
+    return [[1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y - z * w), 2.0 * (x * z + y * w), 0.0],
+            [2.0 * (x * y + z * w), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z - x * w), 0.0],
+            [2.0 * (x * z - y * w), 2.0 * (y * z + x * w), 1.0 - 2.0 * (x * x + y * y), 0.0],
+            [0.0, 0.0, 0.0, 1.0]]
+
+
+def matrix_rpy(matrix: Matrix4) -> tuple[float, float, float]:
+    """
+    Return fixed-axis roll, pitch, yaw with ``Rz(yaw) Ry(pitch) Rx(roll)`` = the rotation.
+
+    Each angle is peeled off the rotation in turn (yaw, then pitch from what is left, then
+    roll), so the three give back the rotation to rounding even next to pitch = +-pi/2,
+    where angles read independently from tiny matrix entries would not.
+    """
+    (r00, r01, _), (r10, r11, _), (r20, r21, _) = (row[:3] for row in matrix[:3])
+    yaw = math.atan2(r10, r00)
+    c, s = math.cos(yaw), math.sin(yaw)
+    pitch = math.atan2(-r20, c * r00 + s * r10)
+    cp, sp = math.cos(pitch), math.sin(pitch)
+    roll = math.atan2(sp * (c * r01 + s * r11) + cp * r21, c * r11 - s * r01)
+    return roll + 0.0, pitch + 0.0, yaw + 0.0  # no -0.0
+
+
+def rpy_quaternion(rpy: tuple[float, float, float]) -> tuple[float, float, float, float]:
+    """Return the unit quaternion ``(x, y, z, w)`` of fixed-axis roll, pitch, yaw (w >= 0)."""
+    hr, hp, hy = rpy[0] / 2.0, rpy[1] / 2.0, rpy[2] / 2.0
+    cr, sr, cp, sp, cy, sy = (math.cos(hr), math.sin(hr), math.cos(hp), math.sin(hp),
+                              math.cos(hy), math.sin(hy))
+    quat = (sr * cp * cy - cr * sp * sy, cr * sp * cy + sr * cp * sy,
+            cr * cp * sy - sr * sp * cy, cr * cp * cy + sr * sp * sy)
+    return quat if quat[3] >= 0.0 else (-quat[0], -quat[1], -quat[2], -quat[3])
 
 
 def symmetric_eigenvalues(matrix: Matrix3) -> tuple[float, float, float]:

@@ -48,6 +48,7 @@ if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
 
 _ROBOT_NAME = re.compile(r'(\sname\s*=\s*)(["\'])(.*?)\2', re.DOTALL)
+_ROBOT_VERSION = re.compile(r'(\sversion\s*=\s*)(["\'])(.*?)\2', re.DOTALL)
 
 
 def _single_quotes(text: str) -> str:
@@ -145,7 +146,9 @@ class UrdfWriter(ElementWriter):
 
     def robot_attrs(self) -> list[tuple[str, str]]:
         """Return the root element's attributes (name, text)."""
-        return [('name', self.robot.name)]
+        version = self.robot.urdf_version
+        return [('name', self.robot.name)] if version is None else \
+            [('name', self.robot.name), ('version', version)]
 
     def prologue(self) -> list[str]:
         """Return top-level elements written before everything else."""
@@ -212,7 +215,8 @@ class UrdfWriter(ElementWriter):
         robot = self.robot
         extras = robot.extras
         if extras is None or extras.order is None or extras.layout.head is None \
-                or not self.verbatim or extras.node.get('name') != robot.name:
+                or not self.verbatim or extras.node.get('name') != robot.name \
+                or extras.node.get('version') != robot.urdf_version:
             return False
         blocks = self._all_extensions()
         items = [*self.materials, *robot.links, *robot.joints, *blocks]
@@ -244,6 +248,11 @@ class UrdfWriter(ElementWriter):
             if extras is not None and extras.node.get('name') != name:
                 head = _ROBOT_NAME.sub(lambda m: f'{m.group(1)}{m.group(2)}{esc(name)}'
                                        f'{m.group(2)}', head, count=1)
+            version = self.robot.urdf_version
+            if extras is not None and version is not None and \
+                    extras.node.get('version') not in (None, version):
+                head = _ROBOT_VERSION.sub(lambda m: f'{m.group(1)}{m.group(2)}{esc(version)}'
+                                          f'{m.group(2)}', head, count=1)
             for key, text in attrs:
                 if f'{key}=' not in head:
                     head = f'{head[:-1]} {key}="{esc(text)}">'

@@ -37,7 +37,7 @@ from urdfgenpy_ros.formats.urdf_fresh import FRESH
 from urdfgenpy_ros.formats.urdf_schema import (
     Child, Element, ELEMENTS, FLOAT, INERTIAL, MATERIAL, OF_CLASS, REQUIRED, slot_of, SLOTS,
     TEXT, values)
-from urdfgenpy_ros.geometry import Box, Cylinder, Mesh, Origin, Sphere
+from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Origin, quaternion_rpy, Sphere
 from urdfgenpy_ros.material import Material
 
 if TYPE_CHECKING:
@@ -45,7 +45,7 @@ if TYPE_CHECKING:
     from urdfgenpy_ros.link import Link
     from urdfgenpy_ros.robot import Robot
 
-_LEAVES = frozenset((Origin, Box, Cylinder, Sphere, Mesh))
+_LEAVES = frozenset((Origin, Box, Cylinder, Sphere, Capsule, Mesh))
 _ATTRS = {tag: {attr.name: attr for attr in element.attrs} for tag, element in ELEMENTS.items()}
 _GIVEN = re.compile(r' ([^\s=]+)="([^"]*)"')  # one attribute as the writer gives it
 
@@ -160,6 +160,8 @@ class ElementWriter:
     def write(self, element: Element, item: Any, node: Any, pad: str | None) -> str:
         """Return ``element`` with the fields of ``item``, laid out like ``node`` if any."""
         tag = element.tag
+        if tag == 'origin':
+            item = self.origin_form(item, node)
         attrs = self._attributes(element, item, node)
         if node is not None:
             attrs = self._as_written(tag, node, attrs)
@@ -178,6 +180,28 @@ class ElementWriter:
             space = '\n' + inner
             return f'<{tag}{attrs}>{"".join(space + text for text in texts)}\n{pad}</{tag}>'
         return self._merge(element, attrs, children, node, pad, inner)
+
+    def origin_form(self, origin: Origin, node: Any) -> Origin:
+        """
+        Return ``origin`` with its rotation in the form its element was read in.
+
+        An origin read as a quaternion stays one (its own quaternion, as written, while
+        the rotation is the same), one read as rpy stays rpy; a new one keeps its form.
+        """
+        if node is None:
+            return origin
+        written = node.get('quat_xyzw')
+        if written is not None and origin.quat_xyzw is None:
+            try:
+                quat = tuple(float(part) for part in written.split())
+                if len(quat) == 4 and quaternion_rpy(quat) == origin.rpy:
+                    return Origin(origin.xyz, quat_xyzw=quat)
+            except ValueError:
+                pass
+            return origin.as_quaternion()
+        if written is None and origin.quat_xyzw is not None and 'rpy' in node.attrib:
+            return origin.as_rpy()
+        return origin
 
     def _as_written(self, tag: str, node: Any, attrs: str) -> str:
         """
@@ -236,7 +260,8 @@ class ElementWriter:
         if node is None:
             for attr in element.attrs:
                 value = getattr(item, attr.field)
-                if value is None or (value == '' and attr.default == ''):
+                if value is None or (value == '' and attr.default == '') or (
+                        attr.unless and getattr(item, attr.unless) is not None):
                     continue
                 parts.append(f' {attr.name}="{esc(self.text(attr.kind, value))}"')
             return ''.join(parts)
@@ -249,7 +274,7 @@ class ElementWriter:
                 continue
             done.add(name)
             value = getattr(item, known.field)
-            if value is None:
+            if value is None or (known.unless and getattr(item, known.unless) is not None):
                 continue
             if not _reads_as(known.kind, original, value):
                 original = self.text(known.kind, value)
@@ -258,7 +283,8 @@ class ElementWriter:
             if attr.name in done:
                 continue
             value = getattr(item, attr.field)
-            if value is None or (attr.default is not REQUIRED and value == attr.default):
+            if value is None or (attr.default is not REQUIRED and value == attr.default) or (
+                    attr.unless and getattr(item, attr.unless) is not None):
                 continue
             parts.append(f' {attr.name}="{esc(self.text(attr.kind, value))}"')
         return ''.join(parts)

@@ -42,7 +42,8 @@ def _attributes(element: Element, owner: str, lines: list[str], indent: str) -> 
             lines.append(f'{indent}    a += \' {attr.name}="\' + esc(str(v)) + \'"\'')
         else:
             text = 'number(v)' if attr.kind == FLOAT else 'vector(v)'
-            lines.append(f'{indent}if v is not None:')
+            unless = f' and {owner}.{attr.unless} is None' if attr.unless else ''
+            lines.append(f'{indent}if v is not None{unless}:')
             lines.append(f'{indent}    n = known(v)')
             lines.append(f'{indent}    a += \' {attr.name}="\' + (n or {text}) + \'"\'')
 

@@ -37,6 +37,7 @@ from urdfgenpy_ros.formats.start_tags import (
     same_as_source, tag_end, unusual_start_tags)
 from urdfgenpy_ros.formats.urdf_readers import READERS
 from urdfgenpy_ros.formats.urdf_schema import GEOMETRY, record, unusable
+from urdfgenpy_ros.geometry import quaternion_rpy
 from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.material import Material
@@ -45,7 +46,7 @@ from urdfgenpy_ros.robot import Robot
 
 EXTENSION_TAGS = frozenset(('gazebo', 'transmission', 'ros2_control'))
 _TYPES = ', '.join(kind.value for kind in JointType)
-_SHAPES = 'box, cylinder, sphere or mesh'
+_SHAPES = 'box, cylinder, sphere, capsule or mesh'
 _SHAPE_TAGS = GEOMETRY.children[0].tags
 _DECLARATION = re.compile(r'^\s*(<\?xml\b[^>]*\?>)')
 _ENCODING = re.compile(rb'\s*<\?xml\b[^>]*?\bencoding\s*=\s*["\']([^"\']*)')
@@ -119,6 +120,13 @@ class _Reader:
         self.vectors[text] = values
         return values
 
+    def quaternion(self, node: Any, quat: tuple[float, ...]) -> tuple[float, float, float]:
+        """Return the rpy of an origin's ``quat_xyzw``; refuse rpy given beside it."""
+        if node.get('rpy') is not None:
+            raise self.fail(node, '<origin> has both rpy and quat_xyzw (urdfdom 6 refuses '
+                                  'it): keep one of them', 'P009', 'quat_xyzw')
+        return quaternion_rpy(quat)
+
     def bad_type(self, node: Any, name: str, kind: str) -> ParseError:
         """Return the error of an unknown joint type."""
         return self.fail(node, f'joint {name!r}: unknown type {kind!r} (use one of '
@@ -167,6 +175,7 @@ class _Reader:
             raise self.fail(root, "<robot>: missing 'name' (give the robot a name)")
         robot = Robot(name)
         robot.source = self.where(root)
+        robot.urdf_version = root.get('version')
         order: list[Any] = []
         joints: list[Joint] = []
         blocks: list[Extension] = []

@@ -207,6 +207,9 @@ def _compile(element: Element, namespace: dict[str, Any]) -> Reader:
     code.add(0, 'def read(r, node):')
     code.add(1, 'vectors = r.vectors')
     _attributes(code, element, 'node', 1)
+    if element.tag == 'origin':  # a quaternion (URDF 1.1) gives the rotation
+        code.add(1, 'if f_quat_xyzw is not None:')
+        code.add(2, 'f_rpy = r.quaternion(node, f_quat_xyzw)')
     if element.tag == 'joint':
         code.add(1, 'kind = TYPES.get(f_type)')
         code.add(1, 'if kind is None:')

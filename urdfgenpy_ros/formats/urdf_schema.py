@@ -26,7 +26,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any, NamedTuple
 
-from urdfgenpy_ros.geometry import Box, Cylinder, IDENTITY, Mesh, Origin, Sphere
+from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, IDENTITY, Mesh, Origin, Sphere
 from urdfgenpy_ros.inertial import INERTIA_ATTRS, Inertial
 from urdfgenpy_ros.joint import (
     Joint, JointCalibration, JointDynamics, JointLimit, JointMimic, SafetyController)
@@ -54,6 +54,7 @@ class Attr(NamedTuple):
     kind: str = FLOAT
     default: Any = REQUIRED  # REQUIRED: the reader refuses a file without it
     expected: str = ''  # what a missing required attribute should hold (for the message)
+    unless: str = ''  # a field that, when not None, is written instead of this one
 
 
 class Child(NamedTuple):
@@ -87,16 +88,19 @@ def _box(size: tuple[float, float, float], **hidden: Any) -> Box:
     return Box(*size, **hidden)
 
 
-_SHAPES = 'box, cylinder, sphere or mesh'
-ORIGIN = Element('origin', (Attr('xyz', 'xyz', VEC3, _ZERO3), Attr('rpy', 'rpy', VEC3, _ZERO3)),
-                 cls=Origin)
+_SHAPES = 'box, cylinder, sphere, capsule or mesh'
+ORIGIN = Element('origin', (Attr('xyz', 'xyz', VEC3, _ZERO3), Attr('rpy', 'rpy', VEC3, _ZERO3, unless='quat_xyzw'),
+                            Attr('quat_xyzw', 'quat_xyzw', VEC4, None)), cls=Origin)
 BOX = Element('box', (Attr('size', 'size', VEC3),), cls=Box, make=_box)
 CYLINDER = Element('cylinder', (Attr('radius', 'radius'), Attr('length', 'length')),
                    cls=Cylinder)
 SPHERE = Element('sphere', (Attr('radius', 'radius'),), cls=Sphere)
+CAPSULE = Element('capsule', (Attr('radius', 'radius'), Attr('length', 'length')),
+                  cls=Capsule)
 MESH = Element('mesh', (Attr('filename', 'filename', TEXT), Attr('scale', 'scale', VEC3, None)),
                cls=Mesh)
-GEOMETRY = Element('geometry', (), (Child(('box', 'cylinder', 'sphere', 'mesh'), 'geometry'),))
+GEOMETRY = Element('geometry', (), (
+    Child(('box', 'cylinder', 'sphere', 'capsule', 'mesh'), 'geometry'),))
 MASS = Element('mass', (Attr('value', 'mass'),))
 INERTIA = Element('inertia', tuple(Attr(name, name) for name in INERTIA_ATTRS))
 INERTIAL = Element('inertial', (), (
@@ -126,7 +130,10 @@ CALIBRATION = Element('calibration', (Attr('rising', 'rising', FLOAT, None),
 DYNAMICS = Element('dynamics', (Attr('damping', 'damping', FLOAT, 0.0),
                                 Attr('friction', 'friction', FLOAT, 0.0)), cls=JointDynamics)
 LIMIT = Element('limit', (Attr('lower', 'lower', FLOAT, 0.0), Attr('upper', 'upper', FLOAT, 0.0),
-                          Attr('effort', 'effort'), Attr('velocity', 'velocity')),
+                          Attr('effort', 'effort'), Attr('velocity', 'velocity'),
+                          Attr('acceleration', 'acceleration', FLOAT, None),
+                          Attr('deceleration', 'deceleration', FLOAT, None),
+                          Attr('jerk', 'jerk', FLOAT, None)),
                 cls=JointLimit)
 MIMIC = Element('mimic', (Attr('joint', 'joint', TEXT,
                                expected='the name of the joint to follow'),
@@ -147,7 +154,7 @@ JOINT = Element('joint', (Attr('name', 'name', TEXT, expected='the joint name'),
     Child(('safety_controller',), 'safety_controller')), cls=Joint)
 
 ELEMENTS: dict[str, Element] = {element.tag: element for element in (
-    ORIGIN, BOX, CYLINDER, SPHERE, MESH, GEOMETRY, MASS, INERTIA, INERTIAL, COLOR, TEXTURE,
+    ORIGIN, BOX, CYLINDER, SPHERE, CAPSULE, MESH, GEOMETRY, MASS, INERTIA, INERTIAL, COLOR, TEXTURE,
     MATERIAL, VISUAL, COLLISION, LINK, PARENT, CHILD, AXIS, CALIBRATION, DYNAMICS, LIMIT, MIMIC,
     SAFETY_CONTROLLER, JOINT)}
 """Every URDF element below ``<robot>``, by tag."""
@@ -205,7 +212,7 @@ OF_CLASS: dict[type, Element] = {element.cls: element for element in ELEMENTS.va
                                  if element.cls is not None}
 """The declaration of each model class."""
 
-_FROZEN = (Origin, Box, Cylinder, Sphere, Mesh, Material)
+_FROZEN = (Origin, Box, Cylinder, Sphere, Capsule, Mesh, Material)
 DEFAULT_CHILD: dict[str, Any] = {'origin': IDENTITY}
 """The value of an object child the file leaves out (others: None, or an empty list)."""
 

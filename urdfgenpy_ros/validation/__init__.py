@@ -28,20 +28,25 @@ from urdfgenpy_ros.validation.findings import Findings
 from urdfgenpy_ros.validation.inertia import check_inertia
 from urdfgenpy_ros.validation.joints import check_joints
 from urdfgenpy_ros.validation.references import check_references
+from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET
 from urdfgenpy_ros.validation.topology import check_topology
+from urdfgenpy_ros.validation.versions import check_versions
 from urdfgenpy_ros.validation.xacro_source import in_source
 
 __all__ = ['CODES', 'validate', 'ValidationError']
 
 
 def validate(robot: Robot, strict: bool = False, *, check_meshes: bool = True,
-             search_paths: Iterable[str | PathLike[str]] = ()) -> list[ValidationError]:
+             search_paths: Iterable[str | PathLike[str]] = (),
+             target: str | None = DEFAULT_TARGET) -> list[ValidationError]:
     """
     Return every finding about ``robot``; with ``strict``, raise the first error instead.
 
     Mesh files are resolved through ``search_paths``, the ament index and
     ``ROS_PACKAGE_PATH`` (relative paths from the file the robot was read from); pass
-    ``check_meshes=False`` to skip them. Reader warnings come first.
+    ``check_meshes=False`` to skip them. The URDF version is judged for the ROS
+    distribution ``target`` (``'jazzy'``, ``'rolling'``; None: only against the robot's
+    own features). Reader warnings come first.
 
     :raises ValidationError: with ``strict=True``, the first finding of severity error.
     """
@@ -53,6 +58,7 @@ def validate(robot: Robot, strict: bool = False, *, check_meshes: bool = True,
     check_topology(robot, findings)
     check_joints(robot, findings)
     check_inertia(robot, findings)
+    check_versions(robot, findings, target)
     resolver = PackageResolver(search_paths) if check_meshes else None
     source = robot.source.file if robot.source is not None else None
     base = Path(source).parent if source and Path(source).is_file() else None

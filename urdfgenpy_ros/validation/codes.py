@@ -78,6 +78,14 @@ CODES: dict[str, tuple[Severity, str]] = {
     'R306': (W, 'visual mesh file not found'),
     'R307': (W, 'non-positive size or zero scale on a visual (it draws nothing)'),
     'R308': (W, 'relative path written as a file:// URI (not portable)'),
+    # URDF versions (validation/versions.py, urdf_versions.py)
+    'V701': (E, 'URDF version the target ROS cannot read'),
+    'V702': (W, 'URDF 1.1/1.2 feature in a file whose version lacks it (urdfdom 6 ignores it)'),
+    'V703': (E, 'malformed URDF version (urdfdom refuses the file)'),
+    'V704': (W, 'quaternion is not of unit length'),
+    'V705': (W, 'quaternion of zero length (read as no rotation, as urdfdom 6 does)'),
+    'V706': (W, 'written as URDF 1.0: a capsule became a cylinder and two spheres'),
+    'V707': (W, 'written as URDF 1.0: a URDF 1.2 limit was dropped'),
     # conventions
     'C401': (W, "no link called 'base_link'"),
     # engine pre-flight (validation/preflight.py): what a consumer silently changes
