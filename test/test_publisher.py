@@ -278,3 +278,20 @@ def test_zeros_outside_the_limits_are_clamped_as_joint_state_publisher_does() ->
                                                          'pan_joint': 0.25}))
     names, positions, _, _ = states.message_arrays()
     assert dict(zip(names, positions)) == {'pan_joint': 0.25, 'tilt_joint': upper}
+
+
+def test_a_urdf_version_the_target_cannot_read_is_refused_as_its_publisher_would(
+        graph: Graph, tmp_path: Path) -> None:
+    """Jazzy's robot_state_publisher refuses a URDF 1.1 file: so does the node, by default."""
+    text = pan_tilt_unit().to_urdf().replace('<robot name="ptu">',
+                                             '<robot name="ptu" version="1.1">')
+    model = tmp_path / 'ptu11.urdf'
+    model.write_text(text)
+    process = graph.start(f'model:={model}')
+    output, _ = process.communicate(timeout=20)
+    assert process.returncode == 1 and 'Traceback' not in output
+    assert ' V701 ' in output and 'write version="1.0"' in output, output
+    graph.start(f'model:={model}', 'target:=rolling')
+    descriptions = graph.collect(String, 'robot_description', latched=True)
+    assert graph.spin_until(lambda: descriptions, 20)
+    assert descriptions[0].data == text

@@ -49,7 +49,7 @@ def check_sdf(tmp_path_factory: pytest.TempPathFactory):
                 poses[name] = [float(value) for value in rest]
             elif kind == 'inertial':
                 inertials[name] = [float(value) for value in rest]
-            else:
+            elif kind == 'sensor':
                 sensors.add((name, rest[0], rest[1]))
         return result.returncode, poses, inertials, sensors, result.stderr
     return run

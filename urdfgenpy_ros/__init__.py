@@ -22,7 +22,7 @@ Build, read, check and publish robot descriptions for ROS 2.
 from urdfgenpy_ros.errors import (
     ModelError, ParseError, Severity, SourceLocation, UrdfgenpyError, ValidationError)
 from urdfgenpy_ros.extensions import Extension
-from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Mesh, Origin, Sphere
+from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Geometry, Mesh, Origin, Sphere
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import (
     Joint, JointCalibration, JointDynamics, JointLimit, JointMimic, JointType,
@@ -34,7 +34,7 @@ from urdfgenpy_ros.robot import Robot
 __version__ = '0.1.0'
 
 __all__ = [
-    'Box', 'Collision', 'Cylinder', 'Extension', 'Geometry', 'Inertial', 'Joint',
+    'Box', 'Capsule', 'Collision', 'Cylinder', 'Extension', 'Geometry', 'Inertial', 'Joint',
     'JointCalibration', 'JointDynamics', 'JointLimit', 'JointMimic', 'JointType', 'Link',
     'Material', 'Mesh', 'ModelError', 'Origin', 'ParseError', 'Robot', 'SafetyController',
     'Severity', 'SourceLocation', 'Sphere', 'UrdfgenpyError', 'ValidationError', 'Visual',

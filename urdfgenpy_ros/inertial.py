@@ -23,7 +23,7 @@ import math
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import ModelError, ModelTypeError, SourceLocation
 from urdfgenpy_ros.geometry import (
-    _positive, Box, Cylinder, Geometry, IDENTITY, Mesh, Origin, Sphere)
+    _positive, Box, Capsule, Cylinder, Geometry, IDENTITY, Mesh, Origin, Sphere)
 from urdfgenpy_ros.preserved import Preserved
 
 INERTIA_ATTRS = ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz')
@@ -46,6 +46,21 @@ def sphere_tensor(mass: float, radius: float) -> tuple[float, ...]:
     """Return the tensor of a solid sphere about its centre."""
     moment = 2.0 * mass * radius * radius / 5.0
     return (moment, 0.0, 0.0, moment, 0.0, moment)
+
+
+def capsule_tensor(mass: float, radius: float, length: float) -> tuple[float, ...]:
+    """
+    Return the tensor of a solid capsule along z about its centre.
+
+    The mass splits between the cylinder of ``length`` and the two half spheres by volume;
+    each half sphere's moment about x is taken at its own centre of mass and moved.
+    """
+    tube = mass * length / (length + 4.0 * radius / 3.0)
+    caps = mass - tube
+    side = tube * (3.0 * radius * radius + length * length) / 12.0 + caps * (
+        2.0 * radius * radius / 5.0 + length * length / 4.0 + 3.0 * length * radius / 8.0)
+    return (side, 0.0, 0.0, side, 0.0,
+            tube * radius * radius / 2.0 + caps * 2.0 * radius * radius / 5.0)
 
 
 @dataclass(slots=True)
@@ -132,19 +147,29 @@ class Inertial:
         return cls._of_solid('sphere', mass, dims, origin)
 
     @classmethod
+    def from_capsule(cls, mass: float, radius: float, length: float, *,
+                     origin: Origin | None = None) -> Inertial:
+        """Return the inertial of a solid capsule along z (``length``: its cylinder)."""
+        dims = _positive('Inertial.from_capsule', ('radius', 'length'), radius, length)
+        return cls._of_solid('capsule', mass, dims, origin)
+
+    @classmethod
     def from_geometry(cls, mass: float, geometry: Geometry, *,
                       origin: Origin | None = None) -> Inertial:
-        """Return the inertial of a solid primitive (box, cylinder or sphere)."""
+        """Return the inertial of a solid primitive (box, cylinder, sphere or capsule)."""
         if isinstance(geometry, Box):
             return cls._of_solid('box', mass, geometry.size, origin)
         if isinstance(geometry, Cylinder):
             return cls._of_solid('cylinder', mass, (geometry.radius, geometry.length), origin)
         if isinstance(geometry, Sphere):
             return cls._of_solid('sphere', mass, (geometry.radius,), origin)
+        if isinstance(geometry, Capsule):
+            return cls._of_solid('capsule', mass, (geometry.radius, geometry.length), origin)
         if isinstance(geometry, Mesh):
             raise ModelError(f'Inertial.from_geometry(): {geometry.filename!r} is a mesh; '
                              'use Inertial.from_mesh(filename, mass=...)')
-        raise ModelTypeError(f'Inertial.from_geometry(): expected Box, Cylinder, Sphere or Mesh, '
+        raise ModelTypeError('Inertial.from_geometry(): expected Box, Cylinder, Sphere, '
+                             'Capsule or Mesh, '
                              f'got {type(geometry).__name__}')
 
     @classmethod
@@ -169,4 +194,5 @@ class Inertial:
 _INF = math.inf
 _new = object.__new__
 _SOLID_TENSORS: dict[str, Callable[..., tuple[float, ...]]] = {
-    'box': box_tensor, 'cylinder': cylinder_tensor, 'sphere': sphere_tensor}
+    'box': box_tensor, 'cylinder': cylinder_tensor, 'sphere': sphere_tensor,
+    'capsule': capsule_tensor}

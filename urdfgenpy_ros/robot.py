@@ -403,10 +403,25 @@ class Robot:
 
     # ---- output --------------------------------------------------------------------
 
-    def to_urdf(self, path: str | PathLike[str] | None = None) -> str:
-        """Return the URDF text; also write it to ``path`` when given."""
+    def to_urdf(self, path: str | PathLike[str] | None = None, *,
+                version: str | None = None) -> str:
+        """
+        Return the URDF text; also write it to ``path`` when given.
+
+        With ``version`` ('1.0', '1.1' or '1.2'), write what that URDF version holds:
+        for 1.0 (what ROS 2 Jazzy reads), quaternions become rpy and capsules a cylinder
+        and two spheres. Each change that is not exact is a ``UserWarning`` naming its
+        place (``urdfgenpy convert --urdf-version`` prints them as findings).
+        """
         from urdfgenpy_ros.formats import urdf
-        return urdf.write_urdf(self, path)
+        if version is None:
+            return urdf.write_urdf(self, path)
+        import warnings
+        from urdfgenpy_ros.formats.urdf_downgrade import as_version
+        copy, changes = as_version(self, version)
+        for change in changes:
+            warnings.warn(str(change), stacklevel=2)
+        return urdf.write_urdf(copy, path)
 
     def to_xacro(self, path: str | PathLike[str] | None = None, *, macro: bool = False) -> str:
         """

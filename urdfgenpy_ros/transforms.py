@@ -12,7 +12,7 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""Small linear-algebra helpers that need no numpy: 4x4 transforms, rpy, quaternions, eigenvalues."""
+"""Linear-algebra helpers that need no numpy: 4x4 transforms, rpy, quaternions, eigenvalues."""
 
 from __future__ import annotations
 

@@ -113,5 +113,23 @@ def features(robot: Robot) -> Iterator[Feature]:
 
 
 def needed_version(robot: Robot) -> Version:
-    """Return the lowest URDF version that holds everything the robot uses."""
-    return max((feature.needs for feature in features(robot)), default=(1, 0))
+    """Return the lowest URDF version that holds everything the robot uses (one pass)."""
+    needed = (1, 0)
+    for joint in robot.joints:
+        limit = joint.limit
+        if limit is not None and (limit.acceleration is not None or
+                                  limit.deceleration is not None or limit.jerk is not None):
+            return (1, 2)
+        if joint.origin.quat_xyzw is not None:
+            needed = (1, 1)
+    if needed == (1, 1):
+        return needed
+    for link in robot.links:
+        inertial = link.inertial
+        if inertial is not None and inertial.origin.quat_xyzw is not None:
+            return (1, 1)
+        for items in (link.visuals, link.collisions):
+            for item in items:
+                if item.origin.quat_xyzw is not None or type(item.geometry) is Capsule:
+                    return (1, 1)
+    return needed

@@ -65,6 +65,17 @@ int main(int argc, char ** argv)
       inertial.Pose().Pos().X() << " " << inertial.Pose().Pos().Y() << " " <<
       inertial.Pose().Pos().Z() << " " << moments.X() << " " << moments.Y() << " " <<
       moments.Z() << std::endl;
+    for (uint64_t v = 0; v < link->VisualCount(); ++v) {
+      const sdf::Visual * visual = link->VisualByIndex(v);
+      ignition::math::Pose3d placed;
+      sdf::Errors visualErrors = visual->SemanticPose().Resolve(placed, link->Name());
+      if (visualErrors.empty()) {
+        std::cout << "visual " << link->Name() << " " << visual->Name() << " " <<
+          placed.Pos().X() << " " << placed.Pos().Y() << " " << placed.Pos().Z() << " " <<
+          placed.Rot().W() << " " << placed.Rot().X() << " " << placed.Rot().Y() << " " <<
+          placed.Rot().Z() << std::endl;
+      }
+    }
     for (uint64_t s = 0; s < link->SensorCount(); ++s) {
       const sdf::Sensor * sensor = link->SensorByIndex(s);
       std::cout << "sensor " << link->Name() << " " << sensor->Name() << " " <<

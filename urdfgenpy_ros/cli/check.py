@@ -32,6 +32,7 @@ from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.formats import DH_SUFFIXES, load
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET, TARGETS
 from urdfgenpy_ros.validation.fix import carry_over, fix, LIMIT_FIELDS
 from urdfgenpy_ros.validation.fix import missing_defaults
 from urdfgenpy_ros.validation.preflight import ENGINES, preflight
@@ -48,6 +49,7 @@ class _Options:
     fix: bool
     dry_run: bool
     limit_defaults: dict[str, float]
+    target: str = DEFAULT_TARGET
 
 
 def _codes(ctx: click.Context, param: click.Parameter, values: tuple[str, ...]
@@ -105,10 +107,14 @@ def _limit_defaults(ctx: click.Context, param: click.Parameter, values: tuple[st
               metavar='NAME=VALUE',
               help='With --fix: values for a missing <limit> (lower, upper, effort, velocity) '
                    'or a zero effort/velocity, e.g. effort=10,velocity=1.')
+@click.option('--target', type=click.Choice(sorted(TARGETS)), default=DEFAULT_TARGET,
+              show_default=True,
+              help='The ROS 2 distribution the description is for: its urdfdom decides '
+                   'which URDF versions it reads (jazzy: 1.0; rolling: 1.0 to 1.2).')
 @input_options
 def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict: bool,
           no_meshes: bool, ignored: frozenset[str], engines: tuple[str, ...], repair: bool,
-          dry_run: bool, limit_defaults: dict[str, float],
+          dry_run: bool, limit_defaults: dict[str, float], target: str,
           package_paths: tuple[Path, ...]) -> None:
     """
     Validate URDF and Xacro FILEs (Xacro arguments as name:=value).
@@ -124,7 +130,7 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
     mappings = parse_mappings(tuple(item for item in inputs if ':=' in item))
     files = [Path(item) for item in inputs if ':=' not in item]
     options = _Options(not no_meshes, package_paths, engines, ignored, repair, dry_run,
-                       limit_defaults)
+                       limit_defaults, target)
     text = output == 'text'
     done = 'to fix' if dry_run else 'fixed'
     lines: list[str] = []
@@ -174,7 +180,7 @@ def _line(finding: ValidationError) -> str:
 
 def _findings(robot: Robot, options: _Options) -> list[ValidationError]:
     found = robot.validate(check_meshes=options.check_meshes,
-                           search_paths=options.package_paths)
+                           search_paths=options.package_paths, target=options.target)
     if options.engines:
         found += in_source(preflight(robot, options.engines, options.package_paths), robot)
     return found

@@ -29,6 +29,7 @@ from urdfgenpy_ros.cli._options import input_options, read_robot
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.formats.sdf_inertia import refused_inertias
+from urdfgenpy_ros.formats.urdf_downgrade import as_version, VERSIONS
 from urdfgenpy_ros.lumping import lump_fixed_joints
 from urdfgenpy_ros.resources import rebase_meshes
 from urdfgenpy_ros.robot import Robot
@@ -42,9 +43,14 @@ from urdfgenpy_ros.robot import Robot
 @click.option('--lump-fixed', is_flag=True,
               help='SDF output: merge links joined by fixed joints into their parents, as '
                    "libsdformat's own URDF conversion does.")
+@click.option('--urdf-version', type=click.Choice(VERSIONS),
+              help='URDF output: write what this URDF version holds (1.0 is what ROS 2 '
+                   'Jazzy reads: quaternions become rpy, a capsule a cylinder and two '
+                   'spheres; each change is printed).')
 @input_options
 def convert(source: Path, target: Path, arguments: tuple[str, ...],
-            package_paths: tuple[Path, ...], force: bool, lump_fixed: bool) -> None:
+            package_paths: tuple[Path, ...], force: bool, lump_fixed: bool,
+            urdf_version: str | None) -> None:
     """
     Convert SOURCE to TARGET; the suffixes choose the formats.
 
@@ -56,9 +62,16 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     if lump_fixed and kind != 'sdf':
         raise UrdfgenpyError(f'{target}: --lump-fixed applies to .sdf output only: drop it '
                              'or write .sdf')
+    if urdf_version is not None and kind not in ('urdf', 'xacro'):
+        raise UrdfgenpyError(f'{target}: --urdf-version applies to .urdf and .xacro output '
+                             'only: drop it or write .urdf')
     if target.exists() and not force:
         raise UrdfgenpyError(f'{target} exists: pass --force to overwrite it')
     robot = read_robot(source, arguments, package_paths)
+    if urdf_version is not None:
+        robot, changes = as_version(robot, urdf_version)
+        for change in changes:
+            click.echo(str(change), err=True)
     if lump_fixed:
         robot = lump_fixed_joints(robot)  # what to_sdf(lump_fixed=True) writes
     if kind == 'sdf':

@@ -33,7 +33,7 @@ from lxml import etree
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import write_text
-from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Mesh, Origin, Sphere
+from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Geometry, Mesh, Origin, Sphere
 from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.link import Link, Visual
 from urdfgenpy_ros.lumping import WORLD
@@ -71,6 +71,10 @@ def _geometry(parent: Any, geometry: Geometry) -> None:
         _text(shape, 'length', fmt(geometry.length))
     elif isinstance(geometry, Sphere):
         _text(etree.SubElement(holder, 'sphere'), 'radius', fmt(geometry.radius))
+    elif isinstance(geometry, Capsule):  # SDF 1.8+: length is the cylinder's, as in URDF
+        shape = etree.SubElement(holder, 'capsule')
+        _text(shape, 'radius', fmt(geometry.radius))
+        _text(shape, 'length', fmt(geometry.length))
     elif isinstance(geometry, Mesh):
         shape = etree.SubElement(holder, 'mesh')
         _text(shape, 'uri', geometry.filename)

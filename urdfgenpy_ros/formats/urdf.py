@@ -43,6 +43,7 @@ from urdfgenpy_ros.joint import Joint
 from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.preserved import Layout
+from urdfgenpy_ros.urdf_versions import needed_version, version_text
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -146,9 +147,13 @@ class UrdfWriter(ElementWriter):
 
     def robot_attrs(self) -> list[tuple[str, str]]:
         """Return the root element's attributes (name, text)."""
-        version = self.robot.urdf_version
-        return [('name', self.robot.name)] if version is None else \
-            [('name', self.robot.name), ('version', version)]
+        robot = self.robot
+        version = robot.urdf_version
+        if version is None and robot.extras is None:  # built here: declare what it uses
+            needed = needed_version(robot)
+            version = None if needed == (1, 0) else version_text(needed)
+        return [('name', robot.name)] if version is None else \
+            [('name', robot.name), ('version', version)]
 
     def prologue(self) -> list[str]:
         """Return top-level elements written before everything else."""

@@ -89,7 +89,8 @@ def _box(size: tuple[float, float, float], **hidden: Any) -> Box:
 
 
 _SHAPES = 'box, cylinder, sphere, capsule or mesh'
-ORIGIN = Element('origin', (Attr('xyz', 'xyz', VEC3, _ZERO3), Attr('rpy', 'rpy', VEC3, _ZERO3, unless='quat_xyzw'),
+ORIGIN = Element('origin', (Attr('xyz', 'xyz', VEC3, _ZERO3),
+                            Attr('rpy', 'rpy', VEC3, _ZERO3, unless='quat_xyzw'),
                             Attr('quat_xyzw', 'quat_xyzw', VEC4, None)), cls=Origin)
 BOX = Element('box', (Attr('size', 'size', VEC3),), cls=Box, make=_box)
 CYLINDER = Element('cylinder', (Attr('radius', 'radius'), Attr('length', 'length')),
@@ -154,9 +155,9 @@ JOINT = Element('joint', (Attr('name', 'name', TEXT, expected='the joint name'),
     Child(('safety_controller',), 'safety_controller')), cls=Joint)
 
 ELEMENTS: dict[str, Element] = {element.tag: element for element in (
-    ORIGIN, BOX, CYLINDER, SPHERE, CAPSULE, MESH, GEOMETRY, MASS, INERTIA, INERTIAL, COLOR, TEXTURE,
-    MATERIAL, VISUAL, COLLISION, LINK, PARENT, CHILD, AXIS, CALIBRATION, DYNAMICS, LIMIT, MIMIC,
-    SAFETY_CONTROLLER, JOINT)}
+    ORIGIN, BOX, CYLINDER, SPHERE, CAPSULE, MESH, GEOMETRY, MASS, INERTIA, INERTIAL, COLOR,
+    TEXTURE, MATERIAL, VISUAL, COLLISION, LINK, PARENT, CHILD, AXIS, CALIBRATION, DYNAMICS,
+    LIMIT, MIMIC, SAFETY_CONTROLLER, JOINT)}
 """Every URDF element below ``<robot>``, by tag."""
 
 SLOTS: dict[str, dict[str, Child]] = {

@@ -44,6 +44,11 @@ XACRO_NS = 'http://www.ros.org/wiki/xacro'
 _EXPR = '\x00'  # stands for '$' in expressions we mean; every other '$' is escaped
 ZERO = "'0 0 0'"  # a Python string literal inside an xacro expression
 
+_TUBE = '(mass * length / (length + 4.0 * radius / 3.0))'
+_CAPS = f'(mass - {_TUBE})'
+_CAPSULE_SIDE = (f'{_TUBE} * (3.0 * radius * radius + length * length) / 12.0 + {_CAPS} * '
+                 '(2.0 * radius * radius / 5.0 + length * length / 4.0 + '
+                 '3.0 * length * radius / 8.0)')
 _MACROS = {
     'box': ('mass x y z', ('mass * (y * y + z * z) / 12.0', 'mass * (x * x + z * z) / 12.0',
                            'mass * (x * x + y * y) / 12.0')),
@@ -52,6 +57,10 @@ _MACROS = {
                   'mass * (3.0 * radius * radius + length * length) / 12.0',
                   'mass * radius * radius / 2.0')),
     'sphere': ('mass radius', ('2.0 * mass * radius * radius / 5.0',) * 3),
+    # inertial.capsule_tensor, operation for operation: the tube's and the caps' masses
+    'capsule': ('mass radius length', (
+        _CAPSULE_SIDE, _CAPSULE_SIDE,
+        f'{_TUBE} * radius * radius / 2.0 + {_CAPS} * 2.0 * radius * radius / 5.0')),
 }
 
 

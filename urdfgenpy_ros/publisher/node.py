@@ -57,6 +57,9 @@ _PARAMETERS: dict[str, tuple[Any, int | None, str]] = {
     'xacro_args': ([], _STRINGS, 'xacro arguments as name:=value'),
     'package_paths': ([], _STRINGS, 'folders holding ROS packages, for $(find) and meshes'),
     'ignore': ([], _STRINGS, "finding codes that do not stop publishing, e.g. ['I203']"),
+    'target': ('jazzy', ParameterType.PARAMETER_STRING,
+               'ROS distribution whose robot_state_publisher reads the description (jazzy: '
+               'URDF 1.0 only; rolling: 1.0 to 1.2)'),
     'rate': (10, None, 'joint_states per second (integer or double)'),
     'source_list': ([], _STRINGS, 'JointState topics whose values are merged'),
     'publish_default_positions': (True, ParameterType.PARAMETER_BOOL, ''),
@@ -177,7 +180,8 @@ class PublisherNode(Node):
     def _load(self) -> tuple[Robot, list[str]]:
         robot, watched = load_model(self.values['model'], self.values['xacro_args'],
                                     self.values['package_paths'])
-        found = robot.validate(search_paths=self.values['package_paths'])
+        found = robot.validate(search_paths=self.values['package_paths'],
+                               target=self.values['target'])
         # the file's own suppression comments, as `urdfgenpy check` reads them, and 'ignore'
         findings, silenced = read_suppressions(robot, self.ignored).split(found)
         errors = [finding for finding in findings if finding.severity is Severity.ERROR]

@@ -23,12 +23,12 @@ from pathlib import Path
 from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.resources import PackageResolver
 from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET
 from urdfgenpy_ros.validation.codes import CODES
 from urdfgenpy_ros.validation.findings import Findings
 from urdfgenpy_ros.validation.inertia import check_inertia
 from urdfgenpy_ros.validation.joints import check_joints
 from urdfgenpy_ros.validation.references import check_references
-from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET
 from urdfgenpy_ros.validation.topology import check_topology
 from urdfgenpy_ros.validation.versions import check_versions
 from urdfgenpy_ros.validation.xacro_source import in_source

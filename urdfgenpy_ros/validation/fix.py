@@ -34,7 +34,7 @@ import re
 
 from urdfgenpy_ros.errors import SourceLocation, ValidationError
 from urdfgenpy_ros.floats import fmt, fmt_vec
-from urdfgenpy_ros.geometry import Box, Cylinder, Sphere
+from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Sphere
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import Joint, JointLimit, JointType
 from urdfgenpy_ros.link import Link
@@ -153,7 +153,7 @@ def _tensor(robot: Robot, link: Link | Joint, defaults: dict[str, float]) -> str
     for kind, items in (('collision', link.collisions), ('visual', link.visuals)):
         for item in items:
             shape = item.geometry
-            if isinstance(shape, (Box, Cylinder, Sphere)):
+            if isinstance(shape, (Box, Cylinder, Sphere, Capsule)):
                 solid = Inertial.from_geometry(inertial.mass, shape)
                 values = _turned(solid, item.origin.rpy, inertial.origin.rpy)
                 inertial.ixx, inertial.ixy, inertial.ixz = values[0], values[1], values[2]

@@ -18,8 +18,9 @@ from __future__ import annotations
 
 import math
 
-from urdfgenpy_ros.geometry import Box, Cylinder, Sphere
-from urdfgenpy_ros.inertial import box_tensor, cylinder_tensor, Inertial, sphere_tensor
+from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Sphere
+from urdfgenpy_ros.inertial import (
+    box_tensor, capsule_tensor, cylinder_tensor, Inertial, sphere_tensor)
 from urdfgenpy_ros.joint import JointType
 from urdfgenpy_ros.link import Link, Shape
 from urdfgenpy_ros.robot import Robot
@@ -191,13 +192,15 @@ def _check_plausible(link: Link, inertial: Inertial, element: str, where: str,
     # One primitive is the whole body: with several shapes (a foot's contact spheres) or
     # a mesh, one of them says nothing of the link's tensor.
     items: tuple[Shape, ...] = tuple(link.collisions) or tuple(link.visuals)
-    if len(items) != 1 or not isinstance(items[0].geometry, (Box, Cylinder, Sphere)):
+    if len(items) != 1 or not isinstance(items[0].geometry, (Box, Cylinder, Sphere, Capsule)):
         return
     shape = items[0].geometry
     if isinstance(shape, Box):
         expected = box_tensor(inertial.mass, *shape.size)
     elif isinstance(shape, Cylinder):
         expected = cylinder_tensor(inertial.mass, shape.radius, shape.length)
+    elif isinstance(shape, Capsule):
+        expected = capsule_tensor(inertial.mass, shape.radius, shape.length)
     else:
         expected = sphere_tensor(inertial.mass, shape.radius)
     trace = inertial.ixx + inertial.iyy + inertial.izz

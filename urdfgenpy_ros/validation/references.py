@@ -21,7 +21,7 @@ import os
 from pathlib import Path
 from typing import Any
 
-from urdfgenpy_ros.geometry import Box, Cylinder, Mesh, Sphere
+from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Sphere
 from urdfgenpy_ros.link import Shape
 from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
 from urdfgenpy_ros.robot import Robot
@@ -87,7 +87,7 @@ def _check_geometry(geometry: Any, element: str, where: str, findings: Findings,
                     code: str) -> None:
     """Report a zero or negative size: an error on a collision, a warning on a visual."""
     sizes = {Box: ('length', 'width', 'height'), Cylinder: ('radius', 'length'),
-             Sphere: ('radius',)}.get(type(geometry), ())
+             Sphere: ('radius',), Capsule: ('radius', 'length')}.get(type(geometry), ())
     for name in sizes:
         value = getattr(geometry, name)
         if math.isfinite(value) and value <= 0.0:

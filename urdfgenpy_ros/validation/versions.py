@@ -51,7 +51,7 @@ def check_versions(robot: Robot, findings: Findings, target: str | None = DEFAUL
             readable = version_text(highest) if lowest == highest else \
                 f'{version_text(lowest)} to {version_text(highest)}'
             findings.add('V701', robot, element, _ROBOT,
-                         f'URDF version {robot.urdf_version} cannot be read by {target}\'s '
+                         f"URDF version {robot.urdf_version} cannot be read by {target}'s "
                          f'urdfdom (it reads {readable}): robot_state_publisher refuses the '
                          'whole file', _fix(robot, target, needed), 'robot')
     for feature in features(robot):
@@ -59,7 +59,7 @@ def check_versions(robot: Robot, findings: Findings, target: str | None = DEFAUL
             findings.add('V702', feature.item, feature.owner, feature.path,
                          f'{feature.what} needs URDF {version_text(feature.needs)} but the '
                          f'file declares {version_text(declared)}: urdfdom 6 ignores it, and '
-                         'Jazzy\'s urdfdom does not know it', _feature_fix(feature.needs),
+                         "Jazzy's urdfdom does not know it", _feature_fix(feature.needs),
                          feature.tag)
     _check_quaternions(robot, findings)
 

@@ -30,7 +30,7 @@ from pathlib import Path
 from typing import Any
 
 from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
-from urdfgenpy_ros.geometry import Box, Cylinder, Mesh, Origin, Sphere
+from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Origin, Sphere
 from urdfgenpy_ros.kinematics import link_poses
 from urdfgenpy_ros.resources import PackageResolver, ResourceError
 from urdfgenpy_ros.robot import Robot
@@ -157,6 +157,9 @@ def geometry_mesh(geometry: Any, cache: MeshCache) -> Any | None:
                                          sections=32)
     if isinstance(geometry, Sphere):
         return trimesh.creation.icosphere(subdivisions=3, radius=geometry.radius)
+    if isinstance(geometry, Capsule):  # trimesh's height is the cylinder's, as URDF's length
+        return trimesh.creation.capsule(height=geometry.length, radius=geometry.radius,
+                                        count=[32, 32])
     if isinstance(geometry, Mesh):
         return cache.load(geometry)
     return None
