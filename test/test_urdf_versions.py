@@ -29,6 +29,7 @@ import re
 import subprocess
 
 from helpers import build_sdf_checker, check_urdf, require_module, urdfdom6_tool
+from helpers import xacro_expand
 from hypothesis import given, settings, strategies as st
 import pytest
 from urdfgenpy_ros import Capsule, Inertial, Origin, Robot
@@ -351,3 +352,19 @@ def test_sdf_of_a_quaternion_turned_visual_has_the_turn_in_libsdformat(
     w, x, y, z = (float(value) for value in visuals[0][6:])
     assert numpy.abs(quat_matrix((x, y, z, w)) - quat_matrix(QUATS['visual'])).max() < 1e-9
     assert '<capsule>' in sdf.read_text()
+
+
+def test_xacro_of_a_urdf_1_2_robot_expands_to_the_same_model(tmp_path: Path) -> None:
+    """The real xacro expands what to_xacro writes: quaternions, capsules, 1.2 limits."""
+    robot = Robot.from_urdf(_write(tmp_path, 'arm.urdf', fixture_text('1.2', limits_1_2=True)))
+    robot.to_xacro(tmp_path / 'arm.urdf.xacro')
+    expanded = Robot.from_urdf_string(xacro_expand(tmp_path / 'arm.urdf.xacro'))
+    assert expanded.urdf_version == '1.2'
+    assert expanded.links == robot.links and expanded.joints == robot.joints
+
+
+def test_the_viewer_draws_a_capsule_as_long_as_it_is() -> None:
+    numpy = require_module('numpy')
+    from urdfgenpy_ros.viewer.scene import geometry_mesh
+    mesh = geometry_mesh(Capsule(0.05, 0.3), None)
+    assert numpy.allclose(mesh.bounds, [[-0.05, -0.05, -0.2], [0.05, 0.05, 0.2]], atol=1e-9)
