@@ -207,6 +207,23 @@ class DHTable:
                               origin=Origin(xyz, rpy)))
         return robot
 
+    @classmethod
+    def from_robot(cls, robot: Robot, base: str, tip: str,
+                   convention: DHConvention | str = 'standard') -> DHTable:
+        """
+        Return the DH table of ``robot``'s serial chain from link ``base`` to link ``tip``.
+
+        Rows are named after the joints and keep their limits; ``base``, ``tool`` and each
+        row's ``theta_offset`` make ``to_robot()``'s forward kinematics the chain's.
+        The choices DH leaves open are listed in docs/reshaping.md.
+
+        :raises ModelError: naming the joint when the chain is not serial revolute or
+            prismatic (floating, planar and mimic joints are refused).
+        """
+        from urdfgenpy_ros.reshape.dh_extract import dh_from_robot
+        table: DHTable = dh_from_robot(robot, base, tip, convention)
+        return table
+
     # ---- files ------------------------------------------------------------------------
 
     @classmethod

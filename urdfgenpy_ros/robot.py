@@ -508,3 +508,43 @@ class Robot:
         """
         from urdfgenpy_ros.assembly_file import read_assembly
         return read_assembly(path, search_paths)
+
+    # ---- reshaping -----------------------------------------------------------------
+
+    def mirror(self, root: str, plane: str = 'xz', frame: str | None = None,
+               rename: Mapping[str, str] | None = None, *,
+               mesh_folder: str | PathLike[str] | None = None) -> Robot:
+        """
+        Add the mirror image of the subtree below ``root``'s parent joint; return the robot.
+
+        The reflection is through ``plane`` ('xz', 'yz' or 'xy') of link ``frame`` (the
+        root link by default); names change by ``rename`` (default ``{'left_': 'right_'}``,
+        every reference follows). Mirrored meshes are written beside the originals, or in
+        ``mesh_folder``. :func:`urdfgenpy_ros.reshape.mirror.mirror_subtree` also returns
+        each joint's rule (positions kept or negated).
+        """
+        from urdfgenpy_ros.reshape.mirror import mirror_subtree
+        mirror_subtree(self, root, plane, frame, rename, mesh_folder=mesh_folder)
+        return self
+
+    def merge_fixed(self, keep: tuple[str, ...] | list[str] = (), *,
+                    drop_frames: bool = False) -> Robot:
+        """
+        Return a copy with fixed-joint children merged into their parents.
+
+        Inertia is lumped exactly as the SDF writer (and SDFormat) lumps it; visuals and
+        collisions move with their poses. Each merged link stays as a massless frame on
+        its fixed joint unless ``drop_frames``; links in ``keep`` are never merged.
+        """
+        from urdfgenpy_ros.reshape.merge import merge_fixed
+        return merge_fixed(self, keep, drop_frames=drop_frames)
+
+    def apply_dh(self, table: Any, base: str, tip: str) -> list[str]:
+        """
+        Give the chain from ``base`` to ``tip`` the kinematics of a DH ``table``.
+
+        Only joint origins change (one line each in a lossless write); return the names of
+        the joints whose origin changed. See :mod:`urdfgenpy_ros.reshape.dh_apply`.
+        """
+        from urdfgenpy_ros.reshape.dh_apply import apply_dh
+        return apply_dh(self, table, base, tip)

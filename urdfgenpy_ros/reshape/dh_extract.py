@@ -1,0 +1,227 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+The DH table of a robot's serial chain (``DHTable.from_robot``).
+
+Each movable joint of the chain is a line in space at the zero configuration (its axis,
+through its frame's origin). DH frames are placed on these lines by the convention's rules:
+z along each joint's axis, in the axis' own direction (so a DH joint value is the URDF
+joint value), x along the common normal to the next axis. Where the rules leave a choice,
+this module takes the first of these: frame 0 sits where the base origin projects onto
+the first axis, with x from the base's x; of parallel axes' common normals, the one that
+starts at the previous frame's origin (``d = 0``); of intersecting axes', x along
+``z_prev x z_next``; the last frame sits where the tip's origin projects onto the last
+axis, with x from the tip's x. The base and tool transforms carry what remains, so the
+table's forward kinematics is the chain's.
+"""
+
+from __future__ import annotations
+
+import math
+
+from urdfgenpy_ros.errors import ModelError
+from urdfgenpy_ros.joint import Joint, JointType
+from urdfgenpy_ros.reshape._frames import (
+    add, column, cross, dot, frame, inverse, norm, origin_of, sub, unit, Vec)
+from urdfgenpy_ros.transforms import IDENTITY4, Matrix4, multiply
+
+_PARALLEL = 1e-9  # |z1 x z2| below this: the axes are parallel
+_SAME = 1e-12  # distances below this (metres): the lines meet
+_MOVING = (JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC)
+
+
+class Axis:
+    """One movable joint of a chain at the zero configuration, in the base frame."""
+
+    def __init__(self, joint: Joint, pose: Matrix4) -> None:
+        self.joint = joint
+        self.pose = pose  # the child link's pose at q = 0
+        self.point = column(pose, 3)
+        axis = joint.effective_axis
+        turned = tuple(sum(pose[i][k] * axis[k] for k in range(3)) for i in range(3))
+        self.direction = unit(turned)  # type: ignore[arg-type]
+
+
+def chain_axes(robot, base: str, tip: str) -> tuple[list[Joint], list[Axis], Matrix4]:
+    """
+    Return the chain's joints, its movable joints as axes, and the tip's pose (at q = 0).
+
+    :raises ModelError: naming the joint when the chain is not serial revolute/prismatic.
+    """
+    joints = robot.chain(tip, base)
+    if not joints:
+        raise ModelError(f'no chain from {base!r} to {tip!r}: name a base link above the tip')
+    pose = IDENTITY4
+    axes = []
+    for joint in joints:
+        pose = multiply(pose, joint.origin.matrix())
+        if joint.type is JointType.FIXED:
+            continue
+        if joint.type not in _MOVING:
+            raise ModelError(f'joint {joint.name!r} is {joint.type.value}: a DH table holds '
+                             'revolute and prismatic joints only (choose a base and tip '
+                             'around it)')
+        if joint.mimic is not None:
+            raise ModelError(f'joint {joint.name!r} mimics {joint.mimic.joint!r}: a DH '
+                             'table has one free variable per row (choose a chain without '
+                             'mimic joints)')
+        if norm(joint.effective_axis) == 0.0:
+            raise ModelError(f'joint {joint.name!r} has a zero axis: give it a direction')
+        axes.append(Axis(joint, pose))
+    if not axes:
+        raise ModelError(f'the chain from {base!r} to {tip!r} has no revolute or prismatic '
+                         'joint: a DH table needs at least one')
+    return joints, axes, pose
+
+
+def _across(direction: Vec, z: Vec) -> Vec | None:
+    """Return ``direction`` made perpendicular to ``z`` and unit, or None if along ``z``."""
+    rest = add(direction, z, -dot(direction, z))
+    return unit(rest) if norm(rest) > 1e-9 else None
+
+
+def _project(point: Vec, origin: Vec, z: Vec) -> Vec:
+    """Return the foot of ``point`` on the line through ``origin`` along ``z``."""
+    return add(origin, z, dot(sub(point, origin), z))
+
+
+def _normal(origin: Vec, z: Vec, point: Vec, u: Vec, x_previous: Vec) -> tuple[Vec, Vec, Vec]:
+    """
+    Return the common normal from line (origin, z) to line (point, u).
+
+    As (foot on the first line, foot on the second, unit x along it). Of x's two senses,
+    the one closer to ``x_previous`` (a DH angle offset within +-90 degrees, as tables in
+    the literature are written; ``a`` then may be negative).
+    """
+    w = cross(z, u)
+    between = sub(point, origin)
+    if norm(w) > _PARALLEL:
+        c = dot(z, u)
+        bz, bu = dot(between, z), dot(between, u)
+        s = (bz - bu * c) / (1.0 - c * c)
+        t = (bz * c - bu) / (1.0 - c * c)
+        first, second = add(origin, z, s), add(point, u, t)
+        gap = sub(second, first)
+        return first, second, _closer(unit(gap) if norm(gap) > _SAME else unit(w), x_previous)
+    second = _project(origin, point, u)
+    gap = sub(second, origin)
+    if norm(gap) > _SAME:
+        return origin, second, _closer(unit(gap), x_previous)
+    return origin, origin, _across(x_previous, z) or _any_across(z)
+
+
+def _closer(x: Vec, x_previous: Vec) -> Vec:
+    """Return ``x`` or ``-x``, whichever is closer to ``x_previous``."""
+    return (-x[0], -x[1], -x[2]) if dot(x, x_previous) < -1e-12 else x
+
+
+def _any_across(z: Vec) -> Vec:
+    return _across((1.0, 0.0, 0.0), z) or _across((0.0, 1.0, 0.0), z)  # type: ignore[return-value]
+
+
+def _base_frame(first: Axis) -> Matrix4:
+    z = first.direction
+    origin = _project((0.0, 0.0, 0.0), first.point, z)
+    return frame(origin, _across((1.0, 0.0, 0.0), z) or _any_across(z), z)
+
+
+def _angle(a: Vec, b: Vec, about: Vec) -> float:
+    """Return the angle that turns ``a`` onto ``b`` about ``about`` (all unit)."""
+    return math.atan2(dot(cross(a, b), about), dot(a, b)) + 0.0
+
+
+def _standard_frames(axes: list[Axis], tip: Matrix4) -> list[Matrix4]:
+    frames = [_base_frame(axes[0])]
+    for following in axes[1:]:
+        origin, x, z = column(frames[-1], 3), column(frames[-1], 0), column(frames[-1], 2)
+        _, foot, x_new = _normal(origin, z, following.point, following.direction, x)
+        frames.append(frame(foot, x_new, following.direction))
+    origin, x, z = column(frames[-1], 3), column(frames[-1], 0), column(frames[-1], 2)
+    tip_z = column(tip, 2)
+    z_last = tip_z if abs(dot(tip_z, z)) > 1.0 - 1e-12 else z
+    x_last = _across(column(tip, 0), z) or _across(column(tip, 1), z) or x
+    at = column(tip, 3)
+    foot = _project(at, origin, z)
+    frames.append(frame(add(foot, x_last, dot(sub(at, foot), x_last)), x_last, z_last))
+    return frames
+
+
+def _standard_row(previous: Matrix4, current: Matrix4) -> tuple[float, float, float, float]:
+    """Return (a, alpha, d, theta) with current = previous Rz(theta) Tz(d) Tx(a) Rx(alpha)."""
+    o0, x0, z0 = column(previous, 3), column(previous, 0), column(previous, 2)
+    o1, x1, z1 = column(current, 3), column(current, 0), column(current, 2)
+    step = sub(o1, o0)
+    return dot(step, x1), _angle(z0, z1, x1), dot(step, z0), _angle(x0, x1, z0)
+
+
+def _modified_frames(axes: list[Axis], tip: Matrix4) -> list[Matrix4]:
+    frames = [_base_frame(axes[0])]
+    landing = column(frames[0], 3)  # where the previous x meets this axis
+    for index, axis in enumerate(axes):
+        z = axis.direction
+        x_previous = column(frames[-1], 0)
+        if index + 1 < len(axes):
+            following = axes[index + 1]
+            on_line = _project(landing, axis.point, z)
+            origin, foot, x = _normal(on_line, z, following.point, following.direction,
+                                      x_previous)
+            landing = foot
+        else:
+            origin = _project(column(tip, 3), axis.point, z)
+            x = _across(column(tip, 0), z) or _across(column(tip, 1), z) or \
+                _across(x_previous, z) or _any_across(z)
+        frames.append(frame(origin, x, z))
+    return frames
+
+
+def _modified_row(previous: Matrix4, current: Matrix4) -> tuple[float, float, float, float]:
+    """Return (a, alpha, d, theta) with current = previous Rx(alpha) Tx(a) Rz(theta) Tz(d)."""
+    o0, x0, z0 = column(previous, 3), column(previous, 0), column(previous, 2)
+    o1, x1, z1 = column(current, 3), column(current, 0), column(current, 2)
+    step = sub(o1, o0)
+    a = dot(step, x0)
+    return a, _angle(z0, z1, x0), dot(sub(o1, add(o0, x0, a)), z1), _angle(x0, x1, z1)
+
+
+def dh_from_robot(robot, base: str, tip: str, convention: str = 'standard'):
+    """
+    Return the DH table of the chain from link ``base`` to link ``tip`` of ``robot``.
+
+    Its rows are named after the joints and carry their limits; ``base`` and ``tool``
+    hold the transforms from the base link to DH frame 0 and from the last DH frame to
+    the tip link, so ``table.to_robot()`` has the chain's forward kinematics.
+
+    :raises ModelError: when the chain is not serial revolute/prismatic (naming the joint).
+    """
+    from urdfgenpy_ros.dh import DHConvention, DHRow, DHTable
+    style = DHConvention(convention)
+    _, axes, tip_pose = chain_axes(robot, base, tip)
+    if style is DHConvention.STANDARD:
+        frames, measure = _standard_frames(axes, tip_pose), _standard_row
+    else:
+        frames, measure = _modified_frames(axes, tip_pose), _modified_row
+    rows = []
+    for axis, previous, current in zip(axes, frames, frames[1:]):
+        a, alpha, d, theta = measure(previous, current)
+        joint = axis.joint
+        limit = joint.limit if joint.type is not JointType.CONTINUOUS else None
+        rows.append(DHRow(joint.name, a, alpha, d, theta,
+                          'prismatic' if joint.type is JointType.PRISMATIC else 'revolute',
+                          lower=limit.lower if limit is not None else None,
+                          upper=limit.upper if limit is not None else None,
+                          effort=limit.effort if limit is not None else 100.0,
+                          velocity=limit.velocity if limit is not None else 2.0))
+    return DHTable(style, rows, base=origin_of(frames[0]),
+                   tool=origin_of(multiply(inverse(frames[-1]), tip_pose)))
