@@ -21,10 +21,12 @@ import click
 from urdfgenpy_ros.cli.attach import attach
 from urdfgenpy_ros.cli.check import check
 from urdfgenpy_ros.cli.convert import convert
+from urdfgenpy_ros.cli.dh import dh
 from urdfgenpy_ros.cli.example import example
 from urdfgenpy_ros.cli.graph import graph
 from urdfgenpy_ros.cli.inertia import inertia
 from urdfgenpy_ros.cli.init import init
+from urdfgenpy_ros.cli.mirror import mirror
 from urdfgenpy_ros.cli.render import render
 from urdfgenpy_ros.cli.tree import tree
 from urdfgenpy_ros.cli.view import view
@@ -55,5 +57,6 @@ def main(ctx: click.Context, verbose: bool) -> None:
     ctx.obj = {'verbose': verbose}
 
 
-for command in (example, tree, convert, check, inertia, init, graph, render, view, attach):
+for command in (example, tree, convert, check, inertia, init, graph, render, view, attach,
+                dh, mirror):
     main.add_command(command)

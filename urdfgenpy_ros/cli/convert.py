@@ -47,10 +47,15 @@ from urdfgenpy_ros.robot import Robot
               help='URDF output: write what this URDF version holds (1.0 is what ROS 2 '
                    'Jazzy reads: quaternions become rpy, a capsule a cylinder and two '
                    'spheres; each change is printed).')
+@click.option('--merge-fixed', is_flag=True,
+              help='Merge links on fixed joints into their parents (exact lumped inertia); '
+                   'each stays a massless frame unless --drop-frames.')
+@click.option('--drop-frames', is_flag=True, help='With --merge-fixed: remove merged links.')
 @input_options
 def convert(source: Path, target: Path, arguments: tuple[str, ...],
             package_paths: tuple[Path, ...], force: bool, lump_fixed: bool,
-            urdf_version: str | None) -> None:
+            urdf_version: str | None, merge_fixed: bool = False,
+            drop_frames: bool = False) -> None:
     """
     Convert SOURCE to TARGET; the suffixes choose the formats.
 
@@ -72,6 +77,8 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
         robot, changes = as_version(robot, urdf_version)
         for change in changes:
             click.echo(str(change), err=True)
+    if merge_fixed or drop_frames:
+        robot = robot.merge_fixed(drop_frames=drop_frames)
     if lump_fixed:
         robot = lump_fixed_joints(robot)  # what to_sdf(lump_fixed=True) writes
     if kind == 'sdf':

@@ -1,0 +1,361 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Mirror a limb: add the reflection of the subtree below a link's parent joint.
+
+A reflection ``S`` through a plane of a frame turns a link's pose ``W`` into ``S W``,
+which is left-handed; the copy's link frame is ``S W D``, with ``D`` the same reflection
+in the link's own axes (for the xz plane: y flips), so every frame stays right-handed.
+Then each joint origin inside the subtree becomes ``D O D`` (xz: x, -y, z and -roll,
+pitch, -yaw), the first joint's ``P^-1 S P O D`` (``P`` its parent's pose), and each
+shape, inertial and sensor pose ``D V D``, the shape itself reflected by ``D`` (a primitive
+is its own mirror image; a mesh is written reflected, beside the original). A turn about
+axis ``a`` becomes a turn about ``-D a`` by the same angle, or about ``D a`` by the
+opposite one: each joint keeps its axis where it can, and :class:`MirroredJoint` says
+which (positions, and so limits, kept or negated). Mimic multipliers and offsets follow.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+import copy
+from dataclasses import dataclass, replace
+import hashlib
+from os import PathLike
+from pathlib import Path
+from typing import Any
+
+from lxml import etree
+
+from urdfgenpy_ros.assembly import _rename, _Renaming
+from urdfgenpy_ros.errors import MissingDependencyError, ModelError
+from urdfgenpy_ros.floats import fmt_vec
+from urdfgenpy_ros.geometry import Mesh, Origin
+from urdfgenpy_ros.joint import Joint, JointMimic, JointType
+from urdfgenpy_ros.reshape._frames import general_multiply, inverse, origin_of
+from urdfgenpy_ros.transforms import IDENTITY4, Matrix4, multiply
+
+PLANES = {'yz': 0, 'xz': 1, 'xy': 2}  # plane -> the axis it flips
+_TURNING = (JointType.REVOLUTE, JointType.CONTINUOUS)
+
+
+@dataclass(frozen=True)
+class MirroredJoint:
+    """One joint of the copy: ``position == sign * original's position``."""
+
+    name: str
+    original: str
+    sign: int
+
+    def __str__(self) -> str:
+        """Return the rule as one line."""
+        rule = 'positions kept' if self.sign > 0 else 'positions negated (limits -upper..-lower)'
+        return f'joint {self.name!r} mirrors {self.original!r}: {rule}'
+
+
+def _flip(axis: int) -> Matrix4:
+    matrix = [row[:] for row in IDENTITY4]
+    matrix[axis][axis] = -1.0
+    return matrix
+
+
+def _conjugate(origin: Origin, flip: Matrix4) -> Origin:
+    """Return the origin ``D O D``."""
+    return origin_of(general_multiply(flip, origin.matrix(), flip), origin)
+
+
+def _renamer(rename: Mapping[str, str]):
+    def renamed(name: str) -> str:
+        for old, new in rename.items():
+            name = name.replace(old, new)
+        return name
+    return renamed
+
+
+def mirror_subtree(robot, root: str, plane: str = 'xz', frame: str | None = None,
+                   rename: Mapping[str, str] | None = None, *,
+                   mesh_folder: str | PathLike[str] | None = None,
+                   search_paths: tuple = ()) -> list[MirroredJoint]:
+    """
+    Add to ``robot`` the mirror image of the subtree below link ``root``'s parent joint.
+
+    Return each moving joint's rule. See :meth:`urdfgenpy_ros.robot.Robot.mirror`.
+
+    :raises ModelError: one line, for an unknown plane or link, or names the copy would
+        take that are taken (all listed), before anything changes.
+    """
+    if plane not in PLANES:
+        raise ModelError(f"mirror: plane {plane!r} is not one of 'xz', 'yz', 'xy'")
+    rename = {'left_': 'right_'} if rename is None else dict(rename)
+    renamed = _renamer(rename)
+    top = robot.parent_joint(robot.get_link(root).name)
+    if top is None:
+        raise ModelError(f'mirror: {root!r} is the root link: name the first link of a limb '
+                         '(the child of the joint the copy hangs from)')
+    links = robot.subtree(root)
+    joints = [top, *(joint for joint in robot.joints
+                     if joint.parent in {link.name for link in links})]
+    link_names = {link.name: renamed(link.name) for link in links}
+    joint_names = {joint.name: renamed(joint.name) for joint in joints}
+    taken = [f'link {new!r}' for new in link_names.values() if robot.has_link(new)]
+    taken += [f'joint {new!r}' for new in joint_names.values() if robot.has_joint(new)]
+    if taken:
+        shown = ', '.join(taken[:6]) + (f' and {len(taken) - 6} more' if len(taken) > 6 else '')
+        raise ModelError(f'mirror: the copy of {root!r} would take names in use: {shown} '
+                         f'(pass rename= that changes them; it was {rename!r})')
+    flip = _flip(PLANES[plane])
+    poses = _zero_poses(robot)
+    at = poses[robot.get_link(frame).name if frame is not None else robot.root.name]
+    reflection = general_multiply(at, flip, inverse(at))  # S in the root's frame
+    parent = poses[top.parent]
+    first = general_multiply(inverse(parent), reflection, parent, top.origin.matrix(), flip)
+    piece = _copy(robot, links, joints)
+    meshes = _MeshWriter(robot, plane, mesh_folder, search_paths)
+    signs: dict[str, int] = {}
+    for joint in piece.joints:
+        joint.origin = (origin_of(first, joint.origin) if joint.name == top.name
+                        else _conjugate(joint.origin, flip))
+        signs[joint.name] = _mirror_motion(joint, flip)
+    for joint in piece.joints:
+        _mirror_mimic(joint, signs)
+    for link in piece.links:
+        _mirror_link(link, flip, meshes)
+    blocks = _robot_blocks(robot, joint_names, link_names, renamed)
+    _rename(piece, _Renaming(link_names, joint_names))
+    _rename_sensors(piece, renamed)
+    for link in piece.links:
+        robot.add_link(link)
+    for joint in piece.joints:
+        robot.add_joint(joint)
+    robot.extensions.extend(blocks)
+    return [MirroredJoint(joint_names[name], name, sign) for name, sign in signs.items()
+            if sign]
+
+
+def _zero_poses(robot) -> dict[str, Matrix4]:
+    poses: dict[str, Matrix4] = {}
+    for joint, link in robot.walk():
+        poses[link.name] = IDENTITY4 if joint is None else multiply(
+            poses[joint.parent], joint.origin.matrix())
+    return poses
+
+
+def _copy(robot, links, joints):
+    """Return a robot holding deep copies of ``links`` and ``joints``."""
+    from urdfgenpy_ros.robot import Robot
+    piece = Robot(robot.name)
+    for link in copy.deepcopy(links):
+        piece.add_link(link)
+    outside = copy.deepcopy(robot.get_link(joints[0].parent))
+    outside.visuals, outside.collisions, outside.inertial = [], [], None
+    piece.add_link(outside)  # the parent, so the first joint has both ends
+    for joint in copy.deepcopy(joints):
+        piece.add_joint(joint)
+    piece._links.pop(outside.name)  # only the joint's name of it is wanted
+    return piece
+
+
+def _mirror_motion(joint: Joint, flip: Matrix4) -> int:
+    """Turn ``joint``'s axis and limits; return the position's sign (0: no position)."""
+    if not joint.type.is_movable:
+        if joint.axis is not None:
+            joint.axis = _clean(tuple(flip[i][i] * joint.axis[i] for i in range(3)))
+        return 0
+    axis = joint.effective_axis
+    flipped = tuple(flip[i][i] * axis[i] for i in range(3))
+    same = tuple(-value for value in flipped) if joint.type in _TURNING else flipped
+    other = tuple(-value for value in same)
+    closeness = sum(a * b for a, b in zip(same, axis))
+    if closeness >= sum(a * b for a, b in zip(other, axis)) - 1e-12:
+        joint.axis = _clean(same) if joint.axis is not None or same != (1.0, 0.0, 0.0) \
+            else None
+        return 1
+    joint.axis = _clean(other) if joint.axis is not None or other != (1.0, 0.0, 0.0) else None
+    if joint.limit is not None:
+        joint.limit = replace(joint.limit, lower=-joint.limit.upper, upper=-joint.limit.lower)
+    if joint.safety_controller is not None:
+        soft = joint.safety_controller
+        joint.safety_controller = replace(soft, soft_lower_limit=-soft.soft_upper_limit,
+                                          soft_upper_limit=-soft.soft_lower_limit)
+    if joint.calibration is not None:
+        edges = joint.calibration
+        joint.calibration = replace(
+            edges, rising=None if edges.falling is None else -edges.falling,
+            falling=None if edges.rising is None else -edges.rising)
+    return -1
+
+
+def _clean(vector: tuple) -> tuple[float, float, float]:
+    return (vector[0] + 0.0, vector[1] + 0.0, vector[2] + 0.0)
+
+
+def _mirror_mimic(joint: Joint, signs: dict[str, int]) -> None:
+    """Keep ``q = m q_leader + o`` true between the mirrored positions."""
+    mimic = joint.mimic
+    if mimic is None:
+        return
+    own = signs.get(joint.name) or 1
+    leader = signs.get(mimic.joint) or 1  # a leader outside the limb is not mirrored
+    multiplier = 1.0 if mimic.multiplier is None else mimic.multiplier
+    offset = 0.0 if mimic.offset is None else mimic.offset
+    joint.mimic = JointMimic(mimic.joint, own * leader * multiplier + 0.0,
+                             own * offset + 0.0, source=mimic.source, extras=mimic.extras)
+    if mimic.multiplier is None and own * leader == 1:
+        joint.mimic = replace(joint.mimic, multiplier=None)
+    if mimic.offset is None and offset == 0.0:
+        joint.mimic = replace(joint.mimic, offset=None)
+
+
+def _mirror_link(link: Any, flip: Matrix4, meshes: _MeshWriter) -> None:
+    for item in (*link.visuals, *link.collisions):
+        item.origin = _conjugate(item.origin, flip)
+        if isinstance(item.geometry, Mesh):
+            item.geometry = meshes.mirrored(item.geometry, link.name)
+    inertial = link.inertial
+    if inertial is not None:
+        d = [flip[i][i] for i in range(3)]
+        inertial.ixy *= d[0] * d[1]
+        inertial.ixz *= d[0] * d[2]
+        inertial.iyz *= d[1] * d[2]
+        inertial.origin = _conjugate(inertial.origin, flip)
+    for sensor in link.sensors:
+        sensor.origin = _conjugate(sensor.origin, flip)
+    for block in link.extensions:
+        for pose in block.element.iter('pose'):
+            _mirror_pose_text(pose, flip, link.name)
+
+
+def _mirror_pose_text(pose: Any, flip: Matrix4, link: str) -> None:
+    if pose.get('relative_to') or pose.get('rotation_format') not in (None, 'euler_rpy') \
+            or pose.get('degrees', '').strip().lower() in ('true', '1'):
+        raise ModelError(f'mirror: link {link!r} has a <pose> the mirror cannot turn (give '
+                         "it as 'x y z roll pitch yaw' in radians, without relative_to)")
+    try:
+        numbers = [float(value) for value in (pose.text or '').split()]
+    except ValueError:
+        numbers = []
+    if len(numbers) != 6:
+        raise ModelError(f"mirror: link {link!r}: <pose> {(pose.text or '').strip()!r} is "
+                         "not 'x y z roll pitch yaw'")
+    turned = _conjugate(Origin(tuple(numbers[:3]), tuple(numbers[3:])), flip)
+    pose.text = f'{fmt_vec(turned.xyz)} {fmt_vec(turned.rpy)}'
+
+
+def _rename_sensors(piece: Any, renamed: Any) -> None:
+    """Give the copy's sensors names of their own (renamed, else ``_mirror`` appended)."""
+    def new(name: str) -> str:
+        changed = renamed(name)
+        return changed if changed != name else f'{name}_mirror'
+
+    for owner in (*piece.links, *piece.joints):
+        for sensor in owner.sensors:
+            sensor.name = new(sensor.name)
+        for block in owner.extensions:
+            for element in block.element.iter('sensor'):
+                if element.get('name'):
+                    element.set('name', new(element.get('name')))
+
+
+def _robot_blocks(robot: Any, joints: dict[str, str], links: dict[str, str],
+                  renamed: Any) -> list[Any]:
+    """
+    Give the copy its part of the robot-level blocks; return new blocks to add.
+
+    A ``<transmission>`` of the limb's joints only is copied, renamed; in other blocks
+    (``<ros2_control>``, plugins), each element naming a joint or link of the limb gets a
+    renamed sibling after it.
+    """
+    renaming = _Renaming(links, joints)
+    added = []
+    for block in robot.extensions:
+        element = block.element
+        named = {node.get('name') for node in element.iter('joint')}
+        if element.tag == 'transmission' and named and named <= set(joints):
+            twin = copy.deepcopy(block)
+            name = twin.element.get('name') or ''
+            twin.element.set('name', renamed(name) if renamed(name) != name else
+                             f'{name}_mirror')
+            for actuator in twin.element.iter('actuator'):
+                old = actuator.get('name') or ''
+                actuator.set('name', renamed(old) if renamed(old) != old else f'{old}_mirror')
+            _rename_block_copy(twin.element, renaming)
+            added.append(twin)
+            continue
+        if element.tag == 'transmission':
+            continue
+        for node in list(element.iter()):
+            if not isinstance(node.tag, str) or node is element:
+                continue
+            text = (node.text or '').strip() if len(node) == 0 else ''
+            if node.get('name') in joints and node.tag == 'joint' or text in joints \
+                    or text in links:
+                twin = copy.deepcopy(node)
+                _rename_block_copy(twin, renaming)
+                node.addnext(twin)
+    return added
+
+
+def _rename_block_copy(element: Any, renaming: _Renaming) -> None:
+    from urdfgenpy_ros.assembly import _rename_block
+    _rename_block(element, renaming)
+
+
+class _MeshWriter:
+    """Write each mesh reflected, once, and return the Mesh that names the new file."""
+
+    def __init__(self, robot: Any, plane: str, folder: str | PathLike[str] | None,
+                 search_paths: tuple) -> None:
+        from urdfgenpy_ros.resources import PackageResolver
+        self.resolver = PackageResolver(search_paths)
+        source = getattr(robot, 'source', None)
+        file = getattr(source, 'file', None) if source is not None else None
+        self.relative_to = Path(file).parent if file else None
+        self.plane = plane
+        self.folder = Path(folder) if folder is not None else None
+        self.done: dict[str, str] = {}
+
+    def mirrored(self, mesh: Mesh, link: str) -> Mesh:
+        if mesh.filename not in self.done:
+            self.done[mesh.filename] = self._write(mesh.filename, link)
+        return Mesh(self.done[mesh.filename], mesh.scale, source=mesh.source,
+                    extras=mesh.extras)
+
+    def _write(self, uri: str, link: str) -> str:
+        try:
+            import numpy
+            import trimesh
+        except ImportError:
+            raise MissingDependencyError('trimesh', 'mesh', 'Mirroring meshes') from None
+        path = self.resolver.resolve(uri, self.relative_to)
+        loaded = trimesh.load(str(path), force='mesh')
+        flip = numpy.eye(4)
+        axis = PLANES[self.plane]
+        flip[axis, axis] = -1.0
+        loaded.apply_transform(flip)  # trimesh turns the faces round: normals stay outward
+        name = f'{path.stem}_mirror_{self.plane}{path.suffix}'
+        folder = self.folder or path.parent
+        folder.mkdir(parents=True, exist_ok=True)
+        target = folder / name
+        data = loaded.export(file_type=path.suffix.lstrip('.').lower())
+        data = data if isinstance(data, bytes) else data.encode()
+        if target.exists() and hashlib.sha256(target.read_bytes()).digest() != \
+                hashlib.sha256(data).digest():
+            raise ModelError(f'mirror: {target} exists and is not the mirror of {path} '
+                             f'(link {link!r}): move it away, or pass mesh_folder=')
+        target.write_bytes(data)
+        if self.folder is not None:
+            return str(target.absolute())
+        head, _, _ = uri.rpartition('/')
+        return f'{head}/{name}' if head else name
