@@ -72,8 +72,17 @@ def _flip(axis: int) -> Matrix4:
 
 
 def _conjugate(origin: Origin, flip: Matrix4) -> Origin:
-    """Return the origin ``D O D``."""
-    return origin_of(general_multiply(flip, origin.matrix(), flip), origin)
+    """
+    Return the origin ``D O D``, exactly: a flip of axis k negates xyz[k], and the angles
+    (rpy, or a quaternion's vector part) about the two other axes.
+    """
+    k = next(i for i in range(3) if flip[i][i] < 0.0)
+    xyz = tuple(-v + 0.0 if i == k else v for i, v in enumerate(origin.xyz))
+    if origin.quat_xyzw is not None:
+        quat = tuple(v if i in (k, 3) else -v + 0.0 for i, v in enumerate(origin.quat_xyzw))
+        return Origin(xyz, quat_xyzw=quat, source=origin.source, extras=origin.extras)
+    rpy = tuple(v if i == k else -v + 0.0 for i, v in enumerate(origin.rpy))
+    return Origin(xyz, rpy, source=origin.source, extras=origin.extras)
 
 
 def _renamer(rename: Mapping[str, str]):
