@@ -91,14 +91,19 @@ def origin_of(matrix: Matrix4, like: Origin | None = None) -> Origin:
 
     ``like``'s source and extras are kept, so a lossless writer edits it in place.
     """
-    xyz = column(matrix, 3)
-    xyz = (xyz[0] + 0.0, xyz[1] + 0.0, xyz[2] + 0.0)
+    xyz = tuple(_snap(value) for value in column(matrix, 3))
     source = like.source if like is not None else None
     extras = like.extras if like is not None else None
-    rpy = matrix_rpy(matrix)
+    roll, pitch, yaw = matrix_rpy(matrix)
+    rpy = (_snap(roll), _snap(pitch), _snap(yaw))
     if like is not None and like.quat_xyzw is not None:
         return Origin(xyz, quat_xyzw=rpy_quaternion(rpy), source=source, extras=extras)
     return Origin(xyz, rpy, source=source, extras=extras)
+
+
+def _snap(value: float) -> float:
+    """Return 0 for a value within rounding (1e-15) of it, else the value."""
+    return 0.0 if abs(value) < 1e-15 else value + 0.0
 
 
 def max_difference(a: Matrix4, b: Matrix4) -> float:
