@@ -31,7 +31,7 @@ from click.testing import CliRunner
 from helpers import assert_check_urdf_accepts, require_module
 import pytest
 
-from urdfgenpy_ros import JointMimic, ModelError, Robot
+from urdfgenpy_ros import JointMimic, ModelError, Origin, Robot
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.dh import DHTable
 from urdfgenpy_ros.joint import Joint, JointLimit
@@ -229,3 +229,47 @@ def test_apply_dh_changes_one_line_per_chain_joint_and_gives_the_tables_kinemati
     import numpy
     assert _biggest(pinocchio_fk(written, base, tip, names, configurations),
                     [numpy.array(pose) for pose in flange]) < 1e-9
+
+
+@pytest.mark.parametrize('convention', CONVENTIONS)
+@pytest.mark.parametrize('arm', ['ur5', 'panda', 'puma560', 'stanford', 'irb140'])
+def test_published_tables_come_back_from_their_skeletons(arm: str, convention: str,
+                                                         tmp_path: Path) -> None:
+    from test_dh import ARMS as PUBLISHED
+    source = tmp_path / 'source.urdf'
+    PUBLISHED[arm].to_robot(arm).to_urdf(source)  # the Stanford arm's joint 3 slides
+    table = DHTable.from_robot(Robot.from_urdf(source), 'base_link', 'flange', convention)
+    assert [row.joint_type for row in table.rows] == [
+        row.joint_type for row in PUBLISHED[arm].rows]
+    names = [row.name for row in table.rows]
+    configurations = _configurations(100, len(names))
+    again = tmp_path / 'again.urdf'
+    table.to_robot(arm).to_urdf(again)
+    assert _biggest(pinocchio_fk(source, 'base_link', 'flange', names, configurations),
+                    pinocchio_fk(again, 'base_link', 'flange', names, configurations)) < 1e-9
+
+
+def test_apply_dh_refuses_a_tool_it_cannot_place_and_a_table_of_another_chain() -> None:
+    from test_dh import ARMS as PUBLISHED
+    robot = PUBLISHED['ur5'].to_robot('ur5')
+    table = DHTable.from_robot(robot, 'base_link', 'link_6')
+    table.tool = Origin((0.0, 0.0, 0.1))  # nothing can move link_6 off its joint's frame
+    with pytest.raises(ModelError, match="tip 'link_6' is the link of joint 'joint_6'"):
+        robot.apply_dh(table, 'base_link', 'link_6')
+    short = DHTable.from_robot(robot, 'base_link', 'link_3')
+    with pytest.raises(ModelError, match='the table has 3 rows, the chain from'):
+        robot.apply_dh(short, 'base_link', 'flange')
+
+
+def test_unknown_links_are_one_line_with_a_suggestion(tmp_path: Path) -> None:
+    from test_dh import ARMS as PUBLISHED
+    source = tmp_path / 'ur5.urdf'
+    PUBLISHED['ur5'].to_robot('ur5').to_urdf(source)
+    for options, message in (
+            (['--base', 'base_lnk', '--tip', 'flange'],
+             "DH chain base: robot 'ur5' has no link 'base_lnk' (did you mean 'base_link'?)"),
+            (['--base', 'link_3', '--tip', 'link_1'], "link 'link_1' is not below 'link_3'")):
+        result = CliRunner().invoke(main, ['dh', str(source), *options, '-o',
+                                           str(tmp_path / 't.yaml')])
+        assert result.exit_code == 2 and message in result.output
+        assert 'Traceback' not in result.output

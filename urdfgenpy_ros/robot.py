@@ -513,18 +513,21 @@ class Robot:
 
     def mirror(self, root: str, plane: str = 'xz', frame: str | None = None,
                rename: Mapping[str, str] | None = None, *,
-               mesh_folder: str | PathLike[str] | None = None) -> Robot:
+               mesh_folder: str | PathLike[str] | None = None,
+               search_paths: list[str | PathLike[str]] | tuple = ()) -> Robot:
         """
         Add the mirror image of the subtree below ``root``'s parent joint; return the robot.
 
         The reflection is through ``plane`` ('xz', 'yz' or 'xy') of link ``frame`` (the
         root link by default); names change by ``rename`` (default ``{'left_': 'right_'}``,
         every reference follows). Mirrored meshes are written beside the originals, or in
-        ``mesh_folder``. :func:`urdfgenpy_ros.reshape.mirror.mirror_subtree` also returns
-        each joint's rule (positions kept or negated).
+        ``mesh_folder`` (``package://`` URIs resolve through ``search_paths`` too).
+        :func:`urdfgenpy_ros.reshape.mirror.mirror_subtree` also returns each joint's rule
+        (positions kept or negated).
         """
         from urdfgenpy_ros.reshape.mirror import mirror_subtree
-        mirror_subtree(self, root, plane, frame, rename, mesh_folder=mesh_folder)
+        mirror_subtree(self, root, plane, frame, rename, mesh_folder=mesh_folder,
+                       search_paths=tuple(search_paths))
         return self
 
     def merge_fixed(self, keep: tuple[str, ...] | list[str] = (), *,

@@ -17,11 +17,12 @@
 from __future__ import annotations
 
 from pathlib import Path
+import re
 
 import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot
-from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.errors import ModelError, UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.reshape.mirror import mirror_subtree, PLANES
 
@@ -61,8 +62,13 @@ def mirror(source: Path, arguments: tuple[str, ...], root: str, plane: str,
     if output.exists() and not force:
         raise UrdfgenpyError(f'{output} exists: pass --force to overwrite it')
     robot = read_robot(source, arguments, package_paths)
-    rules = mirror_subtree(robot, root, plane, frame, _renames(renames) or None,
-                           mesh_folder=mesh_folder, search_paths=package_paths)
+    try:
+        rules = mirror_subtree(robot, root, plane, frame, _renames(renames) or None,
+                               mesh_folder=mesh_folder, search_paths=package_paths)
+    except ModelError as error:  # its fix in the words of this command's options
+        text = re.sub(r'pass rename= that changes them; it was \{.*\}',
+                      'pass --rename OLD:NEW that changes them', str(error))
+        raise ModelError(text.replace('pass mesh_folder=', 'pass --mesh-folder')) from None
     for rule in rules:
         click.echo(str(rule))
     robot.save(output)

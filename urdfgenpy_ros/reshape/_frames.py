@@ -17,7 +17,9 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
+from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.transforms import Matrix4, matrix_rpy, rpy_quaternion
 
@@ -109,3 +111,11 @@ def _snap(value: float) -> float:
 def max_difference(a: Matrix4, b: Matrix4) -> float:
     """Return the largest entry-wise difference of two transforms."""
     return max(abs(a[i][j] - b[i][j]) for i in range(3) for j in range(4))
+
+
+def require_link(robot: Any, name: str, role: str) -> str:
+    """Return ``name`` if ``robot`` has such a link; else raise one line naming a close one."""
+    try:
+        return str(robot.get_link(name).name)
+    except KeyError as error:
+        raise ModelError(f'{role}: {error.args[0]} (name one of its links)') from None

@@ -34,7 +34,7 @@ import math
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.reshape._frames import (
-    add, column, cross, dot, frame, inverse, norm, origin_of, sub, unit, Vec)
+    add, column, cross, dot, frame, inverse, norm, origin_of, require_link, sub, unit, Vec)
 from urdfgenpy_ros.transforms import IDENTITY4, Matrix4, multiply
 
 _PARALLEL = 1e-9  # |z1 x z2| below this: the axes are parallel
@@ -60,6 +60,11 @@ def chain_axes(robot, base: str, tip: str) -> tuple[list[Joint], list[Axis], Mat
 
     :raises ModelError: naming the joint when the chain is not serial revolute/prismatic.
     """
+    require_link(robot, base, 'DH chain base')
+    require_link(robot, tip, 'DH chain tip')
+    if tip not in {link.name for link in robot.subtree(base)}:
+        raise ModelError(f'link {tip!r} is not below {base!r}: a chain runs from a base link '
+                         'down to a tip below it')
     joints = robot.chain(tip, base)
     if not joints:
         raise ModelError(f'no chain from {base!r} to {tip!r}: name a base link above the tip')

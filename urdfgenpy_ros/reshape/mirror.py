@@ -42,7 +42,7 @@ from urdfgenpy_ros.errors import MissingDependencyError, ModelError
 from urdfgenpy_ros.floats import fmt_vec
 from urdfgenpy_ros.geometry import Mesh, Origin
 from urdfgenpy_ros.joint import Joint, JointMimic, JointType
-from urdfgenpy_ros.reshape._frames import general_multiply, inverse, origin_of
+from urdfgenpy_ros.reshape._frames import general_multiply, inverse, origin_of, require_link
 from urdfgenpy_ros.transforms import IDENTITY4, Matrix4, multiply
 
 PLANES = {'yz': 0, 'xz': 1, 'xy': 2}  # plane -> the axis it flips
@@ -109,7 +109,8 @@ def mirror_subtree(robot, root: str, plane: str = 'xz', frame: str | None = None
         raise ModelError(f"mirror: plane {plane!r} is not one of 'xz', 'yz', 'xy'")
     rename = {'left_': 'right_'} if rename is None else dict(rename)
     renamed = _renamer(rename)
-    top = robot.parent_joint(robot.get_link(root).name)
+    top = robot.parent_joint(require_link(robot, root, 'mirror: root'))
+    at_frame = require_link(robot, frame, 'mirror: frame') if frame is not None else None
     if top is None:
         raise ModelError(f'mirror: {root!r} is the root link: name the first link of a limb '
                          '(the child of the joint the copy hangs from)')
@@ -126,7 +127,7 @@ def mirror_subtree(robot, root: str, plane: str = 'xz', frame: str | None = None
                          f'(pass rename= that changes them; it was {rename!r})')
     flip = _flip(PLANES[plane])
     poses = _zero_poses(robot)
-    at = poses[robot.get_link(frame).name if frame is not None else robot.root.name]
+    at = poses[at_frame or robot.root.name]
     reflection = general_multiply(at, flip, inverse(at))  # S in the root's frame
     parent = poses[top.parent]
     first = general_multiply(inverse(parent), reflection, parent, top.origin.matrix(), flip)
