@@ -50,19 +50,24 @@ def example_robot(relative: str) -> Path:
     return Path(str(share)) / relative
 
 
-def _puma() -> Path:
+def _rtb_data(relative: str) -> Path:
+    """Return a URDF robotics-toolbox's rtb-data ships, or skip when it is not installed."""
     spec = util.find_spec('rtbdata')
     if spec is None or not spec.submodule_search_locations:
         pytest.skip('rtb-data not installed (pip install rtb-data; too large for the extra)')
-    return Path(list(spec.submodule_search_locations)[0]) / \
-        'xacro/unimation_puma560_description/urdf/puma560_robot.urdf'
+    return Path(list(spec.submodule_search_locations)[0]) / 'xacro' / relative
 
 
 ARMS = {  # file, base, tip
     'panda': (lambda: example_robot('panda_description/urdf/panda.urdf'), 'panda_link0',
               'panda_link8'),
     'ur5': (lambda: example_robot('ur_description/urdf/ur5_robot.urdf'), 'base_link', 'tool0'),
-    'puma560': (_puma, 'link1', 'link7'),
+    'puma560': (lambda: _rtb_data('unimation_puma560_description/urdf/puma560_robot.urdf'),
+                'link1', 'link7'),
+    'irb140': (lambda: _rtb_data('abb_irb140_description/urdf/irb140.urdf'), 'base_link',
+               'tool0'),
+    'iiwa14': (lambda: _rtb_data('kuka_description/kuka_lbr_iiwa/urdf/lbr_iiwa_14_r820.urdf'),
+               'base_link', 'tool0'),
 }
 
 

@@ -200,6 +200,11 @@ def _modified_row(previous: Matrix4, current: Matrix4) -> tuple[float, float, fl
     return a, _angle(z0, z1, x0), dot(sub(o1, add(o0, x0, a)), z1), _angle(x0, x1, z1)
 
 
+def _snap(value: float) -> float:
+    """Return 0 for rounding residue (below 1e-15), else the value."""
+    return 0.0 if abs(value) < 1e-15 else value + 0.0
+
+
 def dh_from_robot(robot, base: str, tip: str, convention: str = 'standard'):
     """
     Return the DH table of the chain from link ``base`` to link ``tip`` of ``robot``.
@@ -219,7 +224,7 @@ def dh_from_robot(robot, base: str, tip: str, convention: str = 'standard'):
         frames, measure = _modified_frames(axes, tip_pose), _modified_row
     rows = []
     for axis, previous, current in zip(axes, frames, frames[1:]):
-        a, alpha, d, theta = measure(previous, current)
+        a, alpha, d, theta = (_snap(value) for value in measure(previous, current))
         joint = axis.joint
         limit = joint.limit if joint.type is not JointType.CONTINUOUS else None
         rows.append(DHRow(joint.name, a, alpha, d, theta,
