@@ -230,3 +230,29 @@ def test_mirror_command_prints_each_joints_rule(tmp_path: Path) -> None:
     again = CliRunner().invoke(main, ['mirror', str(target), '--root', 'left_shoulder',
                                       '-o', str(tmp_path / 'x.urdf')])
     assert again.exit_code == 2 and 'would take names in use' in again.output
+
+
+@pytest.mark.parametrize('plane, frame', [('yz', None), ('xy', 'left_shoulder'),
+                                          ('xz', 'left_upper')])
+def test_any_plane_of_any_frame_reflects_the_limb(plane: str, frame: str | None,
+                                                  tmp_path: Path) -> None:
+    numpy = require_module('numpy')
+    yourdfpy = require_module('yourdfpy')
+    robot = _arm()
+    rules = mirror_subtree(robot, 'left_upper', plane, frame, {'left_': 'other_'})
+    robot.to_urdf(tmp_path / 'arm.urdf')
+    model = yourdfpy.URDF.load(str(tmp_path / 'arm.urdf'), load_meshes=False)
+    at = model.get_transform(frame or 'base_link', 'base_link')  # all joints at 0
+    axis = {'yz': 0, 'xz': 1, 'xy': 2}[plane]
+    flip = _reflection(axis)
+    reflection = at @ flip @ numpy.linalg.inv(at)
+    rng = random.Random(3)
+    for _ in range(20):
+        values = {rule.original: rng.uniform(-0.5, 0.5) for rule in rules}
+        config = dict(values)
+        config.update({rule.name: rule.sign * values[rule.original] for rule in rules})
+        model.update_cfg(config)
+        for name in ('left_upper', 'left_finger_a', 'left_finger_b'):
+            mine = model.get_transform(name, 'base_link')
+            twin = model.get_transform(name.replace('left_', 'other_'), 'base_link')
+            assert numpy.abs(twin - reflection @ mine @ flip).max() < 1e-9, name
