@@ -256,3 +256,36 @@ def test_any_plane_of_any_frame_reflects_the_limb(plane: str, frame: str | None,
             mine = model.get_transform(name, 'base_link')
             twin = model.get_transform(name.replace('left_', 'other_'), 'base_link')
             assert numpy.abs(twin - reflection @ mine @ flip).max() < 1e-9, name
+
+
+def test_meshes_are_written_beside_the_originals_and_never_over_a_users_file(
+        tmp_path: Path) -> None:
+    trimesh = require_module('trimesh')
+    numpy = require_module('numpy')
+    from urdfgenpy_ros import Mesh
+    (tmp_path / 'meshes').mkdir()
+    part = trimesh.creation.box((0.1, 0.2, 0.3))
+    part.apply_translation((0.01, 0.05, -0.1))  # off-centre, so the mirror image differs
+    part.export(tmp_path / 'meshes' / 'left_part.stl')
+    robot = _arm()
+    robot.get_link('left_upper').add_visual(Visual(Mesh('meshes/left_part.stl')))
+    source = tmp_path / 'arm.urdf'
+    robot.to_urdf(source)
+    for attempt in range(2):  # again: the same mirror image is there already, and is kept
+        robot = Robot.from_urdf(source)
+        robot.mirror('left_shoulder')
+        assert robot.get_link('right_upper').visuals[-1].geometry.filename == \
+            'meshes/left_part_mirror_xz.stl'
+    robot.to_urdf(tmp_path / 'both.urdf')
+    yourdfpy = require_module('yourdfpy')
+    loaded = yourdfpy.URDF.load(str(tmp_path / 'both.urdf'), load_meshes=True)
+    mirrored = trimesh.load(tmp_path / 'meshes' / 'left_part_mirror_xz.stl')
+    original = trimesh.load(tmp_path / 'meshes' / 'left_part.stl')  # STL holds float32
+    assert mirrored.volume == pytest.approx(original.volume, rel=1e-9)
+    assert numpy.array_equal(mirrored.bounds[:, 1], -original.bounds[::-1, 1])
+    assert 'right_upper' in loaded.link_map
+    (tmp_path / 'meshes' / 'left_part_mirror_xz.stl').write_bytes(b'solid mine\nendsolid\n')
+    with pytest.raises(ModelError, match='left_part_mirror_xz.stl exists and is not the mirror'):
+        Robot.from_urdf(source).mirror('left_shoulder')
+    assert (tmp_path / 'meshes' / 'left_part_mirror_xz.stl').read_bytes() == \
+        b'solid mine\nendsolid\n'
