@@ -140,6 +140,11 @@ def mirror_subtree(robot, root: str, plane: str = 'xz', frame: str | None = None
         signs[joint.name] = _mirror_motion(joint, flip)
     for joint in piece.joints:
         _mirror_mimic(joint, signs)
+        for sensor in joint.sensors:
+            sensor.origin = _conjugate(sensor.origin, flip)
+        for block in joint.extensions:
+            for pose in block.element.iter('pose'):
+                _mirror_pose_text(pose, flip, f'joint {joint.name!r}')
     for link in piece.links:
         _mirror_link(link, flip, meshes)
     blocks = _robot_blocks(robot, joint_names, link_names, renamed)
@@ -242,20 +247,20 @@ def _mirror_link(link: Any, flip: Matrix4, meshes: _MeshWriter) -> None:
         sensor.origin = _conjugate(sensor.origin, flip)
     for block in link.extensions:
         for pose in block.element.iter('pose'):
-            _mirror_pose_text(pose, flip, link.name)
+            _mirror_pose_text(pose, flip, f'link {link.name!r}')
 
 
-def _mirror_pose_text(pose: Any, flip: Matrix4, link: str) -> None:
+def _mirror_pose_text(pose: Any, flip: Matrix4, owner: str) -> None:
     if pose.get('relative_to') or pose.get('rotation_format') not in (None, 'euler_rpy') \
             or pose.get('degrees', '').strip().lower() in ('true', '1'):
-        raise ModelError(f'mirror: link {link!r} has a <pose> the mirror cannot turn (give '
+        raise ModelError(f'mirror: {owner} has a <pose> the mirror cannot turn (give '
                          "it as 'x y z roll pitch yaw' in radians, without relative_to)")
     try:
         numbers = [float(value) for value in (pose.text or '').split()]
     except ValueError:
         numbers = []
     if len(numbers) != 6:
-        raise ModelError(f"mirror: link {link!r}: <pose> {(pose.text or '').strip()!r} is "
+        raise ModelError(f"mirror: {owner}: <pose> {(pose.text or '').strip()!r} is "
                          "not 'x y z roll pitch yaw'")
     turned = _conjugate(Origin(tuple(numbers[:3]), tuple(numbers[3:])), flip)
     pose.text = f'{fmt_vec(turned.xyz)} {fmt_vec(turned.rpy)}'
