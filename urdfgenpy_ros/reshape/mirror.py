@@ -32,20 +32,19 @@ from __future__ import annotations
 from collections.abc import Mapping
 import copy
 from dataclasses import dataclass, replace
-import hashlib
 from os import PathLike
-from pathlib import Path
 from typing import Any
 
 from urdfgenpy_ros.assembly import _rename, _Renaming
-from urdfgenpy_ros.errors import MissingDependencyError, ModelError
+from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.floats import fmt_vec
 from urdfgenpy_ros.geometry import Mesh, Origin
 from urdfgenpy_ros.joint import Joint, JointMimic, JointType
 from urdfgenpy_ros.reshape._frames import general_multiply, inverse, origin_of, require_link
+from urdfgenpy_ros.reshape.mirror_mesh import FLIPPED_AXIS, MeshWriter
 from urdfgenpy_ros.transforms import IDENTITY4, Matrix4, multiply
 
-PLANES = {'yz': 0, 'xz': 1, 'xy': 2}  # plane -> the axis it flips
+PLANES = FLIPPED_AXIS
 _TURNING = (JointType.REVOLUTE, JointType.CONTINUOUS)
 
 
@@ -132,7 +131,7 @@ def mirror_subtree(robot, root: str, plane: str = 'xz', frame: str | None = None
     parent = poses[top.parent]
     first = general_multiply(inverse(parent), reflection, parent, top.origin.matrix(), flip)
     piece = _copy(robot, links, joints)
-    meshes = _MeshWriter(robot, plane, mesh_folder, search_paths)
+    meshes = MeshWriter(robot, plane, mesh_folder, search_paths)
     signs: dict[str, int] = {}
     for joint in piece.joints:
         joint.origin = (origin_of(first, joint.origin) if joint.name == top.name
@@ -231,7 +230,7 @@ def _mirror_mimic(joint: Joint, signs: dict[str, int]) -> None:
         joint.mimic = replace(joint.mimic, offset=None)
 
 
-def _mirror_link(link: Any, flip: Matrix4, meshes: _MeshWriter) -> None:
+def _mirror_link(link: Any, flip: Matrix4, meshes: MeshWriter) -> None:
     for item in (*link.visuals, *link.collisions):
         item.origin = _conjugate(item.origin, flip)
         if isinstance(item.geometry, Mesh):
@@ -323,52 +322,3 @@ def _robot_blocks(robot: Any, joints: dict[str, str], links: dict[str, str],
 def _rename_block_copy(element: Any, renaming: _Renaming) -> None:
     from urdfgenpy_ros.assembly import _rename_block
     _rename_block(element, renaming)
-
-
-class _MeshWriter:
-    """Write each mesh reflected, once, and return the Mesh that names the new file."""
-
-    def __init__(self, robot: Any, plane: str, folder: str | PathLike[str] | None,
-                 search_paths: tuple) -> None:
-        from urdfgenpy_ros.resources import PackageResolver
-        self.resolver = PackageResolver(search_paths)
-        source = getattr(robot, 'source', None)
-        file = getattr(source, 'file', None) if source is not None else None
-        self.relative_to = Path(file).parent if file else None
-        self.plane = plane
-        self.folder = Path(folder) if folder is not None else None
-        self.done: dict[str, str] = {}
-
-    def mirrored(self, mesh: Mesh, link: str) -> Mesh:
-        if mesh.filename not in self.done:
-            self.done[mesh.filename] = self._write(mesh.filename, link)
-        return Mesh(self.done[mesh.filename], mesh.scale, source=mesh.source,
-                    extras=mesh.extras)
-
-    def _write(self, uri: str, link: str) -> str:
-        try:
-            import numpy
-            import trimesh
-        except ImportError:
-            raise MissingDependencyError('trimesh', 'mesh', 'Mirroring meshes') from None
-        path = self.resolver.resolve(uri, self.relative_to)
-        loaded = trimesh.load(str(path), force='mesh')
-        flip = numpy.eye(4)
-        axis = PLANES[self.plane]
-        flip[axis, axis] = -1.0
-        loaded.apply_transform(flip)  # trimesh turns the faces round: normals stay outward
-        name = f'{path.stem}_mirror_{self.plane}{path.suffix}'
-        folder = self.folder or path.parent
-        folder.mkdir(parents=True, exist_ok=True)
-        target = folder / name
-        data = loaded.export(None, file_type=path.suffix.lstrip('.').lower())
-        data = data if isinstance(data, bytes) else data.encode()
-        if target.exists() and hashlib.sha256(target.read_bytes()).digest() != \
-                hashlib.sha256(data).digest():
-            raise ModelError(f'mirror: {target} exists and is not the mirror of {path} '
-                             f'(link {link!r}): move it away, or pass mesh_folder=')
-        target.write_bytes(data)
-        if self.folder is not None:
-            return str(target.absolute())
-        head, _, _ = uri.rpartition('/')
-        return f'{head}/{name}' if head else name
