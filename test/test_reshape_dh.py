@@ -278,3 +278,29 @@ def test_unknown_links_are_one_line_with_a_suggestion(tmp_path: Path) -> None:
                                            str(tmp_path / 't.yaml')])
         assert result.exit_code == 2 and message in result.output
         assert 'Traceback' not in result.output
+
+
+def test_apply_dh_keeps_quaternion_origins_quaternions(tmp_path: Path) -> None:
+    import numpy
+    from test_dh import ARMS as PUBLISHED
+    base, tip = 'base_link', 'flange'
+    robot = PUBLISHED['panda'].to_robot('panda')
+    for joint in robot.joints:
+        joint.origin = joint.origin.as_quaternion()
+    source = tmp_path / 'panda_quat.urdf'
+    robot.to_urdf(source)  # URDF 1.1: every origin a quat_xyzw
+    assert source.read_text().count('quat_xyzw=') == len(robot.joints)
+    robot = Robot.from_urdf(source)
+    table = DHTable.from_robot(robot, base, tip, 'modified')
+    for row in table.rows:
+        row.d += 1e-3
+    changed = robot.apply_dh(table, base, tip)
+    written = tmp_path / 'calibrated.urdf'
+    robot.to_urdf(written)
+    new_lines = set(written.read_text().splitlines()) - set(source.read_text().splitlines())
+    assert len(new_lines) == len(changed) and all('quat_xyzw=' in line and 'rpy' not in line
+                                                   for line in new_lines)
+    names = [row.name for row in table.rows]
+    configurations = _configurations(20, len(names))
+    assert _biggest(pinocchio_fk(written, base, tip, names, configurations),
+                    [numpy.array(table.flange(q)) for q in configurations]) < 1e-9
