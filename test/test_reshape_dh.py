@@ -298,8 +298,8 @@ def test_apply_dh_keeps_quaternion_origins_quaternions(tmp_path: Path) -> None:
     written = tmp_path / 'calibrated.urdf'
     robot.to_urdf(written)
     new_lines = set(written.read_text().splitlines()) - set(source.read_text().splitlines())
-    assert len(new_lines) == len(changed) and all('quat_xyzw=' in line and 'rpy' not in line
-                                                   for line in new_lines)
+    assert len(new_lines) == len(changed)
+    assert all('quat_xyzw=' in line and 'rpy' not in line for line in new_lines)
     names = [row.name for row in table.rows]
     configurations = _configurations(20, len(names))
     assert _biggest(pinocchio_fk(written, base, tip, names, configurations),
