@@ -24,7 +24,8 @@ A page asks for a part with an HTML comment on a line of its own:
 - ``<!-- generated: include FILE -->``: a file of the repository (``bench/RESULTS.md``,
   ``CHANGELOG.md``), its first heading dropped and the others one level down.
 
-Pages in ``docs/`` that ``nav`` does not list are added under "More" (new pages appear
+Sphinx roles in docstrings (``:func:`name```) are shown as the code they name. Pages in
+``docs/`` that ``nav`` does not list are added under "More" (new pages appear
 without editing mkdocs.yml; move them where they belong when you like).
 """
 
@@ -166,6 +167,14 @@ def generate(what: str, argument: str | None) -> str:
 def on_page_markdown(markdown: str, **_: Any) -> str:
     """Replace each marker by the part it names."""
     return MARKER.sub(lambda match: generate(match['what'], match['argument']), markdown)
+
+
+SPHINX_ROLE = re.compile(r':(?:py:)?(?:func|class|meth|mod|attr|data|exc|obj):(?=<code)')
+
+
+def on_page_content(html: str, **_: Any) -> str:
+    """Drop the Sphinx roles (``:func:``) the docstrings use; their names stay as code."""
+    return SPHINX_ROLE.sub('', html)
 
 
 def _listed(nav: Any) -> set[str]:

@@ -37,7 +37,7 @@ def _robot_urdf(path: Path) -> None:
 
 def _dof_xacro(path: Path) -> None:
     """Write a Xacro arm whose argument ``dof`` says how many segments it has."""
-    path.write_text('''<?xml version="1.0"?>
+    path.write_text("""<?xml version="1.0"?>
 <robot name="arm" xmlns:xacro="http://www.ros.org/wiki/xacro">
   <xacro:arg name="dof" default="6"/>
   <xacro:property name="segment_length" value="0.2"/>
@@ -68,7 +68,7 @@ def _dof_xacro(path: Path) -> None:
   <link name="base_link"/>
   <xacro:segment n="1" parent="base_link"/>
 </robot>
-''')
+""")
 
 
 def _rover_urdf(path: Path) -> None:
@@ -100,7 +100,7 @@ def _box_stl(path: Path) -> None:
 
 def _ur5_yaml(path: Path) -> None:
     """Write Universal Robots' UR5 standard DH table (UR's published figures), in degrees."""
-    path.write_text('''convention: standard
+    path.write_text("""convention: standard
 degrees: true
 tool: {xyz: [0, 0, 0.1], rpy: [0, 0, 0]}
 rows:
@@ -110,7 +110,7 @@ rows:
   - {joint: 4, a: 0, alpha: 90, d: 0.10915, lower: -360, upper: 360}
   - {joint: 5, a: 0, alpha: -90, d: 0.09465, lower: -360, upper: 360}
   - {joint: 6, a: 0, alpha: 0, d: 0.0823, lower: -360, upper: 360}
-''')
+""")
 
 
 GIVEN: dict[str, Callable[[Path], None]] = {

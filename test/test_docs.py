@@ -210,8 +210,8 @@ def test_every_page_is_found_and_every_marker_is_used() -> None:
 
 
 def test_readme_lists_every_command() -> None:
-    """README's table of commands names each command of ``urdfgenpy --help``."""
+    """The table of commands in README.md names each command of ``urdfgenpy --help``."""
     from urdfgenpy_ros.cli import main
     readme = (REPO / 'README.md').read_text(encoding='utf-8')
-    table = {match for match in re.findall(r'^\| `urdfgenpy (\w+)', readme, re.M)}
+    table = set(re.findall(r'^\| `urdfgenpy (\w+)', readme, re.M))
     assert table == set(main.commands), sorted(set(main.commands) ^ table)  # type: ignore
