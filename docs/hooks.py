@@ -52,7 +52,8 @@ KINDS = {
 
 
 def _cell(text: str) -> str:
-    """Return ``text`` safe inside a Markdown table cell."""
+    """Return ``text`` safe inside a Markdown table cell; XML tags become code."""
+    text = re.sub(r'(<[^<>]+>)+', lambda match: f'`{match[0]}`', text)
     return text.replace('|', '\\|').replace('\n', ' ')
 
 
@@ -62,12 +63,14 @@ def codes_table() -> str:
     lines: list[str] = []
     family = ''
     for code, (severity, title) in CODES.items():
+        hinted = code in PREFLIGHT_HINTS
         if code[0] != family:
             family = code[0]
             lines += ['', f'### {FAMILIES.get(family, family)}', '',
-                      '| code | severity | meaning | what to do |', '|---|---|---|---|']
-        hint = PREFLIGHT_HINTS.get(code, 'the finding line names the fix')
-        lines.append(f'| {code} | {severity.value} | {_cell(title)} | {_cell(hint)} |')
+                      '| code | severity | meaning |' + (' what to do |' if hinted else ''),
+                      '|---|---|---|' + ('---|' if hinted else '')]
+        row = f'| {code} | {severity.value} | {_cell(title)} |'
+        lines.append(row + (f' {_cell(PREFLIGHT_HINTS[code])} |' if hinted else ''))
     return '\n'.join(lines).strip() + '\n'
 
 
@@ -122,17 +125,19 @@ def parameters_table() -> str:
 
 
 def commands_help() -> str:
-    """Return every ``urdfgenpy`` command's help text, a section each."""
-    import click
+    """Return every ``urdfgenpy`` command's ``--help`` as the command prints it."""
+    from click.testing import CliRunner
 
     from urdfgenpy_ros.cli import main
     parts = []
-    group_context = click.Context(main, info_name='urdfgenpy', terminal_width=100)
-    for name in sorted(main.commands):  # type: ignore[attr-defined]
-        command = main.commands[name]  # type: ignore[attr-defined]
-        context = click.Context(command, info_name=f'urdfgenpy {name}', parent=group_context,
-                                terminal_width=100, max_content_width=100)
-        parts += [f'## `urdfgenpy {name}`', '', '```text', command.get_help(context), '```', '']
+    for name in ['', *sorted(main.commands)]:  # type: ignore[attr-defined]
+        result = CliRunner(env={'COLUMNS': '88'}).invoke(
+            main, [name, '--help'] if name else ['--help'], prog_name='urdfgenpy',
+            terminal_width=88, max_content_width=88)
+        if result.exit_code != 0:
+            raise RuntimeError(f'urdfgenpy {name} --help failed: {result.output}')
+        title = f'urdfgenpy {name}'.strip()
+        parts += [f'## `{title}`', '', '```text', result.output.rstrip(), '```', '']
     return '\n'.join(parts)
 
 

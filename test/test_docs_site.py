@@ -62,15 +62,15 @@ def test_every_page_is_built(site: Path) -> None:
         assert built.is_file(), f'{page.name} was not built'
 
 
-def test_the_code_table_lists_every_code_with_its_severity(site: Path) -> None:
+def test_the_code_table_lists_every_code_with_its_severity_and_title(site: Path) -> None:
     from urdfgenpy_ros.validation.codes import CODES
     rows = {}
     for row in etree.parse(str(site / 'validation' / 'index.html'),
                            etree.HTMLParser()).iter('tr'):
         cells = [''.join(cell.itertext()).strip() for cell in row.iter('td')]
         if cells and re.fullmatch(r'[A-Z]\d{3}', cells[0]):
-            rows[cells[0]] = cells[1]
-    assert rows == {code: severity.value for code, (severity, _) in CODES.items()}
+            rows[cells[0]] = (cells[1], cells[2])
+    assert rows == {code: (severity.value, title) for code, (severity, title) in CODES.items()}
 
 
 def test_the_parameter_table_is_what_the_node_declares(site: Path) -> None:
