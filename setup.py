@@ -63,6 +63,8 @@ setup(
             'flake8-comprehensions', 'flake8-deprecated', 'flake8-docstrings',
             'flake8-import-order', 'flake8-quotes', 'catkin-pkg',
             'graphviz', 'vtk>=9.3', 'viser>=1.0', 'selenium', 'Pillow',
+            # the documentation site, built by the tests (as the docs extra)
+            'mkdocs>=1.6', 'mkdocs-material>=9.5', 'mkdocstrings[python]>=0.26', 'ruff',
             # colcon builds of the ament_cmake description packages `urdfgenpy init` makes
             'ros-jazzy-ament-cmake',
             'ros-jazzy-ament-cmake-core',

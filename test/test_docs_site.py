@@ -27,7 +27,7 @@ import re
 import subprocess
 import sys
 
-from helpers import REPO
+from helpers import REPO, require_module
 from lxml import etree
 import pytest
 
@@ -37,12 +37,8 @@ import urdfgenpy_ros
 @pytest.fixture(scope='module')
 def site(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """Build the site once, strictly, into a scratch folder."""
-    try:
-        import material  # noqa: F401
-        import mkdocs  # noqa: F401
-        import mkdocstrings_handlers.python  # noqa: F401
-    except ImportError:
-        pytest.skip("the docs extra is not installed: pip install -e '.[docs]'")
+    for module in ('mkdocs', 'material', 'mkdocstrings_handlers.python'):
+        require_module(module)  # the docs (and test) extra; CI fails without it
     folder = tmp_path_factory.mktemp('site')
     result = subprocess.run([sys.executable, '-m', 'mkdocs', 'build', '--strict', '--site-dir',
                              str(folder)], cwd=REPO, capture_output=True, text=True,
