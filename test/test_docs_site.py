@@ -96,7 +96,7 @@ def test_the_parameter_table_is_what_the_node_declares(site: Path) -> None:
 
 
 def test_the_api_reference_documents_robot(site: Path) -> None:
-    text = _text(site / 'api' / 'index.html')
+    text = _text(site / 'api' / 'robot' / 'index.html')
     for name in ('from_urdf', 'from_xacro', 'validate', 'save', 'to_urdf', 'attach'):
         assert name in text, name
 
