@@ -104,7 +104,13 @@ def _screenshot(url: str, output: Path, timeout: float = 120.0) -> None:
             raise RuntimeError(f'the viewer at {url} drew nothing in {timeout} s')
         for button in driver.find_elements('css selector', '.mantine-Notification-root button'):
             driver.execute_script('arguments[0].click()', button)  # the WebGL notice
-        time.sleep(2.0)  # let the last frame settle
+        previous = b''
+        while time.monotonic() < deadline:  # the scene fades in: wait until it stops changing
+            time.sleep(1.0)
+            frame = canvas.screenshot_as_png
+            if frame == previous:
+                break
+            previous = frame
         output.write_bytes(driver.get_screenshot_as_png())
     finally:
         driver.quit()
