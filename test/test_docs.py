@@ -215,3 +215,12 @@ def test_readme_lists_every_command() -> None:
     readme = (REPO / 'README.md').read_text(encoding='utf-8')
     table = set(re.findall(r'^\| `urdfgenpy (\w+)', readme, re.M))
     assert table == set(main.commands), sorted(set(main.commands) ^ table)  # type: ignore
+
+
+def test_readme_links_lead_to_files_that_exist() -> None:
+    """README.md is read on the forge, outside the site: its relative links must resolve."""
+    readme = (REPO / 'README.md').read_text(encoding='utf-8')
+    targets = re.findall(r'\]\(([^)#\s]+)(?:#[^)]*)?\)', readme)
+    missing = [target for target in targets
+               if '://' not in target and not (REPO / target).exists()]
+    assert targets and not missing, missing
