@@ -130,7 +130,7 @@ def commands_help() -> str:
 
     from urdfgenpy_ros.cli import main
     parts = []
-    for name in ['', *sorted(main.commands)]:  # type: ignore[attr-defined]
+    for name in ['', *sorted(main.commands)]:
         result = CliRunner(env={'COLUMNS': '88'}).invoke(
             main, [name, '--help'] if name else ['--help'], prog_name='urdfgenpy',
             terminal_width=88, max_content_width=88)

@@ -50,3 +50,8 @@ def test_documentation_examples_type_check(tmp_path: Path) -> None:
             scripts.append(str(script))
     result = _mypy('--config-file', 'setup.cfg', *scripts)
     assert result.returncode == 0, result.stdout + result.stderr
+
+
+def test_documentation_scripts_type_check() -> None:
+    result = _mypy('--config-file', 'setup.cfg', 'docs/hooks.py', 'docs/make_pictures.py')
+    assert result.returncode == 0, result.stdout + result.stderr
