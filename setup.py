@@ -1,10 +1,18 @@
 """Install urdfgenpy_ros for colcon (ament_python) or pip."""
 
 import os
+import re
 
 from setuptools import find_packages, setup
 
 PACKAGE = 'urdfgenpy_ros'
+
+
+def _version():
+    """Return __version__ of the package, the one place the version is written."""
+    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), PACKAGE,
+                           '__init__.py'), encoding='utf-8') as init:
+        return re.search(r"^__version__ = '([^']+)'", init.read(), re.M).group(1)
 
 
 def _tree(directory):
@@ -19,7 +27,7 @@ def _tree(directory):
 
 setup(
     name=PACKAGE,
-    version='0.1.0',
+    version=_version(),
     packages=find_packages(exclude=['test', 'test.*']),
     package_data={PACKAGE: ['py.typed']},
     data_files=[
@@ -57,6 +65,8 @@ setup(
             'flake8-comprehensions', 'flake8-deprecated', 'flake8-docstrings',
             'flake8-import-order', 'flake8-quotes', 'catkin-pkg',
             'graphviz', 'vtk>=9.3', 'viser>=1.0', 'selenium', 'Pillow',
+            # the documentation site, built by the tests (as the docs extra)
+            'mkdocs>=1.6', 'mkdocs-material>=9.5', 'mkdocstrings[python]>=0.26', 'ruff',
             # colcon builds of the ament_cmake description packages `urdfgenpy init` makes
             'ros-jazzy-ament-cmake',
             'ros-jazzy-ament-cmake-core',
@@ -85,6 +95,10 @@ setup(
             'ros-jazzy-ament-package',
         ],
         'bench': ['urdfgenpy==0.4.0', 'yourdfpy', 'urdfdom-py'],
+        # the documentation site (mkdocs build --strict) and its pictures (docs/make_pictures.py)
+        # (ruff: mkdocstrings lays long signatures out on several lines with it)
+        'docs': ['mkdocs>=1.6', 'mkdocs-material>=9.5', 'mkdocstrings[python]>=0.26', 'ruff',
+                 'selenium', 'Pillow'],
     },
     zip_safe=True,
     maintainer='urdfgenpy_ros developers',

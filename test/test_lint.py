@@ -28,7 +28,7 @@ def test_flake8() -> None:
     main = require_module('ament_flake8.main').main_with_errors
     require_module('flake8_quotes')
     rc, errors = main(argv=[str(REPO / 'urdfgenpy_ros'), str(REPO / 'test'),
-                            str(REPO / 'bench'), str(REPO / 'setup.py')])
+                            str(REPO / 'bench'), str(REPO / 'docs'), str(REPO / 'setup.py')])
     assert rc == 0, f'Found {len(errors)} code style errors / warnings:\n' + '\n'.join(errors)
 
 
@@ -37,7 +37,8 @@ def test_flake8() -> None:
 def test_pep257() -> None:
     main = require_module('ament_pep257.main').main
     require_module('pydocstyle')
-    rc = main(argv=[str(REPO / 'urdfgenpy_ros'), str(REPO / 'test'), str(REPO / 'bench')])
+    rc = main(argv=[str(REPO / 'urdfgenpy_ros'), str(REPO / 'test'), str(REPO / 'bench'),
+                    str(REPO / 'docs')])
     assert rc == 0, 'Found code style errors / warnings'
 
 
@@ -49,7 +50,8 @@ def test_copyright() -> None:
     except ImportError:
         header = re.compile(r'# Copyright \d{4} .+\n#\n# Licensed under the Apache License, '
                             r'Version 2\.0')
-        missing = [str(path.relative_to(REPO)) for folder in ('urdfgenpy_ros', 'test', 'bench')
+        missing = [str(path.relative_to(REPO))
+                   for folder in ('urdfgenpy_ros', 'test', 'bench', 'docs')
                    for path in sorted((REPO / folder).rglob('*.py'))
                    if not header.match(path.read_text(encoding='utf-8'))]
         assert missing == [], 'files without the Apache-2.0 header: ' + ', '.join(missing)

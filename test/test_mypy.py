@@ -12,7 +12,7 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""The package's annotations hold, and README's examples type-check against them."""
+"""The package's annotations hold, and the Python examples of README and docs/ type-check."""
 
 from __future__ import annotations
 
@@ -23,7 +23,7 @@ import sys
 from helpers import REPO
 import pytest
 
-from test_readme import BLOCKS
+from test_docs import BLOCKS, PAGES
 
 
 def _mypy(*arguments: str) -> subprocess.CompletedProcess[str]:
@@ -37,9 +37,21 @@ def test_package_type_checks() -> None:
     assert result.returncode == 0, result.stdout + result.stderr
 
 
-def test_readme_examples_type_check(tmp_path: Path) -> None:
-    # One module, in order, as a user pasting them into one script would have it.
-    script = tmp_path / 'readme_examples.py'
-    script.write_text('\n\n'.join(BLOCKS))
-    result = _mypy('--config-file', 'setup.cfg', str(script))
+def test_documentation_examples_type_check(tmp_path: Path) -> None:
+    # One module per page, its blocks in order, as a user pasting them into one script would
+    # have it; the skipped blocks too (they are read, if not run).
+    scripts = []
+    for number, page in enumerate(PAGES):
+        code = [block.code for block in BLOCKS if block.page == page
+                and block.language == 'python']
+        if code:
+            script = tmp_path / f'page_{number}_{page.stem.replace("-", "_")}.py'
+            script.write_text(f'# {page.relative_to(REPO)}\n' + '\n\n'.join(code))
+            scripts.append(str(script))
+    result = _mypy('--config-file', 'setup.cfg', *scripts)
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+def test_documentation_scripts_type_check() -> None:
+    result = _mypy('--config-file', 'setup.cfg', 'docs/hooks.py', 'docs/make_pictures.py')
     assert result.returncode == 0, result.stdout + result.stderr

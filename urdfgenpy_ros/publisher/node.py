@@ -53,20 +53,30 @@ if TYPE_CHECKING:  # imported when needed: sensor_msgs brings numpy, not needed 
 _STRINGS = ParameterType.PARAMETER_STRING_ARRAY
 _PARAMETERS: dict[str, tuple[Any, int | None, str]] = {
     'model': ('', ParameterType.PARAMETER_STRING,
-              '.urdf, .xacro, package.module:function, or empty for the example robot'),
+              'a .urdf, .xacro/.urdf.xacro, DH table (.yaml, .csv), assembly file '
+              '(*.assembly.yaml) or package.module:function returning a Robot or URDF text; '
+              'empty: the example robot'),
     'xacro_args': ([], _STRINGS, 'xacro arguments as name:=value'),
     'package_paths': ([], _STRINGS, 'folders holding ROS packages, for $(find) and meshes'),
-    'ignore': ([], _STRINGS, "finding codes that do not stop publishing, e.g. ['I203']"),
+    'ignore': ([], _STRINGS, "finding codes that do not stop publishing, e.g. ['I203'] (the "
+               "file's own 'urdfgenpy: ignore' comments count too)"),
     'target': ('jazzy', ParameterType.PARAMETER_STRING,
                'ROS distribution whose robot_state_publisher reads the description (jazzy: '
                'URDF 1.0 only; rolling: 1.0 to 1.2)'),
     'rate': (10, None, 'joint_states per second (integer or double)'),
-    'source_list': ([], _STRINGS, 'JointState topics whose values are merged'),
-    'publish_default_positions': (True, ParameterType.PARAMETER_BOOL, ''),
-    'publish_default_velocities': (False, ParameterType.PARAMETER_BOOL, ''),
-    'publish_default_efforts': (False, ParameterType.PARAMETER_BOOL, ''),
-    'use_mimic_tags': (True, ParameterType.PARAMETER_BOOL, ''),
-    'use_smallest_joint_limits': (True, ParameterType.PARAMETER_BOOL, ''),
+    'source_list': ([], _STRINGS, 'JointState topics whose values are merged (unknown '
+                    'names, mismatched arrays and NaN are ignored with a warning)'),
+    'publish_default_positions': (True, ParameterType.PARAMETER_BOOL,
+                                  'publish positions no source gives (as joint_state_publisher)'),
+    'publish_default_velocities': (False, ParameterType.PARAMETER_BOOL,
+                                   'publish zero velocities (as joint_state_publisher)'),
+    'publish_default_efforts': (False, ParameterType.PARAMETER_BOOL,
+                                'publish zero efforts (as joint_state_publisher)'),
+    'use_mimic_tags': (True, ParameterType.PARAMETER_BOOL,
+                       'mimic joints follow their leaders (as joint_state_publisher)'),
+    'use_smallest_joint_limits': (True, ParameterType.PARAMETER_BOOL,
+                                  'clamp to the safety controller limits when tighter (as '
+                                  'joint_state_publisher)'),
     'delta': (0.0, ParameterType.PARAMETER_DOUBLE, 'move every joint by this each tick'),
     'publish_description': (True, ParameterType.PARAMETER_BOOL,
                             'false: leave robot_description to robot_state_publisher'),
