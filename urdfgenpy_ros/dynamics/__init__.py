@@ -29,7 +29,7 @@ import weakref
 
 import numpy
 
-from urdfgenpy_ros.dynamics.forward import homogeneous, jacobian as _jacobian, link_frames
+from urdfgenpy_ros.dynamics.forward import jacobian as _jacobian, link_matrices
 from urdfgenpy_ros.dynamics.forward import LinkPoses
 from urdfgenpy_ros.dynamics.gravity import gravity_torques as _gravity, mass_model
 from urdfgenpy_ros.dynamics.model import ChainModel, compile_robot, fingerprint, positions
@@ -63,8 +63,7 @@ def fk(robot: Robot, q: Any = None, base: Any = None) -> LinkPoses:
     """Return every link's 4x4 pose (N x 4 x 4 for N configurations) in the root frame."""
     model = compiled(robot)
     values, single = positions(model, q)
-    rotation, position = link_frames(model, values, base)
-    matrices = homogeneous(rotation, position)
+    matrices = link_matrices(model, values, base)
     return LinkPoses(model.links, matrices[0] if single else matrices)
 
 

@@ -28,12 +28,12 @@ import math
 
 import numpy
 
-from urdfgenpy_ros.dynamics.model import ChainModel, joint_values, PRISMATIC, REVOLUTE
+from urdfgenpy_ros.dynamics.model import ChainModel, PRISMATIC, REVOLUTE
 from urdfgenpy_ros.errors import ModelError
 
 
 class _Turns:
-    """Per-model constants of the turning joints: R_origin (a a^T, I - a a^T, [a]x)."""
+    """Per-model constants: R_origin (a a^T, I - a a^T, [a]x) of turning joints, and more."""
 
     def __init__(self, model: ChainModel) -> None:
         self.links = numpy.flatnonzero(model.motion == REVOLUTE)
@@ -45,17 +45,24 @@ class _Turns:
         cross[:, 0, 1], cross[:, 0, 2], cross[:, 1, 2] = -axis[:, 2], axis[:, 1], -axis[:, 0]
         cross[:, 1, 0], cross[:, 2, 0], cross[:, 2, 1] = axis[:, 2], -axis[:, 1], axis[:, 0]
         turned = rotation[self.links]
-        self.fixed_part = turned @ outer
-        self.cosine_part = turned - self.fixed_part
-        self.sine_part = turned @ cross
+        self.fixed_part = (turned @ outer)[:, None]
+        self.cosine_part = turned[:, None] - self.fixed_part
+        self.sine_part = (turned @ cross)[:, None]
         self.shift_axis = numpy.einsum('lij,lj->li', rotation[self.shifts],
-                                       model.axis[self.shifts])
+                                       model.axis[self.shifts])[:, None, :]
+        self.turn_values = tuple(part[self.links] for part in (
+            model.source, model.multiplier[:, None], model.offset[:, None]))
+        self.shift_values = tuple(part[self.shifts] for part in (
+            model.source, model.multiplier[:, None], model.offset[:, None]))
+        self.origin = model.origin[:, None]
         count = len(model.links)
+        self.parent = [int(number) for number in model.parent]
         self.pointer = numpy.append(numpy.where(model.parent >= 0, model.parent, count), count)
         self.steps = math.ceil(math.log2(model.depth + 1)) if model.depth else 0
 
 
 _TURNS: dict[int, tuple[ChainModel, _Turns]] = {}
+JUMPING_BELOW = 16  # configurations: fewer are composed by pointer jumping, more link by link
 
 
 def _turns(model: ChainModel) -> _Turns:
@@ -67,49 +74,50 @@ def _turns(model: ChainModel) -> _Turns:
     return cached[1]
 
 
-def link_frames(model: ChainModel, q: numpy.ndarray, base: numpy.ndarray | None = None
-                ) -> tuple[numpy.ndarray, numpy.ndarray]:
+def link_matrices(model: ChainModel, q: numpy.ndarray, base: numpy.ndarray | None = None
+                  ) -> numpy.ndarray:
     """
-    Return every link's rotation (N, L, 3, 3) and position (N, L, 3) in the root frame.
+    Return every link's 4x4 pose in the root frame, an (N, L, 4, 4) array.
 
     ``q`` is an (N, dof) array over ``model.movable``; ``base``, a 4x4 pose of the root
     (default: the identity), puts the root there instead.
     """
     turns = _turns(model)
-    values = joint_values(model, q)
     count, links = q.shape[0], len(model.links)
-    rotation = numpy.empty((count, links + 1, 3, 3))
-    rotation[:, :links] = model.origin[:, :3, :3]
-    rotation[:, links] = numpy.eye(3)
-    position = numpy.zeros((count, links + 1, 3))
-    position[:, :links] = model.origin[:, :3, 3]
+    few = count < JUMPING_BELOW
+    poses = numpy.empty((links + few, count, 4, 4))  # links first: each a contiguous block
+    poses[:links] = turns.origin
     if len(turns.links):
-        angle = values[:, turns.links][:, :, None, None]
-        rotation[:, turns.links] = (turns.fixed_part + numpy.cos(angle) * turns.cosine_part
-                                    + numpy.sin(angle) * turns.sine_part)
+        source, multiplier, offset = turns.turn_values
+        angle = (q[:, source].T * multiplier + offset)[:, :, None, None]
+        poses[turns.links, :, :3, :3] = (turns.fixed_part + numpy.cos(angle) * turns.cosine_part
+                                         + numpy.sin(angle) * turns.sine_part)
     if len(turns.shifts):
-        position[:, turns.shifts] += values[:, turns.shifts, None] * turns.shift_axis
+        source, multiplier, offset = turns.shift_values
+        value = q[:, source].T * multiplier + offset
+        poses[turns.shifts, :, :3, 3] += value[:, :, None] * turns.shift_axis
     if base is not None:
         pose = numpy.asarray(base, dtype=float)
         if pose.shape != (4, 4):
             raise ModelError(f'base must be a 4x4 pose, got shape {pose.shape}')
-        rotation[:, 0], position[:, 0] = pose[:3, :3], pose[:3, 3]  # the root comes first
-    pointer = turns.pointer
-    for _ in range(turns.steps):
-        above = rotation[:, pointer]
-        position = numpy.einsum('nlij,nlj->nli', above, position) + position[:, pointer]
-        rotation = above @ rotation
-        pointer = pointer[pointer]
-    return rotation[:, :links], position[:, :links]
+        poses[0] = pose  # the root comes first; its own origin is the identity
+    if few:  # a few products of every link at once
+        poses[links] = numpy.eye(4)
+        pointer = turns.pointer
+        for _ in range(turns.steps):
+            poses = poses[pointer] @ poses
+            pointer = pointer[pointer]
+        return numpy.swapaxes(poses[:links], 0, 1)
+    for link in range(1, links):  # parents come first: each is already in the root frame
+        numpy.matmul(poses[turns.parent[link]], poses[link], out=poses[link])
+    return numpy.swapaxes(poses, 0, 1)
 
 
-def homogeneous(rotation: numpy.ndarray, position: numpy.ndarray) -> numpy.ndarray:
-    """Return 4x4 transforms (..., 4, 4) of rotations (..., 3, 3) and positions (..., 3)."""
-    matrix = numpy.zeros((*rotation.shape[:-2], 4, 4))
-    matrix[..., :3, :3] = rotation
-    matrix[..., :3, 3] = position
-    matrix[..., 3, 3] = 1.0
-    return matrix
+def link_frames(model: ChainModel, q: numpy.ndarray, base: numpy.ndarray | None = None
+                ) -> tuple[numpy.ndarray, numpy.ndarray]:
+    """Return every link's rotation (N, L, 3, 3) and position (N, L, 3) in the root frame."""
+    poses = link_matrices(model, q, base)
+    return poses[..., :3, :3], poses[..., :3, 3]
 
 
 class LinkPoses(Mapping[str, numpy.ndarray]):

@@ -26,6 +26,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 import math
+import operator
 from typing import Any
 
 import numpy
@@ -121,11 +122,13 @@ def compile_robot(robot: Robot) -> ChainModel:
                       int(depth.max()) if count else 0)
 
 
+_JOINT_FIELDS = operator.attrgetter('name', 'type', 'parent', 'child', 'origin', 'axis',
+                                    'mimic')
+
+
 def fingerprint(robot: Robot) -> tuple:
     """Return what the compiled arrays depend on; equal fingerprints, equal arrays."""
-    return (tuple([(joint.name, joint.type, joint.parent, joint.child, joint.origin,
-                    joint.axis, joint.mimic) for joint in robot.joints]),
-            tuple(robot._links))
+    return (tuple(map(_JOINT_FIELDS, robot.joints)), tuple(link.name for link in robot.links))
 
 
 def positions(model: ChainModel, q: Any) -> tuple[numpy.ndarray, bool]:
@@ -156,11 +159,3 @@ def positions(model: ChainModel, q: Any) -> tuple[numpy.ndarray, bool]:
     raise ModelError(f'q has shape {values.shape}: give {dof} values in robot.movable_joints '
                      f'order ({", ".join(model.movable)}), an (N, {dof}) array, or a mapping '
                      'of joint names')
-
-
-def joint_values(model: ChainModel, q: numpy.ndarray) -> numpy.ndarray:
-    """Return the (N, L) value of every link's joint (0 for fixed ones and the root)."""
-    moved = model.source >= 0
-    values = numpy.zeros((q.shape[0], len(model.links)))
-    values[:, moved] = q[:, model.source[moved]] * model.multiplier[moved] + model.offset[moved]
-    return values
