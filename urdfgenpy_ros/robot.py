@@ -519,7 +519,7 @@ class Robot:
 
     def fk(self, q: Any = None, base: Any = None) -> Any:
         """
-        Return every link's pose in the root frame: ``robot.fk(q)['tool0']`` is 4x4.
+        Return every link's pose in the root frame, e.g. a 4x4 ``poses['tool0']``.
 
         ``q``: a mapping of joint names (missing ones 0), an array over
         :attr:`movable_joints`, or an (N, dof) array, which gives N x 4 x 4 poses. Mimic

@@ -13,12 +13,12 @@
 # limitations under the License.
 
 """
-Kinematics and statics of a robot, vectorised with numpy: what ``robot.fk``,
-``robot.jacobian`` and ``robot.gravity_torques`` call.
+Kinematics and statics of a robot, vectorised with numpy.
 
-The robot is compiled to arrays once (:mod:`.model`) and again only when its joints or
-links change. ``q`` is a mapping of joint names, an array over :func:`movable_joints`,
-or an (N, dof) array of configurations, which gives N results at once.
+What ``robot.fk``, ``robot.jacobian`` and ``robot.gravity_torques`` call. The robot is
+compiled to arrays once (:mod:`.model`) and again only when its joints or links change.
+``q`` is a mapping of joint names, an array over :func:`movable_joints`, or an (N, dof)
+array of configurations, which gives N results at once.
 """
 
 from __future__ import annotations

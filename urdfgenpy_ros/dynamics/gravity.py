@@ -94,7 +94,7 @@ def subtree_matrix(model: ChainModel) -> numpy.ndarray:
 
 
 def gravity_torques(model: ChainModel, masses: MassModel, q: numpy.ndarray,
-                    gravity: Sequence[float] = (0.0, 0.0, -9.81),
+                    gravity: Sequence[float] | numpy.ndarray = (0.0, 0.0, -9.81),
                     subtree: numpy.ndarray | None = None) -> numpy.ndarray:
     """Return the (N, dof) torques (N m) or forces (N) that hold the robot at ``q``."""
     g = numpy.asarray(gravity, dtype=float)

@@ -119,7 +119,7 @@ def compile_robot(robot: Robot) -> ChainModel:
     return ChainModel(tuple(link.name for _, link in order),
                       tuple(joint.name if joint is not None else None for joint, _ in order),
                       parent, origin, axis, motion, source, multiplier, offset, movable,
-                      int(depth.max()) if count else 0)
+                      int(numpy.max(depth)) if count else 0)
 
 
 _JOINT_FIELDS = operator.attrgetter('name', 'type', 'parent', 'child', 'origin', 'axis',

@@ -100,7 +100,7 @@ class _Torque:
 def _grid(bounds: numpy.ndarray, columns: list[int], base: numpy.ndarray) -> numpy.ndarray:
     """Return the starting grid: evenly spaced over the columns, ends included."""
     per = max(2, int(GRID_POINTS ** (1.0 / len(columns))))
-    axes = [numpy.linspace(*bounds[column], per) for column in columns]
+    axes = [numpy.linspace(bounds[column, 0], bounds[column, 1], per) for column in columns]
     points = numpy.array(list(itertools.product(*axes)))
     grid = numpy.repeat(base[None, :], len(points), axis=0)
     grid[:, columns] = points
@@ -133,8 +133,8 @@ def worst_case(model: ChainModel, masses: MassModel, bounds: numpy.ndarray, colu
     size = numpy.abs(torque(grid))
     seeds = grid[numpy.argsort(-size, kind='stable')[:SEEDS]].copy()
     best = numpy.abs(torque(seeds))
-    turning = set(int(model.source[link]) for link in numpy.flatnonzero(
-        model.motion == REVOLUTE))
+    turning = {int(model.source[link])
+               for link in numpy.flatnonzero(model.motion == REVOLUTE)}
     for _ in range(SWEEPS):
         before = best.copy()
         for moved in columns:
@@ -152,7 +152,7 @@ def worst_case(model: ChainModel, masses: MassModel, bounds: numpy.ndarray, colu
             best = numpy.maximum(best, values[numpy.arange(len(seeds)), pick])
         if (best - before).max() <= 1e-12 * max(1.0, float(best.max())):
             break
-    winner = seeds[int(best.argmax())]
+    winner = seeds[int(numpy.argmax(best))]
     value = float(torque(winner[None, :])[0])
     return WorstCase(model.movable[column], value,
                      {model.movable[moved]: float(winner[moved]) for moved in columns})
