@@ -26,7 +26,7 @@ joins them, for mimic joints whose torque has several frequencies.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 import itertools
 import math
 
@@ -39,7 +39,7 @@ from urdfgenpy_ros.robot import Robot
 
 GRID_POINTS = 4096
 SEEDS = 6
-SAMPLES = 33
+SAMPLES = 17
 SWEEPS = 12
 
 
@@ -68,27 +68,50 @@ def ranges(robot: Robot, model: ChainModel) -> numpy.ndarray:
     return bounds
 
 
-def relevant(model: ChainModel, column: int) -> list[int]:
-    """Return the columns of ``q`` that change the torque of column ``column``."""
+def relevant_links(model: ChainModel, column: int) -> numpy.ndarray:
+    """Return the links column ``column`` carries, those above them and those below."""
     carried = numpy.flatnonzero(model.source == column)
-    linked: set[int] = set()
     below = subtree_matrix(model)
+    kept = numpy.zeros(len(model.links), dtype=bool)
     for link in carried:
         current = int(link)
-        while current >= 0:  # the joints above it, and it
-            if model.source[current] >= 0:
-                linked.add(int(model.source[current]))
+        while current >= 0:
+            kept[current] = True
             current = int(model.parent[current])
-        moved = numpy.flatnonzero(below[link] > 0)
-        linked.update(int(value) for value in model.source[moved] if value >= 0)
-    return sorted(linked)
+        kept |= below[link] > 0
+    return numpy.flatnonzero(kept)
+
+
+def relevant(model: ChainModel, column: int) -> list[int]:
+    """Return the columns of ``q`` that change the torque of column ``column``."""
+    sources = model.source[relevant_links(model, column)]
+    return sorted({int(value) for value in sources if value >= 0})
+
+
+def _restricted(model: ChainModel, masses: MassModel, links: numpy.ndarray
+                ) -> tuple[ChainModel, MassModel]:
+    """Return the model of ``links`` only (closed under parents: the root stays first)."""
+    renumber = numpy.full(len(model.links) + 1, -1, dtype=numpy.intp)
+    renumber[links] = numpy.arange(len(links))
+    parent = renumber[model.parent[links]]
+    depth = numpy.zeros(len(links), dtype=numpy.intp)
+    for number in range(1, len(links)):
+        depth[number] = depth[parent[number]] + 1
+    smaller = replace(model, links=tuple(model.links[link] for link in links),
+                      joints=tuple(model.joints[link] for link in links), parent=parent,
+                      origin=model.origin[links], axis=model.axis[links],
+                      motion=model.motion[links], source=model.source[links],
+                      multiplier=model.multiplier[links], offset=model.offset[links],
+                      depth=int(numpy.max(depth)) if len(links) else 0)
+    return smaller, MassModel(masses.mass[links], masses.moment[links])
 
 
 class _Torque:
-    """The torque of one column at many configurations, counted as it is evaluated."""
+    """The torque of one column at many configurations, on the links that change it."""
 
     def __init__(self, model: ChainModel, masses: MassModel, gravity: numpy.ndarray,
                  column: int) -> None:
+        model, masses = _restricted(model, masses, relevant_links(model, column))
         self.model, self.masses, self.gravity, self.column = model, masses, gravity, column
         self.below = subtree_matrix(model)
 
@@ -98,10 +121,15 @@ class _Torque:
 
 
 def _grid(bounds: numpy.ndarray, columns: list[int], base: numpy.ndarray) -> numpy.ndarray:
-    """Return the starting grid: evenly spaced over the columns, ends included."""
-    per = max(2, int(GRID_POINTS ** (1.0 / len(columns))))
-    axes = [numpy.linspace(bounds[column, 0], bounds[column, 1], per) for column in columns]
-    points = numpy.array(list(itertools.product(*axes)))
+    """Return the starting points: a grid with the ends, or random ones for many joints."""
+    per = int(GRID_POINTS ** (1.0 / len(columns)) + 1e-9)
+    if per >= 2:
+        axes = [numpy.linspace(bounds[column, 0], bounds[column, 1], per)
+                for column in columns]
+        points = numpy.array(list(itertools.product(*axes)))
+    else:  # 13 joints or more: 2 values each would be too many points
+        points = numpy.random.default_rng(0).uniform(
+            bounds[columns, 0], bounds[columns, 1], (GRID_POINTS, len(columns)))
     grid = numpy.repeat(base[None, :], len(points), axis=0)
     grid[:, columns] = points
     return grid
