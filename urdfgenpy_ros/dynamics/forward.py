@@ -55,6 +55,7 @@ class _Turns:
         self.shift_values = tuple(part[self.shifts] for part in (
             model.source, model.multiplier[:, None], model.offset[:, None]))
         self.origin = model.origin[:, None]
+        self.stacked = numpy.concatenate([model.origin, numpy.eye(4)[None]])[:, None]
         count = len(model.links)
         self.parent = [int(number) for number in model.parent]
         self.pointer = numpy.append(numpy.where(model.parent >= 0, model.parent, count), count)
@@ -85,8 +86,11 @@ def link_matrices(model: ChainModel, q: numpy.ndarray, base: numpy.ndarray | Non
     turns = _turns(model)
     count, links = q.shape[0], len(model.links)
     few = count < JUMPING_BELOW
-    poses = numpy.empty((links + few, count, 4, 4))  # links first: each a contiguous block
-    poses[:links] = turns.origin
+    if few:  # and the identity after the links, where the root's pointer points
+        poses = turns.stacked.repeat(count, axis=1)
+    else:  # links first: each a contiguous block
+        poses = numpy.empty((links, count, 4, 4))
+        poses[:] = turns.origin
     if len(turns.links):
         source, multiplier, offset = turns.turn_values
         angle = (q[:, source].T * multiplier + offset)[:, :, None, None]
@@ -102,7 +106,6 @@ def link_matrices(model: ChainModel, q: numpy.ndarray, base: numpy.ndarray | Non
             raise ModelError(f'base must be a 4x4 pose, got shape {pose.shape}')
         poses[0] = pose  # the root comes first; its own origin is the identity
     if few:  # a few products of every link at once
-        poses[links] = numpy.eye(4)
         pointer = turns.pointer
         for _ in range(turns.steps):
             poses = poses[pointer] @ poses

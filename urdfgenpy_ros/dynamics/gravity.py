@@ -51,12 +51,12 @@ def mass_model(robot: Robot, model: ChainModel, payload: Mapping[str, object] | 
     ``payload`` is ``{'link': 'tool0', 'mass': 2.0, 'com': (0, 0, 0.05)}`` (``com`` in the
     link's frame, default its origin).
     """
-    mass, moment = numpy.zeros(len(model.links)), numpy.zeros((len(model.links), 3))
-    for number, name in enumerate(model.links):
-        inertial = robot.get_link(name).inertial
-        if inertial is not None:
-            mass[number] = inertial.mass
-            moment[number] = numpy.multiply(inertial.mass, inertial.origin.xyz)
+    links = {link.name: link.inertial for link in robot.links}
+    values = numpy.array([(inertial.mass, *inertial.origin.xyz) if inertial is not None
+                          else (0.0, 0.0, 0.0, 0.0)
+                          for inertial in map(links.__getitem__, model.links)], dtype=float)
+    mass = values[:, 0].copy()
+    moment = values[:, 1:] * values[:, :1]
     if payload is not None:
         number, weight, com = _payload(model, payload)
         mass[number] += weight
@@ -84,34 +84,24 @@ def _payload(model: ChainModel, payload: Mapping[str, object]
     return model.links.index(str(link)), weight, com
 
 
-def subtree_matrix(model: ChainModel) -> numpy.ndarray:
-    """Return S (L, L): S[j, b] = 1 when link b is link j or below it."""
-    count = len(model.links)
-    below = numpy.eye(count)
-    for number in range(count - 1, 0, -1):  # children come after their parents
-        below[model.parent[number]] += below[number]
-    return below
-
-
 def gravity_torques(model: ChainModel, masses: MassModel, q: numpy.ndarray,
-                    gravity: Sequence[float] | numpy.ndarray = (0.0, 0.0, -9.81),
-                    subtree: numpy.ndarray | None = None) -> numpy.ndarray:
+                    gravity: Sequence[float] | numpy.ndarray = (0.0, 0.0, -9.81)
+                    ) -> numpy.ndarray:
     """Return the (N, dof) torques (N m) or forces (N) that hold the robot at ``q``."""
     g = numpy.asarray(gravity, dtype=float)
     if g.shape != (3,):
         raise ModelError(f'gravity must be three numbers (m/s^2), got {gravity!r}')
     rotation, position = link_frames(model, q)
-    below = subtree_matrix(model) if subtree is None else subtree
     first = (masses.mass[:, None] * position
              + numpy.einsum('nlij,lj->nli', rotation, masses.moment))
-    moving = numpy.flatnonzero(model.source >= 0)
-    held_moment = below[moving] @ first  # (N, moving, 3)
-    held_mass = below[moving] @ masses.mass
+    moving = model.moving
+    held = model.below[moving]
+    held_moment = held @ first  # (N, moving, 3)
+    held_mass = held @ masses.mass
     axes = numpy.einsum('nkij,kj->nki', rotation[:, moving], model.axis[moving])
     lever = held_moment - held_mass[:, None] * position[:, moving]
-    turning = numpy.einsum('nki,nki->nk', axes, numpy.cross(lever, g))
+    across = numpy.array([[0.0, -g[2], g[1]], [g[2], 0.0, -g[0]], [-g[1], g[0], 0.0]])
+    turning = numpy.einsum('nki,nki->nk', lever, axes @ across.T)  # z.(l x g) = l.(g x z)
     sliding = held_mass * (axes @ g)
     torque = -numpy.where(model.motion[moving] == REVOLUTE, turning, sliding)
-    spread = numpy.zeros((len(moving), len(model.movable)))
-    spread[numpy.arange(len(moving)), model.source[moving]] = model.multiplier[moving]
-    return torque @ spread
+    return torque @ model.spread

@@ -25,6 +25,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import cached_property
 import math
 import operator
 from typing import Any
@@ -70,6 +71,28 @@ class ChainModel:
     def index(self) -> dict[str, int]:
         """Return each link's position in :attr:`links`."""
         return {name: number for number, name in enumerate(self.links)}
+
+    @cached_property
+    def below(self) -> numpy.ndarray:
+        """Return S (L, L): S[j, b] = 1 when link b is link j or below it."""
+        count = len(self.links)
+        below = numpy.eye(count)
+        for number in range(count - 1, 0, -1):  # children come after their parents
+            below[self.parent[number]] += below[number]
+        return below
+
+    @cached_property
+    def moving(self) -> numpy.ndarray:
+        """Return the links a movable joint (or a mimic one) carries."""
+        return numpy.flatnonzero(self.source >= 0)
+
+    @cached_property
+    def spread(self) -> numpy.ndarray:
+        """Return (moving, dof): each moving link's multiplier in its column of ``q``."""
+        spread = numpy.zeros((len(self.moving), len(self.movable)))
+        spread[numpy.arange(len(self.moving)), self.source[self.moving]] = \
+            self.multiplier[self.moving]
+        return spread
 
 
 def _leader(joint: Joint, joints: Mapping[str, Joint]) -> tuple[str, float, float]:

@@ -32,7 +32,7 @@ import math
 
 import numpy
 
-from urdfgenpy_ros.dynamics.gravity import gravity_torques, MassModel, subtree_matrix
+from urdfgenpy_ros.dynamics.gravity import gravity_torques, MassModel
 from urdfgenpy_ros.dynamics.model import ChainModel, PRISMATIC, REVOLUTE
 from urdfgenpy_ros.joint import JointType
 from urdfgenpy_ros.robot import Robot
@@ -71,7 +71,7 @@ def ranges(robot: Robot, model: ChainModel) -> numpy.ndarray:
 def relevant_links(model: ChainModel, column: int) -> numpy.ndarray:
     """Return the links column ``column`` carries, those above them and those below."""
     carried = numpy.flatnonzero(model.source == column)
-    below = subtree_matrix(model)
+    below = model.below
     kept = numpy.zeros(len(model.links), dtype=bool)
     for link in carried:
         current = int(link)
@@ -113,11 +113,9 @@ class _Torque:
                  column: int) -> None:
         model, masses = _restricted(model, masses, relevant_links(model, column))
         self.model, self.masses, self.gravity, self.column = model, masses, gravity, column
-        self.below = subtree_matrix(model)
 
     def __call__(self, q: numpy.ndarray) -> numpy.ndarray:
-        return gravity_torques(self.model, self.masses, q, self.gravity,
-                               self.below)[:, self.column]
+        return gravity_torques(self.model, self.masses, q, self.gravity)[:, self.column]
 
 
 def _grid(bounds: numpy.ndarray, columns: list[int], base: numpy.ndarray) -> numpy.ndarray:
