@@ -23,7 +23,11 @@ pinocchio (test_dynamics.py), here also with a payload pinocchio carries on the 
 from __future__ import annotations
 
 import itertools
+import os
 from pathlib import Path
+import re
+import subprocess
+import sys
 
 from click.testing import CliRunner
 from helpers import require_module
@@ -273,3 +277,22 @@ def test_sarif_names_the_statics_rules(tmp_path: Path) -> None:
     rules = json.loads(result.output)['runs'][0]['tool']['driver']['rules']
     assert any(rule['id'] == 'T801' and 'gravity' in rule['shortDescription']['text']
                for rule in rules)
+
+
+def test_the_docs_page_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    repository = Path(__file__).resolve().parents[1]
+    page = (repository / 'docs' / 'kinematics-and-statics.md').read_text()
+    blocks = re.findall(r'```(python|bash)\n(.*?)```', page, re.S)
+    assert len(blocks) >= 8
+    monkeypatch.chdir(tmp_path)
+    environment = {**os.environ, 'PYTHONPATH': str(repository),
+                   'PATH': f'{Path(sys.executable).parent}{os.pathsep}{os.environ["PATH"]}'}
+    namespace: dict = {}
+    for language, code in blocks:
+        if language == 'python':
+            exec(compile(code, 'kinematics-and-statics.md', 'exec'), namespace)
+        else:
+            result = subprocess.run(['bash', '-ec', code], capture_output=True, text=True,
+                                    env=environment, check=False)
+            assert result.returncode == 0, result.stderr
+            assert 'T801' in result.stdout

@@ -65,8 +65,8 @@ def check_statics(robot: Robot, findings: Findings,
         unit = 'N' if is_prismatic(model, column) else 'N m'
         findings.add('T801', limit, f'joint {name!r}', joint_path(name) + '/limit',
                      _message(worst, unit, limit.effort, payload, held),
-                     f'set effort="{_round_up(need)}" or more (the worst torque times margin '
-                     f'{margin:g}), or check the masses it holds up', 'limit')
+                     f'set effort="{_round_up(need)}" or more: the worst torque times margin '
+                     f'{margin:g}; or check the masses it holds up', 'limit')
 
 
 def _held(robot: Robot) -> str:
