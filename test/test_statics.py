@@ -23,6 +23,7 @@ pinocchio (test_dynamics.py), here also with a payload pinocchio carries on the 
 from __future__ import annotations
 
 import itertools
+import math
 import os
 from pathlib import Path
 import re
@@ -30,7 +31,7 @@ import subprocess
 import sys
 
 from click.testing import CliRunner
-from helpers import require_module
+from helpers import corpus_cases, corpus_file, require_module
 import numpy
 import pytest
 
@@ -296,3 +297,29 @@ def test_the_docs_page_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> 
                                     env=environment, check=False)
             assert result.returncode == 0, result.stderr
             assert 'T801' in result.stdout
+
+
+@pytest.mark.parametrize('name', corpus_cases(['pr2']))
+def test_pr2_shoulders_need_their_counterbalance(name: str) -> None:
+    """PR2's shoulder lift holds its arm with a spring: 30 N m of motor cannot alone."""
+    pin = require_module('pinocchio')
+    robot = Robot.from_urdf(corpus_file('urdf/urdf/test/pr2_desc.urdf'))
+    found = {finding.element: finding for finding in robot.validate(
+        statics=True, check_meshes=False) if finding.code == 'T801'}
+    assert sorted(found) == ["joint 'l_shoulder_lift_joint'", "joint 'r_shoulder_lift_joint'"]
+    model = pin.buildModelFromXML(robot.to_urdf())
+    data = model.createData()
+    for finding in found.values():
+        pose = dict(part.split('=') for part in
+                    finding.message.split(' at ', 1)[1].split(';', 1)[0].split(', '))
+        q = pin.neutral(model)
+        for joint, value in pose.items():
+            index = model.joints[model.getJointId(joint)]
+            turn = float(value)
+            q[index.idx_q:index.idx_q + index.nq] = (
+                (math.cos(turn), math.sin(turn)) if index.nq == 2 else turn)  # continuous
+        torque = pin.computeGeneralizedGravity(model, data, q)
+        joint = finding.element.split("'")[1]
+        needed = float(finding.message.split('needs ', 1)[1].split(' ', 1)[0])
+        assert abs(torque[model.joints[model.getJointId(joint)].idx_v]) == pytest.approx(
+            needed, rel=1e-3)  # the pose as printed, to 4 decimals

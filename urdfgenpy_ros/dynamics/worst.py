@@ -181,7 +181,19 @@ def worst_case(model: ChainModel, masses: MassModel, bounds: numpy.ndarray, colu
     winner = seeds[int(numpy.argmax(best))]
     value = float(torque(winner[None, :])[0])
     return WorstCase(model.movable[column], value,
-                     {model.movable[moved]: float(winner[moved]) for moved in columns})
+                     {model.movable[moved]: float(winner[moved])
+                      for moved in _mattering(torque, winner, bounds, columns, value)})
+
+
+def _mattering(torque: _Torque, winner: numpy.ndarray, bounds: numpy.ndarray,
+               columns: list[int], value: float) -> list[int]:
+    """Return the columns whose value changes the torque at ``winner`` (not a pan, a lift)."""
+    probes = numpy.repeat(winner[None, :], 5 * len(columns), axis=0)
+    for number, moved in enumerate(columns):
+        probes[5 * number:5 * number + 5, moved] = numpy.linspace(*bounds[moved], 5)
+    change = numpy.abs(torque(probes) - value).reshape(len(columns), 5).max(axis=1)
+    return [moved for moved, amount in zip(columns, change)
+            if amount > 1e-9 * max(abs(value), 1e-9)]
 
 
 def is_prismatic(model: ChainModel, column: int) -> bool:
