@@ -190,7 +190,8 @@ def _mattering(torque: _Torque, winner: numpy.ndarray, bounds: numpy.ndarray,
     """Return the columns whose value changes the torque at ``winner`` (not a pan, a lift)."""
     probes = numpy.repeat(winner[None, :], 5 * len(columns), axis=0)
     for number, moved in enumerate(columns):
-        probes[5 * number:5 * number + 5, moved] = numpy.linspace(*bounds[moved], 5)
+        probes[5 * number:5 * number + 5, moved] = numpy.linspace(bounds[moved, 0],
+                                                                  bounds[moved, 1], 5)
     change = numpy.abs(torque(probes) - value).reshape(len(columns), 5).max(axis=1)
     return [moved for moved, amount in zip(columns, change)
             if amount > 1e-9 * max(abs(value), 1e-9)]
