@@ -92,16 +92,18 @@ def gravity_torques(model: ChainModel, masses: MassModel, q: numpy.ndarray,
     if g.shape != (3,):
         raise ModelError(f'gravity must be three numbers (m/s^2), got {gravity!r}')
     rotation, position = link_frames(model, q)
-    first = (masses.mass[:, None] * position
-             + numpy.einsum('nlij,lj->nli', rotation, masses.moment))
+    count, links = position.shape[:2]
+    first = masses.mass[:, None] * position + (rotation @ masses.moment[:, :, None])[..., 0]
     moving = model.moving
     held = model.below[moving]
-    held_moment = held @ first  # (N, moving, 3)
+    # the first moment of everything each joint holds: one product for all configurations
+    held_moment = (held @ first.transpose(1, 0, 2).reshape(links, 3 * count)).reshape(
+        len(moving), count, 3).transpose(1, 0, 2)
     held_mass = held @ masses.mass
-    axes = numpy.einsum('nkij,kj->nki', rotation[:, moving], model.axis[moving])
+    axes = (rotation[:, moving] @ model.axis[moving][:, :, None])[..., 0]
     lever = held_moment - held_mass[:, None] * position[:, moving]
     across = numpy.array([[0.0, -g[2], g[1]], [g[2], 0.0, -g[0]], [-g[1], g[0], 0.0]])
-    turning = numpy.einsum('nki,nki->nk', lever, axes @ across.T)  # z.(l x g) = l.(g x z)
+    turning = (lever * (axes @ across.T)).sum(axis=2)  # z.(l x g) = l.(g x z)
     sliding = held_mass * (axes @ g)
     torque = -numpy.where(model.motion[moving] == REVOLUTE, turning, sliding)
     return torque @ model.spread
