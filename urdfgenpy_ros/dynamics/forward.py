@@ -58,8 +58,11 @@ class _Turns:
         self.stacked = numpy.concatenate([model.origin, numpy.eye(4)[None]])[:, None]
         count = len(model.links)
         self.parent = [int(number) for number in model.parent]
-        self.pointer = numpy.append(numpy.where(model.parent >= 0, model.parent, count), count)
-        self.steps = math.ceil(math.log2(model.depth + 1)) if model.depth else 0
+        pointer = numpy.append(numpy.where(model.parent >= 0, model.parent, count), count)
+        self.pointers: list[numpy.ndarray] = []  # where each link points, step by step
+        for _ in range(math.ceil(math.log2(model.depth + 1)) if model.depth else 0):
+            self.pointers.append(pointer)
+            pointer = pointer[pointer]
 
 
 _TURNS: dict[int, tuple[ChainModel, _Turns]] = {}
@@ -106,10 +109,8 @@ def link_matrices(model: ChainModel, q: numpy.ndarray, base: numpy.ndarray | Non
             raise ModelError(f'base must be a 4x4 pose, got shape {pose.shape}')
         poses[0] = pose  # the root comes first; its own origin is the identity
     if few:  # a few products of every link at once
-        pointer = turns.pointer
-        for _ in range(turns.steps):
+        for pointer in turns.pointers:
             poses = poses[pointer] @ poses
-            pointer = pointer[pointer]
         return numpy.swapaxes(poses[:links], 0, 1)
     for link in range(1, links):  # parents come first: each is already in the root frame
         numpy.matmul(poses[turns.parent[link]], poses[link], out=poses[link])
