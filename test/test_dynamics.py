@@ -205,6 +205,10 @@ def test_an_edited_robot_is_compiled_again() -> None:
     robot.get_joint('e').origin = Origin((-0.1, 0, 0.5), (0, 0.5, 0))
     after = robot.fk([0.1, 0.2, 0.3])['link_g']
     assert after[2, 3] != pytest.approx(before[2, 3])
+    robot.get_joint('e').type = 'fixed'
+    assert robot.movable_joints == ['a', 'b']
+    robot.get_joint('e').type = 'revolute'
+    assert robot.movable_joints == ['a', 'b', 'e']
     robot.get_link('link_d').inertial.mass = 5.0  # masses are read on every call
     heavier = robot.gravity_torques([0.1, 0.2, 0.3])
     robot.get_link('link_d').inertial.mass = 0.5

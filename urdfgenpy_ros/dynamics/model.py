@@ -145,13 +145,17 @@ def compile_robot(robot: Robot) -> ChainModel:
                       int(numpy.max(depth)) if count else 0)
 
 
-_JOINT_FIELDS = operator.attrgetter('name', 'type', 'parent', 'child', 'origin', 'axis',
-                                    'mimic')
+_JOINT_FIELDS = operator.attrgetter('name', 'parent', 'child', 'origin', 'axis', 'mimic')
+# Joint.type's stored value, read past the descriptor that checks what is set (no Python call)
+_JOINT_TYPE = getattr(vars(Joint)['type'], '_get', operator.attrgetter('type'))
+_NAME = operator.attrgetter('name')
 
 
 def fingerprint(robot: Robot) -> tuple:
     """Return what the compiled arrays depend on; equal fingerprints, equal arrays."""
-    return (tuple(map(_JOINT_FIELDS, robot.joints)), tuple(link.name for link in robot.links))
+    joints = robot.joints
+    return (tuple(map(_JOINT_FIELDS, joints)), tuple(map(_JOINT_TYPE, joints)),
+            tuple(map(_NAME, robot.links)))
 
 
 def positions(model: ChainModel, q: Any) -> tuple[numpy.ndarray, bool]:
