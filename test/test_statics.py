@@ -213,6 +213,12 @@ def test_payload_option_and_ignore(tmp_path: Path) -> None:
     result = CliRunner().invoke(main, ['check', '--statics', '--payload', '0.5@link_2',
                                        '--ignore', 'T801', '--no-meshes', str(path)])
     assert result.exit_code == 0, result.output
+    text = path.read_text().replace('<joint name="joint_1"',
+                                    '<!-- urdfgenpy: ignore T801 -->\n  <joint name="joint_1"')
+    path.write_text(text)
+    result = CliRunner().invoke(main, ['check', '--statics', '--payload', '0.5@link_2',
+                                       '--no-meshes', str(path)])
+    assert result.exit_code == 0 and '1 suppressed' in result.output, result.output
     result = CliRunner().invoke(main, ['check', '--payload', '0.5@link_2', str(path)])
     assert result.exit_code == 2 and '--statics' in result.output
     result = CliRunner().invoke(main, ['check', '--statics', '--payload', 'heavy',
