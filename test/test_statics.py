@@ -329,3 +329,28 @@ def test_pr2_shoulders_need_their_counterbalance(name: str) -> None:
         needed = float(finding.message.split('needs ', 1)[1].split(' ', 1)[0])
         assert abs(torque[model.joints[model.getJointId(joint)].idx_v]) == pytest.approx(
             needed, rel=1e-3)  # the pose as printed, to 4 decimals
+
+
+MJCF = """<mujoco><worldbody><body name="l1">
+  <joint name="joint_1" type="hinge" actuatorfrcrange="-100 100"/><geom size="0.1"/>
+  <body name="l2"><joint name="joint_2" type="hinge"/><geom size="0.1"/></body>
+</body></worldbody>
+<actuator><motor name="elbow_motor" joint="joint_2" forcelimited="true" forcerange="-50 50"/>
+</actuator></mujoco>
+"""
+
+
+def test_efforts_agree_with_an_mjcf_file(tmp_path: Path) -> None:
+    require_module('mujoco')
+    path = _write(tmp_path, arm(TWO))
+    (tmp_path / 'arm.xml').write_text(MJCF)
+    result = CliRunner().invoke(main, ['check', '--statics', '--no-meshes', '--mjcf',
+                                       str(tmp_path / 'arm.xml'), str(path)])
+    lines = [line for line in result.output.splitlines() if ' T802 ' in line]
+    assert len(lines) == 1 and "joint 'joint_2'" in lines[0], result.output
+    assert ("100 in <limit> effort, 50 in arm.xml actuator 'elbow_motor' forcerange"
+            in lines[0])
+    (tmp_path / 'broken.xml').write_text('<mujoco><worldbody>')
+    result = CliRunner().invoke(main, ['check', '--statics', '--no-meshes', '--mjcf',
+                                       str(tmp_path / 'broken.xml'), str(path)])
+    assert result.exit_code == 2 and 'MuJoCo cannot load the MJCF file' in result.output

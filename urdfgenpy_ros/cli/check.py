@@ -53,6 +53,7 @@ class _Options:
     statics: bool = False
     payload: dict[str, object] | None = None
     statics_margin: float = 1.0
+    mjcf: Path | None = None
 
 
 def _codes(ctx: click.Context, param: click.Parameter, values: tuple[str, ...]
@@ -144,12 +145,16 @@ def _margin(ctx: click.Context, param: click.Parameter, value: float | None
 @click.option('--statics-margin', type=float, callback=_margin, metavar='X',
               help='With --statics: the effort must reach X times the worst torque '
                    '(default 1.0).')
+@click.option('--mjcf', type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              metavar='FILE',
+              help='With --statics: an MJCF file made from the robot, whose joint and '
+                   'actuator force limits T802 compares too (needs mujoco).')
 @input_options
 def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict: bool,
           no_meshes: bool, ignored: frozenset[str], engines: tuple[str, ...], repair: bool,
           dry_run: bool, limit_defaults: dict[str, float], target: str, statics: bool,
           payload: dict[str, object] | None, statics_margin: float | None,
-          package_paths: tuple[Path, ...]) -> None:
+          mjcf: Path | None, package_paths: tuple[Path, ...]) -> None:
     """
     Validate URDF and Xacro FILEs (Xacro arguments as name:=value).
 
@@ -161,13 +166,15 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
     """
     if dry_run and not repair:
         raise click.UsageError('--dry-run previews --fix: give both')
-    if (payload is not None or statics_margin is not None) and not statics:
-        raise click.UsageError('--payload and --statics-margin go with --statics: give it')
+    if (payload is not None or statics_margin is not None or mjcf is not None) \
+            and not statics:
+        raise click.UsageError('--payload, --statics-margin and --mjcf go with --statics: '
+                               'give it')
     mappings = parse_mappings(tuple(item for item in inputs if ':=' in item))
     files = [Path(item) for item in inputs if ':=' not in item]
     options = _Options(not no_meshes, package_paths, engines, ignored, repair, dry_run,
                        limit_defaults, target, statics, payload,
-                       1.0 if statics_margin is None else statics_margin)
+                       1.0 if statics_margin is None else statics_margin, mjcf)
     text = output == 'text'
     done = 'to fix' if dry_run else 'fixed'
     lines: list[str] = []
@@ -219,7 +226,7 @@ def _findings(robot: Robot, options: _Options) -> list[ValidationError]:
     found = robot.validate(check_meshes=options.check_meshes,
                            search_paths=options.package_paths, target=options.target,
                            statics=options.statics, payload=options.payload,
-                           statics_margin=options.statics_margin)
+                           statics_margin=options.statics_margin, mjcf=options.mjcf)
     if options.engines:
         found += in_source(preflight(robot, options.engines, options.package_paths), robot)
     return found

@@ -40,7 +40,8 @@ def validate(robot: Robot, strict: bool = False, *, check_meshes: bool = True,
              search_paths: Iterable[str | PathLike[str]] = (),
              target: str | None = DEFAULT_TARGET, statics: bool = False,
              payload: Mapping[str, object] | None = None,
-             statics_margin: float = 1.0) -> list[ValidationError]:
+             statics_margin: float = 1.0,
+             mjcf: str | PathLike[str] | None = None) -> list[ValidationError]:
     """
     Return every finding about ``robot``; with ``strict``, raise the first error instead.
 
@@ -51,7 +52,7 @@ def validate(robot: Robot, strict: bool = False, *, check_meshes: bool = True,
     own features). Reader warnings come first. With ``statics``, each joint's effort is
     judged against the worst gravity torque over its range (T801, carrying ``payload``,
     e.g. ``{'link': 'tool0', 'mass': 2.0}``, times ``statics_margin``) and against its
-    other force limits (T802).
+    other force limits (T802; with ``mjcf``, also those MuJoCo compiles from that file).
 
     :raises ValidationError: with ``strict=True``, the first finding of severity error.
     """
@@ -72,7 +73,7 @@ def validate(robot: Robot, strict: bool = False, *, check_meshes: bool = True,
         from urdfgenpy_ros.validation.efforts import check_efforts
         from urdfgenpy_ros.validation.statics import check_statics
         check_statics(robot, findings, payload, statics_margin)
-        check_efforts(robot, findings)
+        check_efforts(robot, findings, mjcf)
     found = in_source(findings.items, robot)  # Xacro: the source line, or none
     if strict:
         for finding in found:

@@ -18,14 +18,19 @@ Effort in one voice: ``<limit effort>``, ros2_control and Gazebo should agree.
 A joint's force limit can be written in three places of one URDF: the ``effort`` of its
 ``<limit>``, the ``max`` (and ``min``) of the ``effort`` command interface of its
 ``<ros2_control>`` joint, and an ``<effort>`` in a ``<gazebo reference="JOINT">`` block
-(SDFormat's joint ``<limit>``, which Gazebo applies). T802 lists them when they differ.
+(SDFormat's joint ``<limit>``, which Gazebo applies); and in an MJCF file made from it, the
+joint's ``actuatorfrcrange`` and the ``forcerange`` of actuators on the joint, as MuJoCo
+compiles them. T802 lists them when they differ.
 """
 
 from __future__ import annotations
 
 import math
+from os import PathLike
+from pathlib import Path
 from typing import Any
 
+from urdfgenpy_ros.errors import MissingDependencyError, ParseError, SourceLocation
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.findings import Findings, joint_path
 
@@ -77,9 +82,47 @@ def voices(robot: Robot) -> dict[str, list[tuple[str, float]]]:
     return found
 
 
-def check_efforts(robot: Robot, findings: Findings) -> None:
-    """Add T802 for every joint whose force limits disagree."""
-    for name, values in voices(robot).items():
+def mjcf_voices(path: str | PathLike[str]) -> dict[str, list[tuple[str, float]]]:
+    """Return the force limits MuJoCo compiles from the MJCF file ``path``, per joint."""
+    try:
+        import mujoco
+    except ImportError:
+        raise MissingDependencyError('mujoco', 'engines', 'Comparing efforts with an MJCF '
+                                     'file') from None
+    try:
+        model = mujoco.MjModel.from_xml_path(str(path))
+    except ValueError as error:
+        raise ParseError(f'MuJoCo cannot load the MJCF file: {" ".join(str(error).split())}',
+                         SourceLocation(str(path))) from None
+    found: dict[str, list[tuple[str, float]]] = {}
+    where = Path(path).name
+    for joint in range(model.njnt):
+        name = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_JOINT, joint)
+        if name and model.jnt_actfrclimited[joint]:
+            found.setdefault(name, []).append(
+                (f'{where} actuatorfrcrange', float(abs(model.jnt_actfrcrange[joint]).max())))
+    for actuator in range(model.nu):
+        if (model.actuator_trntype[actuator] != mujoco.mjtTrn.mjTRN_JOINT
+                or not model.actuator_forcelimited[actuator]):
+            continue
+        name = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_JOINT,
+                                 model.actuator_trnid[actuator][0])
+        label = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_ACTUATOR, actuator) or actuator
+        if name:
+            found.setdefault(name, []).append(
+                (f'{where} actuator {label!r} forcerange',
+                 float(abs(model.actuator_forcerange[actuator]).max())))
+    return found
+
+
+def check_efforts(robot: Robot, findings: Findings,
+                  mjcf: str | PathLike[str] | None = None) -> None:
+    """Add T802 for every joint whose force limits (with ``mjcf``'s, if given) disagree."""
+    found = voices(robot)
+    for name, values in (mjcf_voices(mjcf) if mjcf is not None else {}).items():
+        if name in found:
+            found[name].extend(values)
+    for name, values in found.items():
         numbers = [value for _, value in values]
         if len(values) < 2 or max(numbers) - min(numbers) <= 1e-9 * max(numbers):
             continue
@@ -91,6 +134,6 @@ def check_efforts(robot: Robot, findings: Findings) -> None:
                      else (joint, joint_path(name)))
         findings.add('T802', at, f'joint {name!r}', where,
                      f'its force limits disagree: {listed}',
-                     'give the one the actuator can hold continuously everywhere (the '
-                     'other tools then agree with the description)',
+                     'write one value everywhere: the torque the actuator can hold '
+                     'continuously (peak torque is not an effort limit)',
                      'limit' if joint.limit is not None else 'joint')
