@@ -197,6 +197,8 @@ def test_the_ways_to_give_q_agree_and_mistakes_are_named() -> None:
         robot.jacobian('hand', [0, 0, 0])
     with pytest.raises(ModelError, match="payload: 'hand' is not a link of the robot"):
         robot.gravity_torques([0, 0, 0], payload={'link': 'hand', 'mass': 1.0})
+    with pytest.raises(ModelError, match='mass must be a finite number >= 0'):
+        robot.gravity_torques([0, 0, 0], payload={'link': 'link_d', 'mass': -1.0})
 
 
 def test_an_edited_robot_is_compiled_again() -> None:

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+import math
 
 import numpy
 
@@ -79,8 +80,9 @@ def _payload(model: ChainModel, payload: Mapping[str, object]
     except (TypeError, ValueError):
         raise ModelError(f'payload {dict(payload)!r}: mass is a number of kg, com three '
                          'numbers of metres') from None
-    if com.shape != (3,) or not numpy.isfinite(com).all() or not numpy.isfinite(weight):
-        raise ModelError(f'payload {dict(payload)!r}: com must be three finite numbers (m)')
+    if com.shape != (3,) or not numpy.isfinite(com).all() or not 0.0 <= weight < math.inf:
+        raise ModelError(f'payload {dict(payload)!r}: mass must be a finite number >= 0 (kg), '
+                         'com three finite numbers (m)')
     return model.links.index(str(link)), weight, com
 
 
