@@ -340,8 +340,10 @@ MJCF = """<mujoco><worldbody><body name="l1">
 """
 
 
-def test_efforts_agree_with_an_mjcf_file(tmp_path: Path) -> None:
+def test_efforts_agree_with_an_mjcf_file(tmp_path: Path,
+                                        monkeypatch: pytest.MonkeyPatch) -> None:
     require_module('mujoco')
+    monkeypatch.chdir(tmp_path)  # MuJoCo writes MUJOCO_LOG.TXT where it runs
     path = _write(tmp_path, arm(TWO))
     (tmp_path / 'arm.xml').write_text(MJCF)
     result = CliRunner().invoke(main, ['check', '--statics', '--no-meshes', '--mjcf',
