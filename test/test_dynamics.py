@@ -186,6 +186,11 @@ def test_the_ways_to_give_q_agree_and_mistakes_are_named() -> None:
     by_array = robot.fk([0.3, -0.2, 0.0])
     assert all((by_name[link] == by_array[link]).all() for link in by_array)
     assert (robot.fk(None)['link_g'] == robot.fk([0, 0, 0])['link_g']).all()
+    # a few configurations are composed by pointer jumping, many link by link: both agree
+    few = numpy.random.default_rng(2).uniform(-1, 1, (5, 3))
+    many = numpy.concatenate([few, numpy.zeros((40, 3))])
+    assert abs(robot.fk(few).array - robot.fk(many).array[:5]).max() < 1e-15
+    assert abs(robot.fk(few[3]).array - robot.fk(many).array[3]).max() < 1e-15
     with pytest.raises(ModelError, match="q names 'z', which is not a joint of the robot "
                                          r'\(movable joints: a, b, e\)'):
         robot.fk({'z': 1.0})
