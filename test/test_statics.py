@@ -340,8 +340,8 @@ MJCF = """<mujoco><worldbody><body name="l1">
 """
 
 
-def test_efforts_agree_with_an_mjcf_file(tmp_path: Path,
-                                        monkeypatch: pytest.MonkeyPatch) -> None:
+def test_efforts_agree_with_an_mjcf_file(tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+                                         ) -> None:
     require_module('mujoco')
     monkeypatch.chdir(tmp_path)  # MuJoCo writes MUJOCO_LOG.TXT where it runs
     path = _write(tmp_path, arm(TWO))
