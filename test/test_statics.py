@@ -236,11 +236,18 @@ def test_wheels_and_vertical_axes_are_never_reported() -> None:
         robot.add_joint(Joint(f'{side}_wheel_joint', 'continuous', 'base_link',
                               f'{side}_wheel', origin=Origin((0, y, 0)), axis=(0, 1, 0),
                               limit=JointLimit(effort=0.01, velocity=10.0)))
+    robot.add_link(_link('lift', 2.0, (0.0, 0.0, 0.0)))
+    robot.add_joint(Joint('lift_joint', 'prismatic', 'base_link', 'lift', axis=(0, 0, 1),
+                          limit=JointLimit(0, 1, effort=25, velocity=1)))
     robot.add_link(_link('mast', 3.0, (0.05, 0.0, 0.4)))
     robot.add_joint(Joint('pan', 'revolute', 'base_link', 'mast', origin=Origin((0, 0, 0.2)),
                           axis=(0, 0, 1), limit=JointLimit(-3, 3, effort=0.01, velocity=1)))
     found = robot.validate(statics=True, check_meshes=False)
     assert [finding for finding in found if finding.code == 'T801'] == []
+    robot.get_joint('lift_joint').limit.effort = 19.0  # a lift holds 2 kg: 19.62 N
+    found = [finding for finding in robot.validate(statics=True, check_meshes=False)
+             if finding.code == 'T801']
+    assert len(found) == 1 and 'gravity needs 19.62 N in every pose' in found[0].message
 
 
 def test_a_floating_base_is_held_and_the_finding_says_so() -> None:

@@ -83,9 +83,10 @@ def _held(robot: Robot) -> str:
 def _message(worst: WorstCase, unit: str, effort: float,
              payload: Mapping[str, object] | None, held: str) -> str:
     pose = ', '.join(f'{name}={round(value, 4) + 0.0:g}' for name, value in worst.pose.items())
+    where = f'at {pose}' if pose else 'in every pose'
     carrying = (f' (with {payload["mass"]:g} kg at {payload["link"]!r})'
                 if payload is not None else '')
-    return (f'gravity needs {abs(worst.torque):.4g} {unit} at {pose}{carrying}; '
+    return (f'gravity needs {abs(worst.torque):.4g} {unit} {where}{carrying}; '
             f'<limit> effort is {effort:g}{held}')
 
 
