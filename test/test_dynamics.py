@@ -142,11 +142,9 @@ def test_fk_and_jacobians_equal_pinocchio_at_random_configurations(path: Path) -
     poses = robot.fk(configurations)  # all at once; single ones below
     links = [link for link in poses if model.existFrame(link)]
     assert links
-    tip = links[-1]
-    jacobians = {frame: robot.jacobian(tip, configurations, frame=frame)
-                 for frame in ('world', 'local')}
+    jacobians = {(link, frame): robot.jacobian(link, configurations, frame=frame)
+                 for link in links for frame in ('world', 'local')}  # every link's
     reference = {'world': pin.LOCAL_WORLD_ALIGNED, 'local': pin.LOCAL}
-    frame_id = model.getFrameId(tip)
     worst = 0.0
     for number, values in enumerate(configurations):
         q = judge.q(values)
@@ -158,10 +156,10 @@ def test_fk_and_jacobians_equal_pinocchio_at_random_configurations(path: Path) -
             if single is not None:
                 worst = max(worst, abs(single[link] - expected).max())
         pin.computeJointJacobians(model, data, q)
-        for frame, kind in reference.items():
-            found = pin.getFrameJacobian(model, data, frame_id, kind)
-            expected = judge.fold(numpy.reshape(found, (6, model.nv)))  # nv 1 comes 1-D
-            worst = max(worst, abs(jacobians[frame][number] - expected).max())
+        for (link, frame), found in jacobians.items():
+            theirs = pin.getFrameJacobian(model, data, model.getFrameId(link), reference[frame])
+            expected = judge.fold(numpy.reshape(theirs, (6, model.nv)))  # nv 1 comes 1-D
+            worst = max(worst, abs(found[number] - expected).max())
     assert worst < 1e-12
 
 
