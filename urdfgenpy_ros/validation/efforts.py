@@ -63,7 +63,8 @@ def voices(robot: Robot) -> dict[str, list[tuple[str, float]]]:
     """Return, per joint, every place that gives it a force limit, and the value."""
     found: dict[str, list[tuple[str, float]]] = {}
     for joint in robot.joints:
-        if joint.limit is not None and joint.type.is_movable:
+        if (joint.limit is not None and joint.type.is_movable
+                and math.isfinite(joint.limit.effort)):  # R305 reports one that is not
             found.setdefault(joint.name, []).append(('<limit> effort', joint.limit.effort))
     gazebo = [(extension, joint.name) for joint in robot.joints
               for extension in joint.extensions]
