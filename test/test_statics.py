@@ -35,7 +35,8 @@ from helpers import corpus_cases, corpus_file, require_module
 import numpy
 import pytest
 
-from urdfgenpy_ros import Extension, Inertial, Joint, JointLimit, Link, Origin, Robot
+from urdfgenpy_ros import Extension, Inertial, Joint, JointLimit, Link, ModelError, Origin
+from urdfgenpy_ros import Robot
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.dynamics import compiled
 from urdfgenpy_ros.dynamics.gravity import mass_model
@@ -244,6 +245,8 @@ def test_wheels_and_vertical_axes_are_never_reported() -> None:
                           axis=(0, 0, 1), limit=JointLimit(-3, 3, effort=0.01, velocity=1)))
     found = robot.validate(statics=True, check_meshes=False)
     assert [finding for finding in found if finding.code == 'T801'] == []
+    with pytest.raises(ModelError, match='statics_margin must be a factor > 0'):
+        robot.validate(statics=True, statics_margin=0.0)
     robot.get_joint('lift_joint').limit.effort = 19.0  # a lift holds 2 kg: 19.62 N
     found = [finding for finding in robot.validate(statics=True, check_meshes=False)
              if finding.code == 'T801']

@@ -33,6 +33,7 @@ import numpy
 from urdfgenpy_ros.dynamics import compiled
 from urdfgenpy_ros.dynamics.gravity import mass_model
 from urdfgenpy_ros.dynamics.worst import is_prismatic, ranges, worst_case, WorstCase
+from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.joint import JointType
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.findings import Findings, joint_path
@@ -44,6 +45,8 @@ def check_statics(robot: Robot, findings: Findings,
                   payload: Mapping[str, object] | None = None, margin: float = 1.0,
                   gravity: Sequence[float] = (0.0, 0.0, -9.81)) -> None:
     """Add T801 for every joint whose effort cannot hold the robot somewhere in its range."""
+    if not 0.0 < margin < math.inf:
+        raise ModelError(f'statics_margin must be a factor > 0 (1.5: 50% spare), got {margin!r}')
     if len(robot.roots) != 1:
         return  # validate() reports it (S001, S002)
     model = compiled(robot)
