@@ -17,7 +17,8 @@ The worst gravity torque of a joint over the whole range of motion, and the pose
 
 A joint's gravity torque depends only on the joints above it (they turn gravity in its
 frame) and below it (they move the mass it carries). The search starts from the best
-points of a grid over those joints, then climbs one joint at a time. Along one turning
+points of a grid over those joints and from the zero pose (which wins ties, so that an arm
+straight out is named so), then climbs one joint at a time. Along one turning
 joint the torque is ``A cos q + B sin q + C``: three evaluations give A, B and C, and the
 extremes inside the limits are among the turning points and the ends, so each step is
 exact (and the whole search, for a single joint). A dense set of samples along the joint
@@ -157,7 +158,9 @@ def worst_case(model: ChainModel, masses: MassModel, bounds: numpy.ndarray, colu
     base = bounds.mean(axis=1)
     grid = _grid(bounds, columns, base)
     size = numpy.abs(torque(grid))
-    seeds = grid[numpy.argsort(-size, kind='stable')[:SEEDS]].copy()
+    home = numpy.clip(numpy.zeros(len(bounds)), bounds[:, 0], bounds[:, 1])  # ties go to it
+    seeds = numpy.concatenate([home[None, :],
+                               grid[numpy.argsort(-size, kind='stable')[:SEEDS - 1]]])
     best = numpy.abs(torque(seeds))
     turning = {int(model.source[link])
                for link in numpy.flatnonzero(model.motion == REVOLUTE)}
@@ -178,7 +181,7 @@ def worst_case(model: ChainModel, masses: MassModel, bounds: numpy.ndarray, colu
             best = numpy.maximum(best, values[numpy.arange(len(seeds)), pick])
         if (best - before).max() <= 1e-12 * max(1.0, float(best.max())):
             break
-    winner = seeds[int(numpy.argmax(best))]
+    winner = seeds[int(numpy.argmax(best >= best.max() * (1.0 - 1e-12)))]  # the first best
     value = float(torque(winner[None, :])[0])
     return WorstCase(model.movable[column], value,
                      {model.movable[moved]: float(winner[moved])
