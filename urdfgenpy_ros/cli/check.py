@@ -50,6 +50,10 @@ class _Options:
     dry_run: bool
     limit_defaults: dict[str, float]
     target: str = DEFAULT_TARGET
+    statics: bool = False
+    payload: dict[str, object] | None = None
+    statics_margin: float = 1.0
+    mjcf: Path | None = None
 
 
 def _codes(ctx: click.Context, param: click.Parameter, values: tuple[str, ...]
@@ -87,6 +91,28 @@ def _limit_defaults(ctx: click.Context, param: click.Parameter, values: tuple[st
     return defaults
 
 
+def _payload(ctx: click.Context, param: click.Parameter, value: str | None
+             ) -> dict[str, object] | None:
+    if value is None:
+        return None
+    mass, separator, link = value.partition('@')
+    try:
+        weight = float(mass)
+        if not separator or not link or not 0.0 <= weight < float('inf'):
+            raise ValueError
+    except ValueError:
+        raise click.BadParameter(f'{value!r}: give MASS@LINK, the mass in kg, e.g. '
+                                 '2.0@tool0') from None
+    return {'link': link, 'mass': weight}
+
+
+def _margin(ctx: click.Context, param: click.Parameter, value: float | None
+            ) -> float | None:
+    if value is not None and not 0.0 < value < float('inf'):
+        raise click.BadParameter(f'{value:g}: give a factor > 0, e.g. 1.5 for 50% spare')
+    return value
+
+
 @click.command()
 @click.argument('inputs', nargs=-1, required=True, metavar='FILE... [NAME:=VALUE]...')
 @click.option('--format', 'output', type=click.Choice(['text', 'json', 'sarif', 'junit']),
@@ -111,11 +137,24 @@ def _limit_defaults(ctx: click.Context, param: click.Parameter, values: tuple[st
               show_default=True,
               help='The ROS 2 distribution the description is for: its urdfdom decides '
                    'which URDF versions it reads (jazzy: 1.0; rolling: 1.0 to 1.2).')
+@click.option('--statics', is_flag=True,
+              help='Judge each effort against the worst gravity torque over the range of '
+                   'motion (T801) and against its ros2_control and Gazebo limits (T802).')
+@click.option('--payload', callback=_payload, metavar='MASS@LINK',
+              help='With --statics: a payload held at a link, e.g. 2.0@tool0.')
+@click.option('--statics-margin', type=float, callback=_margin, metavar='X',
+              help='With --statics: the effort must reach X times the worst torque '
+                   '(default 1.0).')
+@click.option('--mjcf', type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              metavar='FILE',
+              help='With --statics: an MJCF file made from the robot, whose joint and '
+                   'actuator force limits T802 compares too (needs mujoco).')
 @input_options
 def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict: bool,
           no_meshes: bool, ignored: frozenset[str], engines: tuple[str, ...], repair: bool,
-          dry_run: bool, limit_defaults: dict[str, float], target: str,
-          package_paths: tuple[Path, ...]) -> None:
+          dry_run: bool, limit_defaults: dict[str, float], target: str, statics: bool,
+          payload: dict[str, object] | None, statics_margin: float | None,
+          mjcf: Path | None, package_paths: tuple[Path, ...]) -> None:
     """
     Validate URDF and Xacro FILEs (Xacro arguments as name:=value).
 
@@ -127,10 +166,15 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
     """
     if dry_run and not repair:
         raise click.UsageError('--dry-run previews --fix: give both')
+    if (payload is not None or statics_margin is not None or mjcf is not None) \
+            and not statics:
+        raise click.UsageError('--payload, --statics-margin and --mjcf go with --statics: '
+                               'give it')
     mappings = parse_mappings(tuple(item for item in inputs if ':=' in item))
     files = [Path(item) for item in inputs if ':=' not in item]
     options = _Options(not no_meshes, package_paths, engines, ignored, repair, dry_run,
-                       limit_defaults, target)
+                       limit_defaults, target, statics, payload,
+                       1.0 if statics_margin is None else statics_margin, mjcf)
     text = output == 'text'
     done = 'to fix' if dry_run else 'fixed'
     lines: list[str] = []
@@ -180,7 +224,9 @@ def _line(finding: ValidationError) -> str:
 
 def _findings(robot: Robot, options: _Options) -> list[ValidationError]:
     found = robot.validate(check_meshes=options.check_meshes,
-                           search_paths=options.package_paths, target=options.target)
+                           search_paths=options.package_paths, target=options.target,
+                           statics=options.statics, payload=options.payload,
+                           statics_margin=options.statics_margin, mjcf=options.mjcf)
     if options.engines:
         found += in_source(preflight(robot, options.engines, options.package_paths), robot)
     return found

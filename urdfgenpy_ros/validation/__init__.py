@@ -16,7 +16,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from os import PathLike
 from pathlib import Path
 
@@ -38,7 +38,10 @@ __all__ = ['CODES', 'validate', 'ValidationError']
 
 def validate(robot: Robot, strict: bool = False, *, check_meshes: bool = True,
              search_paths: Iterable[str | PathLike[str]] = (),
-             target: str | None = DEFAULT_TARGET) -> list[ValidationError]:
+             target: str | None = DEFAULT_TARGET, statics: bool = False,
+             payload: Mapping[str, object] | None = None,
+             statics_margin: float = 1.0,
+             mjcf: str | PathLike[str] | None = None) -> list[ValidationError]:
     """
     Return every finding about ``robot``; with ``strict``, raise the first error instead.
 
@@ -46,7 +49,10 @@ def validate(robot: Robot, strict: bool = False, *, check_meshes: bool = True,
     ``ROS_PACKAGE_PATH`` (relative paths from the file the robot was read from); pass
     ``check_meshes=False`` to skip them. The URDF version is judged for the ROS
     distribution ``target`` (``'jazzy'``, ``'rolling'``; None: only against the robot's
-    own features). Reader warnings come first.
+    own features). Reader warnings come first. With ``statics``, each joint's effort is
+    judged against the worst gravity torque over its range (T801, carrying ``payload``,
+    e.g. ``{'link': 'tool0', 'mass': 2.0}``, times ``statics_margin``) and against its
+    other force limits (T802; with ``mjcf``, also those MuJoCo compiles from that file).
 
     :raises ValidationError: with ``strict=True``, the first finding of severity error.
     """
@@ -63,6 +69,11 @@ def validate(robot: Robot, strict: bool = False, *, check_meshes: bool = True,
     source = robot.source.file if robot.source is not None else None
     base = Path(source).parent if source and Path(source).is_file() else None
     check_references(robot, findings, resolver, base)
+    if statics:
+        from urdfgenpy_ros.validation.efforts import check_efforts
+        from urdfgenpy_ros.validation.statics import check_statics
+        check_statics(robot, findings, payload, statics_margin)
+        check_efforts(robot, findings, mjcf)
     found = in_source(findings.items, robot)  # Xacro: the source line, or none
     if strict:
         for finding in found:

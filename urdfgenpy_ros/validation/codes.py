@@ -86,6 +86,9 @@ CODES: dict[str, tuple[Severity, str]] = {
     'V705': (W, 'quaternion of zero length (read as no rotation, as urdfdom 6 does)'),
     'V706': (W, 'written as URDF 1.0: a capsule became a cylinder and two spheres'),
     'V707': (W, 'written as URDF 1.0: a URDF 1.2 limit was dropped'),
+    # statics (validation/statics.py, validation/efforts.py; check --statics)
+    'T801': (E, 'effort cannot hold the robot against gravity somewhere in the range'),
+    'T802': (W, 'force limits of a joint disagree (<limit>, ros2_control, Gazebo)'),
     # conventions
     'C401': (W, "no link called 'base_link'"),
     # engine pre-flight (validation/preflight.py): what a consumer silently changes

@@ -1,0 +1,234 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Forward kinematics, Jacobians and gravity torques against pinocchio on real robots."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+import warnings
+
+from helpers import require_module
+import numpy
+import pytest
+from registry_robots import robot_id, robots, search_paths
+
+from urdfgenpy_ros import Inertial, Joint, JointLimit, JointMimic, Link, ModelError, Origin
+from urdfgenpy_ros import Robot
+from urdfgenpy_ros.formats import load
+
+CONFIGS = 100
+
+
+def _read(path: Path) -> Robot:
+    return load(path, {}, search_paths())
+
+
+class Pinocchio:
+    """A robot in pinocchio, its mimic joints moved by hand (``mimic=False``)."""
+
+    def __init__(self, robot: Robot) -> None:
+        self.pin = require_module('pinocchio')
+        with warnings.catch_warnings():
+            warnings.simplefilter('ignore')  # quaternions written as rpy: exact to rounding
+            text = robot.to_urdf(version='1.0')
+        self.model = self.pin.buildModelFromXML(text)
+        self.data = self.model.createData()
+        self.robot = robot
+        self.names = robot.movable_joints
+        self.followers = []  # (joint, leader column, multiplier, offset), chains resolved
+        column = {name: number for number, name in enumerate(self.names)}
+        for joint in robot.joints:
+            if joint.is_movable and joint.name not in column:
+                multiplier, offset, leader = 1.0, 0.0, joint
+                while leader.mimic is not None:
+                    multiplier, offset = (multiplier * leader.mimic.multiplier,
+                                          offset + multiplier * leader.mimic.offset)
+                    leader = robot.get_joint(leader.mimic.joint)
+                self.followers.append((joint.name, column[leader.name], multiplier, offset))
+
+    def q(self, values: numpy.ndarray) -> numpy.ndarray:
+        """Return pinocchio's configuration (continuous joints as cos, sin)."""
+        q = self.pin.neutral(self.model)
+        moved = [*zip(self.names, values),
+                 *((name, multiplier * values[column] + offset)
+                   for name, column, multiplier, offset in self.followers)]
+        for name, value in moved:
+            joint = self.model.joints[self.model.getJointId(name)]
+            if joint.nq == 2:
+                q[joint.idx_q:joint.idx_q + 2] = numpy.cos(value), numpy.sin(value)
+            else:
+                q[joint.idx_q] = value
+        return q
+
+    def fold(self, matrix: numpy.ndarray) -> numpy.ndarray:
+        """Return pinocchio's columns (or entries) over our movable joints, mimic added."""
+        def column(name: str) -> numpy.ndarray:
+            return matrix[..., self.model.joints[self.model.getJointId(name)].idx_v]
+        result = numpy.stack([column(name) for name in self.names], axis=-1)
+        for name, leader, multiplier, _ in self.followers:
+            result[..., leader] += multiplier * column(name)
+        return result
+
+
+def _configurations(robot: Robot, count: int, seed: int) -> numpy.ndarray:
+    rng = numpy.random.default_rng(seed)
+    low, high = [], []
+    for name in robot.movable_joints:
+        joint = robot.get_joint(name)
+        limit = joint.limit
+        bounded = joint.type.needs_limit and limit is not None and limit.lower < limit.upper
+        low.append(limit.lower if bounded else -numpy.pi)
+        high.append(limit.upper if bounded else numpy.pi)
+    return rng.uniform(low, high, (count, len(low)))
+
+
+def _link(name: str, mass: float, com: tuple[float, float, float]) -> Link:
+    inertial = Inertial(mass, 0.02, 0.001, 0.0, 0.03, 0.0, 0.01,
+                        origin=Origin(com, (0.2, -0.1, 0.4)))
+    return Link(name).set_inertial(inertial)
+
+
+def odd_robot() -> Robot:
+    """Return a tree with quaternion origins, a floating joint, sliders and mimic chains."""
+    robot = Robot('odd').add_link(Link('world')).add_link(_link('body', 3.0, (0, 0, 0.1)))
+    robot.add_joint(Joint('free', 'floating', 'world', 'body',
+                          origin=Origin((0.1, 0.2, 0.3), (0.1, 0.2, 0.3))))
+    half = math.sqrt(0.5)  # parents are links: 'a' carries link_a
+    specs = [('a', 'body', 'revolute', Origin((0.1, 0, 0.2), quat_xyzw=(0.1, 0.2, 0.3, 0.9)),
+              (0.3, 0.4, 0.5), None),
+             ('b', 'link_a', 'prismatic', Origin((0, 0.2, 0), (0.3, 0, 0.1)), (0, 0, 2), None),
+             ('c', 'link_b', 'continuous', Origin((0.05, 0, 0.1), quat_xyzw=(half, 0, 0, half)),
+              (1, 0, 0), JointMimic('a', 1.5, 0.2)),
+             ('d', 'link_c', 'revolute', Origin((0.2, 0, 0)), (0, 1, 0),
+              JointMimic('c', -0.5, 0.1)),
+             ('e', 'body', 'revolute', Origin((-0.1, 0, 0.2), (0, 0.5, 0)), (0, 0, 1), None),
+             ('f', 'link_e', 'prismatic', Origin((0, 0, 0.1)), (1, 0, 0),
+              JointMimic('b', 2.0, 0)),
+             ('g', 'link_f', 'fixed', Origin((0, 0.1, 0), quat_xyzw=(0, 0, half, half)), None,
+              None)]
+    for name, parent, kind, origin, axis, mimic in specs:
+        robot.add_link(_link(f'link_{name}', 0.5, (0.05, 0.02, -0.03)))
+        robot.add_joint(Joint(name, kind, parent, f'link_{name}', origin=origin, axis=axis,
+                              limit=JointLimit(-1, 1, effort=10, velocity=1), mimic=mimic))
+    return robot
+
+
+ROBOTS = [pytest.param(path, id=robot_id(path)) for path in robots()] + ['odd']
+
+
+def _robot(path: Path | str) -> Robot:
+    return odd_robot() if path == 'odd' else _read(Path(path))
+
+
+@pytest.mark.parametrize('path', ROBOTS)
+def test_fk_and_jacobians_equal_pinocchio_at_random_configurations(path: Path) -> None:
+    robot = _robot(path)
+    judge = Pinocchio(robot)
+    pin, model, data = judge.pin, judge.model, judge.data
+    configurations = _configurations(robot, CONFIGS, 7)
+    poses = robot.fk(configurations)  # all at once; single ones below
+    links = [link for link in poses if model.existFrame(link)]
+    assert links
+    jacobians = {(link, frame): robot.jacobian(link, configurations, frame=frame)
+                 for link in links for frame in ('world', 'local')}  # every link's
+    reference = {'world': pin.LOCAL_WORLD_ALIGNED, 'local': pin.LOCAL}
+    worst = 0.0
+    for number, values in enumerate(configurations):
+        q = judge.q(values)
+        pin.framesForwardKinematics(model, data, q)
+        single = robot.fk(values) if number % 25 == 0 else None
+        for link in links:
+            expected = data.oMf[model.getFrameId(link)].homogeneous
+            worst = max(worst, abs(poses[link][number] - expected).max())
+            if single is not None:
+                worst = max(worst, abs(single[link] - expected).max())
+        pin.computeJointJacobians(model, data, q)
+        for (link, frame), found in jacobians.items():
+            theirs = pin.getFrameJacobian(model, data, model.getFrameId(link), reference[frame])
+            expected = judge.fold(numpy.reshape(theirs, (6, model.nv)))  # nv 1 comes 1-D
+            worst = max(worst, abs(found[number] - expected).max())
+    assert worst < 1e-12
+
+
+@pytest.mark.parametrize('path', ROBOTS)
+def test_gravity_torques_equal_pinocchio(path: Path) -> None:
+    robot = _robot(path)
+    judge = Pinocchio(robot)
+    configurations = _configurations(robot, CONFIGS, 11)
+    torques = robot.gravity_torques(configurations)
+    worst = 0.0
+    for number, values in enumerate(configurations):
+        expected = judge.fold(judge.pin.computeGeneralizedGravity(
+            judge.model, judge.data, judge.q(values)))
+        worst = max(worst, abs(torques[number] - expected).max())
+    assert worst < 1e-9
+
+
+def test_the_ways_to_give_q_agree_and_mistakes_are_named() -> None:
+    robot = odd_robot()
+    assert robot.movable_joints == ['a', 'b', 'e']
+    by_name = robot.fk({'a': 0.3, 'b': -0.2, 'c': 99.0})  # a mimic's own value is not used
+    by_array = robot.fk([0.3, -0.2, 0.0])
+    assert all((by_name[link] == by_array[link]).all() for link in by_array)
+    assert (robot.fk(None)['link_g'] == robot.fk([0, 0, 0])['link_g']).all()
+    # a few configurations are composed by pointer jumping, many link by link: both agree
+    few = numpy.random.default_rng(2).uniform(-1, 1, (5, 3))
+    many = numpy.concatenate([few, numpy.zeros((40, 3))])
+    assert abs(robot.fk(few).array - robot.fk(many).array[:5]).max() < 1e-15
+    assert abs(robot.fk(few[3]).array - robot.fk(many).array[3]).max() < 1e-15
+    with pytest.raises(ModelError, match="q names 'z', which is not a joint of the robot "
+                                         r'\(movable joints: a, b, e\)'):
+        robot.fk({'z': 1.0})
+    with pytest.raises(ModelError, match=r'q has shape \(2,\): give 3 values'):
+        robot.fk([1.0, 2.0])
+    with pytest.raises(ModelError, match="frame must be 'world' or 'local'"):
+        robot.jacobian('link_d', [0, 0, 0], frame='base')
+    with pytest.raises(ModelError, match="'hand' is not a link of the robot"):
+        robot.jacobian('hand', [0, 0, 0])
+    with pytest.raises(ModelError, match="payload: 'hand' is not a link of the robot"):
+        robot.gravity_torques([0, 0, 0], payload={'link': 'hand', 'mass': 1.0})
+    with pytest.raises(ModelError, match='mass must be a finite number >= 0'):
+        robot.gravity_torques([0, 0, 0], payload={'link': 'link_d', 'mass': -1.0})
+
+
+def test_an_edited_robot_is_compiled_again() -> None:
+    robot = odd_robot()
+    before = robot.fk([0.1, 0.2, 0.3])['link_g'].copy()
+    robot.get_joint('e').origin = Origin((-0.1, 0, 0.5), (0, 0.5, 0))
+    after = robot.fk([0.1, 0.2, 0.3])['link_g']
+    assert after[2, 3] != pytest.approx(before[2, 3])
+    robot.get_joint('e').type = 'fixed'
+    assert robot.movable_joints == ['a', 'b']
+    robot.get_joint('e').type = 'revolute'
+    assert robot.movable_joints == ['a', 'b', 'e']
+    robot.get_link('link_d').inertial.mass = 5.0  # masses are read on every call
+    heavier = robot.gravity_torques([0.1, 0.2, 0.3])
+    robot.get_link('link_d').inertial.mass = 0.5
+    assert abs(heavier - robot.gravity_torques([0.1, 0.2, 0.3])).max() > 1.0
+
+
+def test_a_base_pose_moves_every_link_and_the_world_jacobian() -> None:
+    robot = odd_robot()
+    base = numpy.eye(4)
+    base[:3, :3] = [[0, -1, 0], [1, 0, 0], [0, 0, 1]]
+    base[:3, 3] = (1.0, 2.0, 3.0)
+    q = [0.2, 0.1, -0.4]
+    moved, still = robot.fk(q, base=base), robot.fk(q)
+    assert all(abs(moved[link] - base @ still[link]).max() < 1e-14 for link in still)
+    world, local = robot.jacobian('link_d', q, base=base), robot.jacobian('link_d', q)
+    assert abs(world[:3] - base[:3, :3] @ local[:3]).max() < 1e-14
+    assert abs(robot.jacobian('link_d', q, 'local', base) - robot.jacobian(
+        'link_d', q, 'local')).max() < 1e-14

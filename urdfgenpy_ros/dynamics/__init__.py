@@ -1,0 +1,86 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Kinematics and statics of a robot, vectorised with numpy.
+
+What ``robot.fk``, ``robot.jacobian`` and ``robot.gravity_torques`` call. The robot is
+compiled to arrays once (:mod:`.model`) and again only when its joints or links change.
+``q`` is a mapping of joint names, an array over :func:`movable_joints`, or an (N, dof)
+array of configurations, which gives N results at once.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import Any
+import weakref
+
+import numpy
+
+from urdfgenpy_ros.dynamics.forward import jacobian as _jacobian, link_matrices
+from urdfgenpy_ros.dynamics.forward import LinkPoses
+from urdfgenpy_ros.dynamics.gravity import gravity_torques as _gravity, mass_model
+from urdfgenpy_ros.dynamics.model import ChainModel, compile_robot, fingerprint, positions
+from urdfgenpy_ros.robot import Robot
+
+__all__ = ['compiled', 'fk', 'gravity_torques', 'jacobian', 'LinkPoses', 'movable_joints']
+
+_CACHE: dict[int, tuple[weakref.ref, tuple, ChainModel]] = {}
+
+
+def compiled(robot: Robot) -> ChainModel:
+    """Return the arrays of ``robot``, compiled again only when its joints changed."""
+    key = fingerprint(robot)
+    entry = _CACHE.get(id(robot))
+    if entry is not None and entry[0]() is robot and entry[1] == key:
+        return entry[2]
+    model = compile_robot(robot)
+    if len(_CACHE) > 64:
+        for number in [number for number, item in _CACHE.items() if item[0]() is None]:
+            del _CACHE[number]
+    _CACHE[id(robot)] = (weakref.ref(robot), key, model)
+    return model
+
+
+def movable_joints(robot: Robot) -> list[str]:
+    """Return the joints ``q`` gives values for: movable, not mimic, in the robot's order."""
+    return list(compiled(robot).movable)
+
+
+def fk(robot: Robot, q: Any = None, base: Any = None) -> LinkPoses:
+    """Return every link's 4x4 pose (N x 4 x 4 for N configurations) in the root frame."""
+    model = compiled(robot)
+    values, single = positions(model, q)
+    matrices = link_matrices(model, values, base)
+    return LinkPoses(model.links, matrices[0] if single else matrices)
+
+
+def jacobian(robot: Robot, link: str, q: Any = None, frame: str = 'world',
+             base: Any = None) -> numpy.ndarray:
+    """Return the geometric Jacobian (6 x dof, or N x 6 x dof) of ``link``."""
+    model = compiled(robot)
+    values, single = positions(model, q)
+    result = _jacobian(model, link, values, frame, base)
+    return result[0] if single else result
+
+
+def gravity_torques(robot: Robot, q: Any = None,
+                    gravity: Sequence[float] = (0.0, 0.0, -9.81),
+                    payload: Mapping[str, object] | None = None) -> numpy.ndarray:
+    """Return the torque or force (dof, or N x dof) each movable joint needs to hold still."""
+    model = compiled(robot)
+    values, single = positions(model, q)
+    result = _gravity(model, mass_model(robot, model, payload), values, gravity)
+    return result[0] if single else result

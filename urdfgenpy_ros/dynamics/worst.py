@@ -1,0 +1,206 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+The worst gravity torque of a joint over the whole range of motion, and the pose.
+
+A joint's gravity torque depends only on the joints above it (they turn gravity in its
+frame) and below it (they move the mass it carries). The search starts from the best
+points of a grid over those joints and from the zero pose (which wins ties, so that an arm
+straight out is named so), then climbs one joint at a time. Along one turning
+joint the torque is ``A cos q + B sin q + C``: three evaluations give A, B and C, and the
+extremes inside the limits are among the turning points and the ends, so each step is
+exact (and the whole search, for a single joint). A dense set of samples along the joint
+joins them, for mimic joints whose torque has several frequencies.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+import itertools
+import math
+
+import numpy
+
+from urdfgenpy_ros.dynamics.gravity import gravity_torques, MassModel
+from urdfgenpy_ros.dynamics.model import ChainModel, PRISMATIC, REVOLUTE
+from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.robot import Robot
+
+GRID_POINTS = 4096
+SEEDS = 6
+SAMPLES = 17
+SWEEPS = 12
+
+
+@dataclass(frozen=True)
+class WorstCase:
+    """The largest gravity torque of one joint: its value (signed) and where it happens."""
+
+    joint: str
+    torque: float
+    pose: dict[str, float] = field(default_factory=dict)
+    """The values of the joints that change this joint's torque (the rest do not)."""
+
+
+def ranges(robot: Robot, model: ChainModel) -> numpy.ndarray:
+    """Return (dof, 2) ranges: the limits, a full turn for continuous (or unlimited) joints."""
+    bounds = numpy.zeros((len(model.movable), 2))
+    for number, name in enumerate(model.movable):
+        joint = robot.get_joint(name)
+        limit = joint.limit
+        if joint.type.needs_limit and limit is not None and limit.lower <= limit.upper:
+            bounds[number] = (limit.lower, limit.upper)
+        elif joint.type is JointType.PRISMATIC:
+            bounds[number] = (0.0, 0.0)  # no range (validate() says J103 or J104)
+        else:
+            bounds[number] = (-math.pi, math.pi)
+    return bounds
+
+
+def relevant_links(model: ChainModel, column: int) -> numpy.ndarray:
+    """Return the links column ``column`` carries, those above them and those below."""
+    carried = numpy.flatnonzero(model.source == column)
+    below = model.below
+    kept = numpy.zeros(len(model.links), dtype=bool)
+    for link in carried:
+        current = int(link)
+        while current >= 0:
+            kept[current] = True
+            current = int(model.parent[current])
+        kept |= below[link] > 0
+    return numpy.flatnonzero(kept)
+
+
+def relevant(model: ChainModel, column: int) -> list[int]:
+    """Return the columns of ``q`` that change the torque of column ``column``."""
+    sources = model.source[relevant_links(model, column)]
+    return sorted({int(value) for value in sources if value >= 0})
+
+
+def _restricted(model: ChainModel, masses: MassModel, links: numpy.ndarray
+                ) -> tuple[ChainModel, MassModel]:
+    """Return the model of ``links`` only (closed under parents: the root stays first)."""
+    renumber = numpy.full(len(model.links) + 1, -1, dtype=numpy.intp)
+    renumber[links] = numpy.arange(len(links))
+    parent = renumber[model.parent[links]]
+    depth = numpy.zeros(len(links), dtype=numpy.intp)
+    for number in range(1, len(links)):
+        depth[number] = depth[parent[number]] + 1
+    smaller = replace(model, links=tuple(model.links[link] for link in links),
+                      joints=tuple(model.joints[link] for link in links), parent=parent,
+                      origin=model.origin[links], axis=model.axis[links],
+                      motion=model.motion[links], source=model.source[links],
+                      multiplier=model.multiplier[links], offset=model.offset[links],
+                      depth=int(numpy.max(depth)) if len(links) else 0)
+    return smaller, MassModel(masses.mass[links], masses.moment[links])
+
+
+class _Torque:
+    """The torque of one column at many configurations, on the links that change it."""
+
+    def __init__(self, model: ChainModel, masses: MassModel, gravity: numpy.ndarray,
+                 column: int) -> None:
+        model, masses = _restricted(model, masses, relevant_links(model, column))
+        self.model, self.masses, self.gravity, self.column = model, masses, gravity, column
+
+    def __call__(self, q: numpy.ndarray) -> numpy.ndarray:
+        return gravity_torques(self.model, self.masses, q, self.gravity)[:, self.column]
+
+
+def _grid(bounds: numpy.ndarray, columns: list[int], base: numpy.ndarray) -> numpy.ndarray:
+    """Return the starting points: a grid with the ends, or random ones for many joints."""
+    per = int(GRID_POINTS ** (1.0 / len(columns)) + 1e-9)
+    if per >= 2:
+        axes = [numpy.linspace(bounds[column, 0], bounds[column, 1], per)
+                for column in columns]
+        points = numpy.array(list(itertools.product(*axes)))
+    else:  # 13 joints or more: 2 values each would be too many points
+        points = numpy.random.default_rng(0).uniform(
+            bounds[columns, 0], bounds[columns, 1], (GRID_POINTS, len(columns)))
+    grid = numpy.repeat(base[None, :], len(points), axis=0)
+    grid[:, columns] = points
+    return grid
+
+
+def _turning_points(torque: _Torque, seeds: numpy.ndarray, column: int,
+                    low: float, high: float) -> numpy.ndarray:
+    """Return, per seed, the extremes of ``A cos q + B sin q + C`` inside [low, high]."""
+    probes = numpy.repeat(seeds, 3, axis=0)
+    probes[:, column] = numpy.tile([0.0, math.pi / 2.0, math.pi], len(seeds))
+    values = torque(probes).reshape(len(seeds), 3)
+    a = (values[:, 0] - values[:, 2]) / 2.0
+    b = values[:, 1] - (values[:, 0] + values[:, 2]) / 2.0
+    phase = numpy.arctan2(b, a)
+    found = []
+    for turn in (phase, phase + math.pi):  # the maximum and the minimum of the sinusoid
+        shift = numpy.ceil((low - turn) / (2.0 * math.pi))
+        found.append(numpy.clip(turn + 2.0 * math.pi * shift, low, high))
+    return numpy.stack(found, axis=1)
+
+
+def worst_case(model: ChainModel, masses: MassModel, bounds: numpy.ndarray, column: int,
+               gravity: numpy.ndarray) -> WorstCase:
+    """Return the largest ``|torque|`` of movable joint ``column`` over ``bounds``."""
+    torque = _Torque(model, masses, gravity, column)
+    columns = relevant(model, column)
+    base = bounds.mean(axis=1)
+    grid = _grid(bounds, columns, base)
+    size = numpy.abs(torque(grid))
+    home = numpy.clip(numpy.zeros(len(bounds)), bounds[:, 0], bounds[:, 1])  # ties go to it
+    seeds = numpy.concatenate([home[None, :],
+                               grid[numpy.argsort(-size, kind='stable')[:SEEDS - 1]]])
+    best = numpy.abs(torque(seeds))
+    turning = {int(model.source[link])
+               for link in numpy.flatnonzero(model.motion == REVOLUTE)}
+    for _ in range(SWEEPS):
+        before = best.copy()
+        for moved in columns:
+            low, high = bounds[moved]
+            tries = numpy.linspace(low, high, SAMPLES)[None, :].repeat(len(seeds), axis=0)
+            if moved in turning:
+                tries = numpy.concatenate(
+                    [tries, _turning_points(torque, seeds, moved, low, high)], axis=1)
+            trial = numpy.repeat(seeds, tries.shape[1], axis=0)
+            trial[:, moved] = tries.ravel()
+            values = numpy.abs(torque(trial)).reshape(len(seeds), -1)
+            pick = values.argmax(axis=1)
+            better = values[numpy.arange(len(seeds)), pick] > best
+            seeds[better, moved] = tries[better, pick[better]]
+            best = numpy.maximum(best, values[numpy.arange(len(seeds)), pick])
+        if (best - before).max() <= 1e-12 * max(1.0, float(best.max())):
+            break
+    winner = seeds[int(numpy.argmax(best >= best.max() * (1.0 - 1e-12)))]  # the first best
+    value = float(torque(winner[None, :])[0])
+    return WorstCase(model.movable[column], value,
+                     {model.movable[moved]: float(winner[moved])
+                      for moved in _mattering(torque, winner, bounds, columns, value)})
+
+
+def _mattering(torque: _Torque, winner: numpy.ndarray, bounds: numpy.ndarray,
+               columns: list[int], value: float) -> list[int]:
+    """Return the columns whose value changes the torque at ``winner`` (not a pan, a lift)."""
+    probes = numpy.repeat(winner[None, :], 5 * len(columns), axis=0)
+    for number, moved in enumerate(columns):
+        probes[5 * number:5 * number + 5, moved] = numpy.linspace(bounds[moved, 0],
+                                                                  bounds[moved, 1], 5)
+    change = numpy.abs(torque(probes) - value).reshape(len(columns), 5).max(axis=1)
+    return [moved for moved, amount in zip(columns, change)
+            if amount > 1e-9 * max(abs(value), 1e-9)]
+
+
+def is_prismatic(model: ChainModel, column: int) -> bool:
+    """Return whether movable joint ``column`` slides (its effort is a force)."""
+    links = numpy.flatnonzero(model.source == column)
+    return bool(len(links)) and bool((model.motion[links] == PRISMATIC).all())
