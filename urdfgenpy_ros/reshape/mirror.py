@@ -149,6 +149,7 @@ def mirror_subtree(robot, root: str, plane: str = 'xz', frame: str | None = None
     blocks = _robot_blocks(robot, joint_names, link_names, renamed)
     _rename(piece, _Renaming(link_names, joint_names))
     _rename_sensors(piece, renamed)
+    meshes.commit()  # the last step that can fail: all mirrored files, or none
     for link in piece.links:
         robot.add_link(link)
     for joint in piece.joints:
