@@ -530,14 +530,15 @@ class Robot:
                        search_paths=tuple(search_paths))
         return self
 
-    def merge_fixed(self, keep: tuple[str, ...] | list[str] = (), *,
+    def merge_fixed(self, keep: str | tuple[str, ...] | list[str] = (), *,
                     drop_frames: bool = False) -> Robot:
         """
         Return a copy with fixed-joint children merged into their parents.
 
         Inertia is lumped exactly as the SDF writer (and SDFormat) lumps it; visuals and
         collisions move with their poses. Each merged link stays as a massless frame on
-        its fixed joint unless ``drop_frames``; links in ``keep`` are never merged.
+        its fixed joint unless ``drop_frames``; links in ``keep`` (a name or several) are
+        never merged.
         """
         from urdfgenpy_ros.reshape.merge import merge_fixed
         return merge_fixed(self, keep, drop_frames=drop_frames)
