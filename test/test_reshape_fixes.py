@@ -154,3 +154,26 @@ def test_a_tip_on_a_moving_joint_is_told_of_the_modified_convention() -> None:
     pin.framesForwardKinematics(model, data, q)
     got = data.oMf[model.getFrameId('link_6')].homogeneous
     assert numpy.abs(got - numpy.array(modified.flange(list(q)))).max() < 1e-9
+
+
+def test_a_transmission_shared_with_joints_outside_the_limb_is_said_not_mirrored(
+        tmp_path: Path) -> None:
+    source = tmp_path / 'arm.urdf'
+    source.write_text(
+        '<robot name="r"><link name="base_link"/><link name="left_arm"/><link name="head"/>'
+        '<joint name="left_j" type="revolute"><parent link="base_link"/><child '
+        'link="left_arm"/><origin xyz="0 0.2 0"/><axis xyz="1 0 0"/><limit lower="-1" '
+        'upper="0" effort="1" velocity="1"/></joint><joint name="neck" type="revolute">'
+        '<parent link="base_link"/><child link="head"/><axis xyz="0 0 1"/><limit lower="-1" '
+        'upper="1" effort="1" velocity="1"/></joint><transmission name="coupled">'
+        '<type>transmission_interface/DifferentialTransmission</type><joint name="left_j"/>'
+        '<joint name="neck"/><actuator name="m1"/><actuator name="m2"/></transmission>'
+        '</robot>')
+    result = CliRunner().invoke(main, ['mirror', str(source), '--root', 'left_arm', '-o',
+                                       str(tmp_path / 'two.urdf')])
+    assert result.exit_code == 0, result.output
+    lines = [line for line in result.output.splitlines() if line.startswith('warning:')]
+    assert lines == ["warning: mirror: transmission 'coupled' drives left_j of the limb and "
+                     'joints outside it: not mirrored (write its mirror image by hand)']
+    assert_check_urdf_accepts(tmp_path / 'two.urdf')
+    assert Robot.from_urdf(tmp_path / 'two.urdf').to_urdf().count('<transmission') == 1

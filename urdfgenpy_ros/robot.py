@@ -519,9 +519,12 @@ class Robot:
         Add the mirror image of the subtree below ``root``'s parent joint; return the robot.
 
         The reflection is through ``plane`` ('xz', 'yz' or 'xy') of link ``frame`` (the
-        root link by default); names change by ``rename`` (default ``{'left_': 'right_'}``,
-        every reference follows). Mirrored meshes are written beside the originals, or in
-        ``mesh_folder`` (``package://`` URIs resolve through ``search_paths`` too).
+        robot's root link by default); names change by ``rename`` (default
+        ``{'left_': 'right_'}``: a name starting with a key gets the value as its prefix
+        instead, a key only further in a name is replaced wherever it is; every reference
+        follows). Mirrored meshes are written beside the originals, or in ``mesh_folder``
+        (``package://`` URIs resolve through ``search_paths`` too); nothing is written
+        unless the whole mirror succeeds.
         :func:`urdfgenpy_ros.reshape.mirror.mirror_subtree` also returns each joint's rule
         (positions kept or negated).
         """

@@ -58,8 +58,9 @@ def _in_option_words(text: str) -> str:
 @click.option('--frame', default=None,
               help="The link whose plane it is (default: the robot's root link).")
 @click.option('--rename', 'renames', multiple=True, metavar='OLD:NEW',
-              help="Replace OLD by NEW in the copy's names (repeatable; default "
-                   'left_:right_).')
+              help='Rename the copy: a name starting with OLD starts with NEW instead; '
+                   'OLD only further in a name is replaced wherever it is (repeatable; '
+                   'default left_:right_).')
 @click.option('--mesh-folder', type=click.Path(file_okay=False, path_type=Path), default=None,
               help='Write the mirrored meshes here (default: beside the originals).')
 @click.option('--output', '-o', required=True, type=click.Path(dir_okay=False, path_type=Path),
