@@ -207,7 +207,7 @@ def write_table(table: DHTable, path: str | PathLike[str], degrees: bool = False
     file = Path(path)
     if file.suffix.lower() == '.csv':
         if not (table.base.is_identity and table.tool.is_identity):
-            raise ModelError(f'{file}: this table has base and tool transforms, which CSV '
+            raise ModelError(f'{file}: this table has a base or tool transform, which CSV '
                              'cannot hold: write .yaml')
         buffer = io.StringIO()
         buffer.write(f'# convention: {table.convention.value}\n# degrees: '
