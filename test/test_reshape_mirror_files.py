@@ -144,15 +144,23 @@ def test_an_obj_keeps_its_texture_and_a_dae_says_it_loses_it(tmp_path: Path) -> 
     source = tmp_path / 'robot.urdf'
     source.write_text(ARM.format(shapes=_shape('visual', 'meshes/arm.obj')
                                  + _shape('visual', str(hip))))
-    result = _mirror(str(source), '--root', 'left_arm', '--mesh-folder', str(tmp_path / 'mf'),
-                     '-o', str(tmp_path / 'two.urdf'))
-    assert result.exit_code == 0, result.output
-    lines = [line for line in result.output.splitlines() if line.startswith('warning:')]
-    assert len(lines) == 1 and 'hip_l.dae' in lines[0] and 'texture' in lines[0], lines
+    for attempt in range(2):  # a re-run finds the OBJ, its material and image again
+        result = _mirror(str(source), '--root', 'left_arm', '--mesh-folder',
+                         str(tmp_path / 'mf'), '-o', str(tmp_path / f'two{attempt}.urdf'))
+        assert result.exit_code == 0, result.output
+        lines = [line for line in result.output.splitlines() if line.startswith('warning:')]
+        assert len(lines) == 1 and 'hip_l.dae' in lines[0] and 'texture' in lines[0], lines
     mirrored = trimesh.load(tmp_path / 'mf' / 'arm_mirror_xz.obj', force='mesh')
     assert numpy.array_equal(numpy.asarray(mirrored.visual.material.image.convert('RGB')),
                              numpy.asarray(image))  # the texture came along, in mf/
     assert numpy.allclose(mirrored.visual.uv, box.visual.uv)
+    before = {path.name: path.read_bytes() for path in (tmp_path / 'meshes').iterdir()}
+    beside = _mirror(str(source), '--root', 'left_arm', '-o', str(tmp_path / 'beside.urdf'))
+    assert beside.exit_code == 0, beside.output  # beside the original: its files untouched
+    assert all((tmp_path / 'meshes' / name).read_bytes() == data
+               for name, data in before.items())
+    assert trimesh.load(tmp_path / 'meshes' / 'arm_mirror_xz.obj',
+                        force='mesh').visual.material.image is not None
 
 
 def test_mirror_command_speaks_of_its_own_options(tmp_path: Path) -> None:

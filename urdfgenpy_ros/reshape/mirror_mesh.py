@@ -133,6 +133,7 @@ def _export(mesh: Any, target: Path) -> tuple[bytes, dict[str, bytes]]:
     kind = target.suffix.lstrip('.').lower()
     if kind == 'obj' and getattr(mesh.visual, 'kind', None) == 'texture':
         from trimesh.exchange.obj import export_obj
+        mesh.visual.material.name = target.stem  # its image is named after it: no clash
         text, files = export_obj(mesh, return_texture=True, mtl_name=f'{target.stem}.mtl')
         return text.encode(), {name: bytes(content) for name, content in files.items()}
     data = mesh.export(None, file_type=kind)
