@@ -233,7 +233,12 @@ class DHTable:
         return read_table(path)
 
     def save(self, path: str | PathLike[str], degrees: bool = False) -> None:
-        """Write the table to a .yaml/.yml or .csv file, angles in degrees if asked."""
+        """
+        Write the table to a .yaml/.yml or .csv file, angles in degrees if asked.
+
+        :raises ModelError: for a .csv when the table has a base or tool transform (CSV
+            cannot hold them; nothing is written).
+        """
         from urdfgenpy_ros.formats.dh_table import write_table
         write_table(self, path, degrees)
 

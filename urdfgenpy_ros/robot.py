@@ -519,9 +519,12 @@ class Robot:
         Add the mirror image of the subtree below ``root``'s parent joint; return the robot.
 
         The reflection is through ``plane`` ('xz', 'yz' or 'xy') of link ``frame`` (the
-        root link by default); names change by ``rename`` (default ``{'left_': 'right_'}``,
-        every reference follows). Mirrored meshes are written beside the originals, or in
-        ``mesh_folder`` (``package://`` URIs resolve through ``search_paths`` too).
+        robot's root link by default); names change by ``rename`` (default
+        ``{'left_': 'right_'}``: a name starting with a key gets the value as its prefix
+        instead, a key only further in a name is replaced wherever it is; every reference
+        follows). Mirrored meshes are written beside the originals, or in ``mesh_folder``
+        (``package://`` URIs resolve through ``search_paths`` too); nothing is written
+        unless the whole mirror succeeds.
         :func:`urdfgenpy_ros.reshape.mirror.mirror_subtree` also returns each joint's rule
         (positions kept or negated).
         """
@@ -530,14 +533,15 @@ class Robot:
                        search_paths=tuple(search_paths))
         return self
 
-    def merge_fixed(self, keep: tuple[str, ...] | list[str] = (), *,
+    def merge_fixed(self, keep: str | tuple[str, ...] | list[str] = (), *,
                     drop_frames: bool = False) -> Robot:
         """
         Return a copy with fixed-joint children merged into their parents.
 
         Inertia is lumped exactly as the SDF writer (and SDFormat) lumps it; visuals and
         collisions move with their poses. Each merged link stays as a massless frame on
-        its fixed joint unless ``drop_frames``; links in ``keep`` are never merged.
+        its fixed joint unless ``drop_frames``; links in ``keep`` (a name or several) are
+        never merged.
         """
         from urdfgenpy_ros.reshape.merge import merge_fixed
         return merge_fixed(self, keep, drop_frames=drop_frames)

@@ -51,11 +51,13 @@ from urdfgenpy_ros.robot import Robot
               help='Merge links on fixed joints into their parents (exact lumped inertia); '
                    'each stays a massless frame unless --drop-frames.')
 @click.option('--drop-frames', is_flag=True, help='With --merge-fixed: remove merged links.')
+@click.option('--keep', 'keep', multiple=True, metavar='LINK',
+              help='With --merge-fixed: never merge this link (repeatable).')
 @input_options
 def convert(source: Path, target: Path, arguments: tuple[str, ...],
             package_paths: tuple[Path, ...], force: bool, lump_fixed: bool,
             urdf_version: str | None, merge_fixed: bool = False,
-            drop_frames: bool = False) -> None:
+            drop_frames: bool = False, keep: tuple[str, ...] = ()) -> None:
     """
     Convert SOURCE to TARGET; the suffixes choose the formats.
 
@@ -70,6 +72,10 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     if urdf_version is not None and kind not in ('urdf', 'xacro'):
         raise UrdfgenpyError(f'{target}: --urdf-version applies to .urdf and .xacro output '
                              'only: drop it or write .urdf')
+    for given, option in ((drop_frames, '--drop-frames'), (keep, '--keep')):
+        if given and not merge_fixed:
+            raise UrdfgenpyError(f'{option} applies with --merge-fixed only: add '
+                                 '--merge-fixed or drop it')
     if target.exists() and not force:
         raise UrdfgenpyError(f'{target} exists: pass --force to overwrite it')
     robot = read_robot(source, arguments, package_paths)
@@ -77,8 +83,8 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
         robot, changes = as_version(robot, urdf_version)
         for change in changes:
             click.echo(str(change), err=True)
-    if merge_fixed or drop_frames:
-        robot = robot.merge_fixed(drop_frames=drop_frames)
+    if merge_fixed:
+        robot = robot.merge_fixed(keep, drop_frames=drop_frames)
     if lump_fixed:
         robot = lump_fixed_joints(robot)  # what to_sdf(lump_fixed=True) writes
     if kind == 'sdf':

@@ -46,10 +46,6 @@ def dh(source: Path, arguments: tuple[str, ...], base: str, tip: str, convention
         raise UrdfgenpyError(f'{output} exists: pass --force to overwrite it')
     robot = read_robot(source, arguments, package_paths)
     table = DHTable.from_robot(robot, base, tip, convention)
-    if output.suffix.lower() == '.csv' and not (table.base.is_identity
-                                                and table.tool.is_identity):
-        raise UrdfgenpyError(f'{output}: this chain needs base and tool transforms, which '
-                             'CSV cannot hold: write .yaml')
-    table.save(output, degrees)
+    table.save(output, degrees)  # refuses a .csv for a table with base or tool transforms
     click.echo(f'wrote {output}: {len(table.rows)} rows ({convention}) from {base!r} to '
                f'{tip!r}')

@@ -18,13 +18,15 @@ from __future__ import annotations
 
 from pathlib import Path
 import re
+import warnings
 
 import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot
-from urdfgenpy_ros.errors import ModelError, UrdfgenpyError
+from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.reshape.mirror import mirror_subtree, PLANES
+from urdfgenpy_ros.resources import rebase_meshes
 
 
 def _renames(pairs: tuple[str, ...]) -> dict[str, str]:
@@ -38,16 +40,27 @@ def _renames(pairs: tuple[str, ...]) -> dict[str, str]:
     return renames
 
 
+def _in_option_words(text: str) -> str:
+    """Return a library message with its fix said in this command's options."""
+    text = re.sub(r'pass rename= that changes them; it was \{.*\}',
+                  'pass --rename OLD:NEW that changes them', text)
+    text = text.replace('pass its folder in search_paths',
+                        'pass its folder with -p/--package-path')
+    return text.replace('mesh_folder=', '--mesh-folder').replace('rename=', '--rename')
+
+
 @click.command()
 @click.argument('source', type=click.Path(exists=True, dir_okay=False, path_type=Path))
 @click.argument('arguments', nargs=-1, metavar='[NAME:=VALUE]...')
 @click.option('--root', required=True, help='The first link of the limb to mirror.')
 @click.option('--plane', type=click.Choice(sorted(PLANES)), default='xz', show_default=True,
               help='The mirror plane, in the axes of --frame.')
-@click.option('--frame', default=None, help='The link whose plane it is (default: the root).')
+@click.option('--frame', default=None,
+              help="The link whose plane it is (default: the robot's root link).")
 @click.option('--rename', 'renames', multiple=True, metavar='OLD:NEW',
-              help="Replace OLD by NEW in the copy's names (repeatable; default "
-                   'left_:right_).')
+              help='Rename the copy: a name starting with OLD starts with NEW instead; '
+                   'OLD only further in a name is replaced wherever it is (repeatable; '
+                   'default left_:right_).')
 @click.option('--mesh-folder', type=click.Path(file_okay=False, path_type=Path), default=None,
               help='Write the mirrored meshes here (default: beside the originals).')
 @click.option('--output', '-o', required=True, type=click.Path(dir_okay=False, path_type=Path),
@@ -63,13 +76,17 @@ def mirror(source: Path, arguments: tuple[str, ...], root: str, plane: str,
         raise UrdfgenpyError(f'{output} exists: pass --force to overwrite it')
     robot = read_robot(source, arguments, package_paths)
     try:
-        rules = mirror_subtree(robot, root, plane, frame, _renames(renames) or None,
-                               mesh_folder=mesh_folder, search_paths=package_paths)
-    except ModelError as error:  # its fix in the words of this command's options
-        text = re.sub(r'pass rename= that changes them; it was \{.*\}',
-                      'pass --rename OLD:NEW that changes them', str(error))
-        raise ModelError(text.replace('pass mesh_folder=', 'pass --mesh-folder')) from None
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter('always')
+            rules = mirror_subtree(robot, root, plane, frame, _renames(renames) or None,
+                                   mesh_folder=mesh_folder, search_paths=package_paths)
+    except UrdfgenpyError as error:  # its fix in the words of this command's options
+        raise UrdfgenpyError(_in_option_words(str(error))) from None
+    for warning in caught:  # ours; others' (deprecations of the mesh readers) are noise here
+        if str(warning.message).startswith('mirror:'):
+            click.echo(f'warning: {_in_option_words(str(warning.message))}', err=True)
     for rule in rules:
         click.echo(str(rule))
+    rebase_meshes(robot, source.parent, output.parent)  # relative meshes still found
     robot.save(output)
     click.echo(f'wrote {output}: {len(robot.links)} links, {len(robot.joints)} joints')

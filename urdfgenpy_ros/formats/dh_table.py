@@ -30,7 +30,7 @@ from pathlib import Path
 from typing import Any
 
 from urdfgenpy_ros.dh import DHConvention, DHRow, DHTable
-from urdfgenpy_ros.errors import MissingDependencyError, ParseError, SourceLocation
+from urdfgenpy_ros.errors import MissingDependencyError, ModelError, ParseError, SourceLocation
 from urdfgenpy_ros.geometry import Origin
 
 COLUMNS = ('joint', 'a', 'alpha', 'd', 'theta_offset', 'type', 'lower', 'upper', 'effort',
@@ -206,6 +206,9 @@ def write_table(table: DHTable, path: str | PathLike[str], degrees: bool = False
                      'velocity': row.velocity})
     file = Path(path)
     if file.suffix.lower() == '.csv':
+        if not (table.base.is_identity and table.tool.is_identity):
+            raise ModelError(f'{file}: this table has a base or tool transform, which CSV '
+                             'cannot hold: write .yaml')
         buffer = io.StringIO()
         buffer.write(f'# convention: {table.convention.value}\n# degrees: '
                      f'{str(degrees).lower()}\n')

@@ -65,9 +65,11 @@ def apply_dh(robot, table, base: str, tip: str) -> list[str]:
         tail_old = multiply(inverse(old_frames[-1]), nominal.flange(zero))
         tail_new = multiply(inverse(new_frames[-1]), table.flange(zero))
         if max_difference(tail_old, tail_new) > 1e-12:
+            other = (', or use the modified convention (its last a, alpha sit before the '
+                     'joint)' if table.convention.value == 'standard' else '')
             raise ModelError(f"tip {tip!r} is the link of joint {last.name!r}: the table's "
                              'tool (and last a, alpha in the standard convention) cannot move '
-                             'it; name as tip a frame on a fixed joint below it')
+                             f'it; name as tip a frame on a fixed joint below it{other}')
     else:
         placed[last.child] = table.flange(zero)
     changed = []

@@ -18,7 +18,10 @@ Merge fixed-joint children into their parents, for URDF output (``Robot.merge_fi
 The lumping is the SDF writer's (:mod:`urdfgenpy_ros.lumping`, which matches SDFormat's):
 masses add, the centre of mass is their mean, tensors turn into the parent's frame and
 shift by the parallel axis theorem. Visuals and collisions move with their poses; moving
-joints below a merged link hang from the link it merged into. Each merged link stays, a
+joints below a merged link hang from the link it merged into. A moved visual or
+collision without a name takes its link's: SDFormat then names it
+``<into>_fixed_joint_lump__<link>_collision_<n>`` from either file, so contact sensors
+naming it keep working. Each merged link stays, a
 massless frame on its fixed joint, so TF frames survive (its ``<gazebo>`` blocks and
 sensors stay on it, where the frame still is); ``drop_frames`` removes it and moves those
 onto the link it merged into, as SDFormat does.
@@ -38,11 +41,11 @@ def merge_fixed(robot, keep=(), *, drop_frames: bool = False):
     """
     Return a copy of ``robot`` with its fixed-joint children merged into their parents.
 
-    Links named in ``keep`` are never merged (links can still merge into them); a fixed
-    joint SDFormat keeps (to ``world``, or a ``<gazebo>`` block's ``preserveFixedJoint``)
-    is kept too.
+    Links named in ``keep`` (a name or several) are never merged (links can still merge
+    into them); a fixed joint SDFormat keeps (to ``world``, or a ``<gazebo>`` block's
+    ``preserveFixedJoint``) is kept too.
     """
-    keep = set(keep)
+    keep = {keep} if isinstance(keep, str) else set(keep)  # one name, or several
     unknown = sorted(name for name in keep if not robot.has_link(name))
     if unknown:
         raise ModelError(f'merge_fixed: keep names no link of {robot.name!r}: '
@@ -77,6 +80,8 @@ def _lump(body, child, pose: Matrix4, drop_frames: bool) -> None:
     at = origin_of(pose)
     for item in (*child.visuals, *child.collisions):
         item.origin = _compose(at, item.origin)
+        if not item.name:  # Gazebo then names it as its lumping of the original did
+            item.name = child.name
     body.visuals.extend(child.visuals)
     body.collisions.extend(child.collisions)
     child.visuals.clear()

@@ -34,6 +34,7 @@ import copy
 from dataclasses import dataclass, replace
 from os import PathLike
 from typing import Any
+import warnings
 
 from urdfgenpy_ros.assembly import _rename, _Renaming
 from urdfgenpy_ros.errors import ModelError
@@ -85,9 +86,16 @@ def _conjugate(origin: Origin, flip: Matrix4) -> Origin:
 
 
 def _renamer(rename: Mapping[str, str]):
+    """
+    Return the renaming: a name starting with a key has that prefix replaced, only it.
+
+    (``l_gripper_l_finger_joint`` by ``l_: r_`` is ``r_gripper_l_finger_joint``, as in
+    PR2.) A key found elsewhere in a name only (``leg_left_1`` by ``left: right``) is
+    replaced wherever it occurs.
+    """
     def renamed(name: str) -> str:
         for old, new in rename.items():
-            name = name.replace(old, new)
+            name = new + name[len(old):] if name.startswith(old) else name.replace(old, new)
         return name
     return renamed
 
@@ -147,8 +155,10 @@ def mirror_subtree(robot, root: str, plane: str = 'xz', frame: str | None = None
     for link in piece.links:
         _mirror_link(link, flip, meshes)
     blocks = _robot_blocks(robot, joint_names, link_names, renamed)
+    _rename_texts(piece, renamed)
     _rename(piece, _Renaming(link_names, joint_names))
     _rename_sensors(piece, renamed)
+    meshes.commit()  # the last step that can fail: all mirrored files, or none
     for link in piece.links:
         robot.add_link(link)
     for joint in piece.joints:
@@ -196,16 +206,17 @@ def _mirror_motion(joint: Joint, flip: Matrix4) -> int:
         return 1
     joint.axis = _clean(other) if joint.axis is not None or other != (1.0, 0.0, 0.0) else None
     if joint.limit is not None:
-        joint.limit = replace(joint.limit, lower=-joint.limit.upper, upper=-joint.limit.lower)
+        joint.limit = replace(joint.limit, lower=-joint.limit.upper + 0.0,
+                              upper=-joint.limit.lower + 0.0)
     if joint.safety_controller is not None:
         soft = joint.safety_controller
-        joint.safety_controller = replace(soft, soft_lower_limit=-soft.soft_upper_limit,
-                                          soft_upper_limit=-soft.soft_lower_limit)
+        joint.safety_controller = replace(soft, soft_lower_limit=-soft.soft_upper_limit + 0.0,
+                                          soft_upper_limit=-soft.soft_lower_limit + 0.0)
     if joint.calibration is not None:
         edges = joint.calibration
         joint.calibration = replace(
-            edges, rising=None if edges.falling is None else -edges.falling,
-            falling=None if edges.rising is None else -edges.rising)
+            edges, rising=None if edges.falling is None else -edges.falling + 0.0,
+            falling=None if edges.rising is None else -edges.rising + 0.0)
     return -1
 
 
@@ -275,9 +286,35 @@ def _rename_sensors(piece: Any, renamed: Any) -> None:
         for sensor in owner.sensors:
             sensor.name = new(sensor.name)
         for block in owner.extensions:
-            for element in block.element.iter('sensor'):
-                if element.get('name'):
+            for element in block.element.iter():
+                if _is_sensor(element) and element.get('name'):
                     element.set('name', new(element.get('name')))
+
+
+def _is_sensor(element: Any) -> bool:
+    """Return whether ``element`` is a sensor (``<sensor>``, or gazebo 1.x ``<sensor:camera>``)."""
+    if not isinstance(element.tag, str):
+        return False
+    return element.tag == 'sensor' or element.tag.startswith('{') and 'sensor' in \
+        element.tag.partition('}')[0].lower()
+
+
+def _rename_texts(piece: Any, renamed: Any) -> None:
+    """Rename the names the copy's blocks hold as text (topics, frames: ``l_cam/image``)."""
+    for owner in (*piece.links, *piece.joints):
+        for block in owner.extensions:
+            for element in block.element.iter():
+                if not isinstance(element.tag, str) or len(element) or not element.text:
+                    continue
+                text = element.text.strip()
+                if text and renamed(text) != text:
+                    element.text = element.text.replace(text, renamed(text))
+
+
+def _joints_named(element: Any, robot: Any) -> set[str]:
+    """Return the robot's joints a ``<transmission>`` names (PR2's ``<flexJoint>`` too)."""
+    return {node.get('name') for node in element.iter() if node is not element
+            and isinstance(node.tag, str) and robot.has_joint(node.get('name') or '')}
 
 
 def _robot_blocks(robot: Any, joints: dict[str, str], links: dict[str, str],
@@ -287,25 +324,33 @@ def _robot_blocks(robot: Any, joints: dict[str, str], links: dict[str, str],
 
     A ``<transmission>`` of the limb's joints only is copied, renamed; in other blocks
     (``<ros2_control>``, plugins), each element naming a joint or link of the limb gets a
-    renamed sibling after it.
+    renamed sibling after it. A transmission of the limb's joints and others is not
+    copied: a warning says so.
     """
     renaming = _Renaming(links, joints)
     added = []
     for block in robot.extensions:
         element = block.element
-        named = {node.get('name') for node in element.iter('joint')}
-        if element.tag == 'transmission' and named and named <= set(joints):
-            twin = copy.deepcopy(block)
-            name = twin.element.get('name') or ''
-            twin.element.set('name', renamed(name) if renamed(name) != name else
-                             f'{name}_mirror')
-            for actuator in twin.element.iter('actuator'):
-                old = actuator.get('name') or ''
-                actuator.set('name', renamed(old) if renamed(old) != old else f'{old}_mirror')
-            _rename_block_copy(twin.element, renaming)
-            added.append(twin)
-            continue
         if element.tag == 'transmission':
+            named = _joints_named(element, robot)
+            name = element.get('name') or ''
+            if named and named <= set(joints):
+                twin = copy.deepcopy(block)
+                twin.element.set('name', renamed(name) if renamed(name) != name else
+                                 f'{name}_mirror')
+                for actuator in twin.element.iter():
+                    if isinstance(actuator.tag, str) and \
+                            actuator.tag.lower().endswith('actuator'):
+                        old = actuator.get('name') or ''
+                        actuator.set('name', renamed(old) if renamed(old) != old
+                                     else f'{old}_mirror')
+                _rename_block_copy(twin.element, renaming)
+                added.append(twin)
+            elif named & set(joints):
+                shared = ', '.join(sorted(named & set(joints)))
+                warnings.warn(f'mirror: transmission {name!r} drives {shared} of the limb '
+                              'and joints outside it: not mirrored (write its mirror image '
+                              'by hand)', stacklevel=3)
             continue
         for node in list(element.iter()):
             if not isinstance(node.tag, str) or node is element:
