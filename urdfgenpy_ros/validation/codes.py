@@ -96,6 +96,16 @@ CODES: dict[str, tuple[Severity, str]] = {
     'M505': (W, 'MuJoCo refuses the model'),
     'M506': (W, 'MuJoCo cannot read the mesh'),
     'M507': (W, 'MuJoCo warns while compiling the model'),
+    # MJCF export (formats/mjcf/losses.py): what the MJCF cannot carry
+    'M801': (W, 'MJCF has no joint velocity limit'),
+    'M802': (W, 'MJCF has no safety controller'),
+    'M803': (W, 'MJCF has no joint calibration'),
+    'M804': (W, 'joint written as a stand-in of several MJCF joints'),
+    'M805': (W, 'transmission or ros2_control part that maps to no actuator'),
+    'M806': (W, 'Gazebo element not carried into MJCF'),
+    'M807': (W, 'element or attribute with no MJCF counterpart'),
+    'M808': (W, "<mujoco> block attribute MuJoCo's schema refuses"),
+    'M809': (W, 'geometry not written to MJCF (mesh not found or unreadable, size zero)'),
     'G601': (W, "SDFormat's URDF conversion lumps the link into its parent (fixed joint)"),
     'G602': (W, "SDFormat's URDF conversion drops the link (and everything below it)"),
 }

@@ -1,0 +1,329 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+
+"""
+MuJoCo MJCF writer: every link a body, the physics as the URDF gives it, losses named.
+
+:func:`write_mjcf` returns an :class:`MjcfResult`: the MJCF text, the findings for what
+the MJCF cannot carry (M801-M808, in ``check``'s format), the choices it made (the
+base, the gains) as notes, and the files it wrote beside the model (meshes, scene).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from os import PathLike
+from pathlib import Path
+from typing import Any, TYPE_CHECKING
+
+from lxml import etree
+
+from urdfgenpy_ros.errors import ModelError, UrdfgenpyError, ValidationError
+from urdfgenpy_ros.floats import fmt, fmt_vec
+from urdfgenpy_ros.formats.mjcf.actuators import ACTUATOR_TYPES, declared_actuators, gears
+from urdfgenpy_ros.formats.mjcf.actuators import write_actuators
+from urdfgenpy_ros.formats.mjcf.blocks import (
+    apply_block, check_attributes, merge_overlay, read_overlay)
+from urdfgenpy_ros.formats.mjcf.bodies import BodyTree, BodyWriter, WORLD
+from urdfgenpy_ros.formats.mjcf.fusing import fused
+from urdfgenpy_ros.formats.mjcf.losses import Carried, find_losses
+from urdfgenpy_ros.formats.mjcf.meshes import MeshAssets
+from urdfgenpy_ros.resources import PackageResolver
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
+
+BASES = ('fixed', 'floating')
+DEFAULT_KP = 1.0  # MuJoCo's own default for a position actuator
+DEFAULT_KV = 1.0  # and for a velocity actuator
+EXPANDED = ' (expanded)'
+REFUSED = ('I201', 'I202', 'I203', 'I207')  # what MuJoCo refuses to compile
+
+
+class MjcfRefusedError(UrdfgenpyError):
+    """The robot has what MuJoCo refuses (an inertia, a mass): nothing was written."""
+
+    def __init__(self, message: str, findings: list[ValidationError]) -> None:
+        super().__init__(message)
+        self.findings = findings
+
+
+@dataclass
+class MjcfResult:
+    """The MJCF text, what it cannot carry, the choices made, and the files written."""
+
+    text: str
+    findings: list[ValidationError] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    files: list[Path] = field(default_factory=list)
+
+
+def _source_folder(robot: Robot) -> Path | None:
+    file = robot.source.file if robot.source is not None else None
+    if not file:
+        return None
+    path = Path(file.removesuffix(EXPANDED))
+    return path.parent if path.is_file() else None
+
+
+def _refuse(robot: Robot, written: Robot, fuse_fixed: bool) -> None:
+    """Raise MjcfRefusedError when MuJoCo refuses a mass or tensor of ``written``."""
+    from urdfgenpy_ros.validation import validate
+    refused = [finding for finding in validate(written, check_meshes=False)
+               if finding.code in REFUSED]
+    if refused:
+        fix = '' if fuse_fixed else ' (or pass fuse_fixed / --fuse-fixed if they are fixed links)'
+        raise MjcfRefusedError(
+            f'robot {robot.name!r}: MuJoCo refuses the mass or inertia of '
+            f'{len(refused)} link(s): fix them (urdfgenpy check --fix){fix}; nothing written',
+            refused)
+
+
+def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
+               fuse_fixed: bool = False, base: str | None = None,
+               actuators: str | None = None, kp: float | None = None,
+               kv: float | None = None, scene: bool = False,
+               overlay: str | PathLike[str] | None = None, meshdir: str = 'assets',
+               search_paths: Any = ()) -> MjcfResult:
+    """
+    Return the MJCF of ``robot``; with ``path``, write it, its meshes and ``scene.xml``.
+
+    ``fuse_fixed`` merges fixed-joint children into their parents (the lumped inertia,
+    each merged link a ``<site>``); ``base`` is ``fixed`` (the default) or ``floating``
+    (a free joint) unless the root link is ``world``; ``actuators`` (position, velocity,
+    motor) puts that actuator on every joint instead of what ``<ros2_control>``
+    declares; ``kp``/``kv`` are the servo gains (MuJoCo's default 1 otherwise);
+    ``overlay`` is an MJCF file merged in by element name; ``meshdir`` the folder beside
+    ``path`` the meshes go to.
+
+    :raises MjcfRefusedError: for a mass or tensor MuJoCo refuses, before writing.
+    :raises ModelError: for a bad option or a mesh that cannot be found or read.
+    """
+    if base not in (None, *BASES):
+        raise ModelError(f'base {base!r}: use fixed or floating')
+    if actuators not in (None, *ACTUATOR_TYPES):
+        raise ModelError(f"actuators {actuators!r}: use {', '.join(ACTUATOR_TYPES)}")
+    if len(robot.roots) != 1:
+        raise ModelError(f'robot {robot.name!r} has {len(robot.roots)} root links: MJCF '
+                         'needs one tree (urdfgenpy check says why)')
+    for joint in robot.joints:
+        for role in ('parent', 'child'):
+            if not robot.has_link(getattr(joint, role)):
+                raise ModelError(f'joint {joint.name!r}: {role} link {getattr(joint, role)!r}'
+                                 ' does not exist: define the link or fix the name')
+    notes: list[str] = []
+    written, sites, owners = fused(robot) if fuse_fixed else (robot, {}, {})
+    _refuse(robot, written, fuse_fixed)
+    at_world = robot.root.name == WORLD
+    taken = 'fixed' if base is None else base
+    if at_world:
+        notes.append(f"base: the root link is 'world': its joints attach the robot to the "
+                     f'world{" (base=" + repr(base) + " ignored)" if base else ""}')
+    elif base is None:
+        notes.append("base: fixed (the default; base='floating' / --base floating gives the "
+                     'root a free joint)')
+    else:
+        notes.append(f'base: {base}')
+    meshes = MeshAssets(PackageResolver(search_paths), _source_folder(robot),
+                        meshdir if path is not None else None)
+    document = etree.Element('mujoco', model=robot.name)
+    document.append(etree.Comment(
+        (f' Written by urdfgenpy_ros from robot {robot.name!r}. {notes[0]}. Fixed links '
+         f'{"fused into their parents (each a site)" if fuse_fixed else "kept as bodies"}. '
+         ).replace('--', '- -')))
+    compiler = etree.SubElement(document, 'compiler', angle='radian', autolimits='true',
+                                inertiafromgeom='false')
+    if path is not None and meshdir:
+        compiler.set('meshdir', meshdir)
+    defaults = etree.SubElement(etree.SubElement(document, 'default'), 'default',
+                                {'class': 'visual'})
+    etree.SubElement(defaults, 'geom', contype='0', conaffinity='0', group='2')
+    collision = etree.SubElement(defaults.getparent(), 'default', {'class': 'collision'})
+    etree.SubElement(collision, 'geom', group='3')
+    # inertia comes from the URDF: a mesh's own volume (open surfaces have none) is unused
+    etree.SubElement(defaults.getparent(), 'mesh', inertia='shell')
+    asset = etree.SubElement(document, 'asset')
+    worldbody = etree.SubElement(document, 'worldbody')
+    writer = BodyWriter(written, meshes, taken, sites)
+    tree = writer.write(worldbody)
+    for element, attributes in meshes.elements():
+        etree.SubElement(asset, element, attributes)
+    for name, rgba in tree.materials.items():
+        etree.SubElement(asset, 'material', name=name, rgba=fmt_vec(rgba))
+    if not len(asset):
+        document.remove(asset)
+    carried = Carried(stand_ins=dict(tree.stand_ins), missing=dict(tree.missing),
+                      followers={j.name for j in robot.joints if j.mimic is not None},
+                      links={link.name for link in robot.links},
+                      mujoco_check=check_attributes)
+    _friction(robot, written, worldbody, owners, carried)
+    _equalities(document, written)
+    chosen = declared_actuators(written, actuators)
+    gains = (kp if kp is not None else DEFAULT_KP, kv if kv is not None else DEFAULT_KV)
+    write_actuators(document, chosen, *gains)
+    _note_gains(notes, chosen, kp, kv, gains)
+    reductions = gears(written)
+    for actuator in chosen:
+        if actuator.origin is not None:
+            carried.interfaces.add(id(actuator.origin))
+        if actuator.joint.name in reductions:
+            carried.transmissions.add(id(reductions[actuator.joint.name][1]))
+    _keyframe(document, tree, written)
+    from urdfgenpy_ros.formats.urdf import write_urdf
+    urdf = etree.fromstring(write_urdf(robot).encode('utf-8'),
+                            etree.XMLParser(huge_tree=True, resolve_entities=False,
+                                            no_network=True))
+    _map_blocks(written, urdf, carried)
+    apply_block(urdf.find('mujoco'), document)
+    if overlay is not None:
+        merge_overlay(document, read_overlay(overlay))
+    file = robot.source.file if robot.source is not None else None
+    findings = find_losses(urdf, file, carried)
+    from urdfgenpy_ros.validation.xacro_source import in_source
+    findings = in_source(findings, robot)
+    etree.indent(document, space='  ')
+    text = etree.tostring(document, encoding='unicode') + '\n'
+    result = MjcfResult(text, findings, notes)
+    if path is not None:
+        result.files = _write(Path(path), text, meshes, meshdir, scene, robot.name)
+    return result
+
+
+def _note_gains(notes: list[str], chosen: list[Any], kp: float | None, kv: float | None,
+                gains: tuple[float, float]) -> None:
+    kinds = {actuator.kind for actuator in chosen}
+    for kind, given, value, option in (('position', kp, gains[0], 'kp'),
+                                       ('velocity', kv, gains[1], 'kv')):
+        if kind in kinds:
+            said = 'given' if given is not None else f"MuJoCo's default: set {option}= / --{option}"
+            notes.append(f'{kind} actuators: {option}={fmt(value)} ({said})')
+
+
+def _friction(robot: Robot, written: Robot, worldbody: Any, owners: dict[str, list[str]],
+              carried: Carried) -> None:
+    """Give each link's collision geoms the ``mu1`` of its ``<gazebo reference>`` block."""
+    friction: dict[str, str] = {}
+    for block in robot.extensions:
+        reference = block.reference
+        if block.tag != 'gazebo' or reference is None or not robot.has_link(reference):
+            continue
+        mu = block.element.findtext('mu1') or block.element.findtext('mu2')
+        if mu is None:
+            continue
+        try:
+            value = float(mu.strip())
+        except ValueError:
+            continue
+        friction[reference] = f'{fmt(value)} 0.005 0.0001'  # MuJoCo's torsion and rolling
+        mu2 = block.element.findtext('mu2')
+        if mu2 is None or mu2.strip() == mu.strip():
+            carried.friction_links.add(reference)
+    if not friction:
+        return
+    for body in worldbody.iter('body'):
+        name = body.get('name')
+        link_owners = owners.get(name, None)
+        geoms = [geom for geom in body.findall('geom') if geom.get('class') == 'collision']
+        for number, geom in enumerate(geoms):
+            owner = link_owners[number] if link_owners is not None else name
+            if owner in friction:
+                geom.set('friction', friction[owner])
+
+
+def _equalities(document: Any, robot: Robot) -> None:
+    """Write each mimic joint as a joint equality: q = offset + multiplier * q_leader."""
+    mimics = [joint for joint in robot.joints if joint.mimic is not None
+              and joint.type.is_movable and robot.has_joint(joint.mimic.joint)]
+    if not mimics:
+        return
+    section = etree.SubElement(document, 'equality')
+    for joint in mimics:
+        assert joint.mimic is not None
+        etree.SubElement(section, 'joint', name=f'{joint.name}_mimic', joint1=joint.name,
+                         joint2=joint.mimic.joint,
+                         polycoef=fmt_vec((joint.mimic.offset, joint.mimic.multiplier,
+                                           0.0, 0.0, 0.0)))
+
+
+def _keyframe(document: Any, tree: BodyTree, robot: Robot) -> None:
+    """Write the ``home`` keyframe: every joint at zero, clamped to its limits."""
+    if not tree.joints:
+        return
+    home = {joint.name: joint.home for joint in tree.joints}
+    for joint in robot.joints:
+        mimic = joint.mimic
+        if mimic is not None and joint.name in home and mimic.joint in home \
+                and len(home[joint.name]) == 1:
+            value = mimic.offset + mimic.multiplier * home[mimic.joint][0]
+            limit = joint.limit
+            if limit is not None and joint.type.needs_limit and limit.lower < limit.upper:
+                value = min(max(value, limit.lower), limit.upper)
+            home[joint.name] = (value,)
+    qpos = [value for joint in tree.joints for value in home[joint.name]]
+    keyframe = etree.SubElement(document, 'keyframe')
+    etree.SubElement(keyframe, 'key', name='home', qpos=fmt_vec(qpos))
+
+
+def _map_blocks(robot: Robot, urdf: Any, carried: Carried) -> None:
+    """
+    Carry the marks made on the model's blocks over to the URDF text's elements.
+
+    The text holds the robot's transmission and ros2_control blocks in the model's order.
+    """
+    blocks = [node for node in urdf if isinstance(node.tag, str)
+              and node.tag in ('gazebo', 'transmission', 'ros2_control')]
+    # the text writes robot.extensions in order (link- and joint-level ones are beside them)
+    by_tag: dict[str, list[Any]] = {}
+    for node in blocks:
+        by_tag.setdefault(node.tag, []).append(node)
+    model_blocks: dict[str, list[Any]] = {}
+    for block in robot.extensions:
+        model_blocks.setdefault(block.tag, []).append(block.element)
+    for tag in ('transmission', 'ros2_control'):
+        for model, text in zip(model_blocks.get(tag, []), by_tag.get(tag, [])):
+            _mark(model, text, carried)
+
+
+def _mark(model: Any, text: Any, carried: Carried) -> None:
+    """Mark ``text``'s elements as carried where ``model``'s same elements were."""
+    if id(model) in carried.transmissions:
+        carried.transmissions.add(id(text))
+    for mine, theirs in zip(model.iter(), text.iter()):
+        if id(mine) in carried.interfaces:
+            carried.interfaces.add(id(theirs))
+
+
+def _write(path: Path, text: str, meshes: MeshAssets, meshdir: str, scene: bool,
+           name: str) -> list[Path]:
+    """Write the model, its meshes and, with ``scene``, ``scene.xml``; return the files."""
+    from urdfgenpy_ros.formats._xml import write_text
+    contents = meshes.contents()  # converted first: a mesh that fails writes nothing
+    written = []
+    folder = path.parent / meshdir
+    for file, data in contents.items():
+        folder.mkdir(parents=True, exist_ok=True)
+        (folder / file).write_bytes(data)
+        written.append(folder / file)
+    write_text(path, text)
+    written.append(path)
+    if scene:
+        from urdfgenpy_ros.formats.mjcf.scene import scene_text
+        target = path.parent / 'scene.xml'
+        if target.resolve() == path.resolve():
+            raise ModelError(f'{path}: the scene is written to scene.xml beside the model: '
+                             'name the model otherwise')
+        write_text(target, scene_text(path.name, name))
+        written.append(target)
+    return written
