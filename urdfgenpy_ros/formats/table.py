@@ -118,8 +118,12 @@ def _write_sdf(robot: Robot, path: PathArg, **options: Any) -> str:
 
 
 def _write_mjcf(robot: Robot, path: PathArg, **options: Any) -> str:
+    import warnings
     from urdfgenpy_ros.formats.mjcf import write_mjcf
-    return write_mjcf(robot, path, **options).text
+    result = write_mjcf(robot, path, **options)
+    for finding in result.findings:
+        warnings.warn(str(finding), stacklevel=3)
+    return result.text
 
 
 FORMATS: tuple[Format, ...] = (

@@ -177,20 +177,19 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     reductions = gears(written)
     for actuator in chosen:
         if actuator.origin is not None:
-            carried.interfaces.add(id(actuator.origin))
+            carried.interfaces.add(actuator.origin)
         if actuator.joint.name in reductions:
-            carried.transmissions.add(id(reductions[actuator.joint.name][1]))
+            carried.transmissions.add(reductions[actuator.joint.name][1])
     _keyframe(document, tree, written)
     from urdfgenpy_ros.formats.urdf import write_urdf
     urdf = etree.fromstring(write_urdf(robot).encode('utf-8'),
                             etree.XMLParser(huge_tree=True, resolve_entities=False,
                                             no_network=True))
-    _map_blocks(written, urdf, carried)
     apply_block(urdf.find('mujoco'), document)
     if overlay is not None:
         merge_overlay(document, read_overlay(overlay))
     file = robot.source.file if robot.source is not None else None
-    findings = find_losses(urdf, file, carried)
+    findings = find_losses(robot, urdf, file, carried)
     from urdfgenpy_ros.validation.xacro_source import in_source
     findings = in_source(findings, robot)
     etree.indent(document, space='  ')
@@ -215,7 +214,7 @@ def _friction(robot: Robot, written: Robot, worldbody: Any, owners: dict[str, li
               carried: Carried) -> None:
     """Give each link's collision geoms the ``mu1`` of its ``<gazebo reference>`` block."""
     friction: dict[str, str] = {}
-    for block in robot.extensions:
+    for block in [*robot.extensions, *(b for link in robot.links for b in link.extensions)]:
         reference = block.reference
         if block.tag != 'gazebo' or reference is None or not robot.has_link(reference):
             continue
@@ -274,35 +273,6 @@ def _keyframe(document: Any, tree: BodyTree, robot: Robot) -> None:
     qpos = [value for joint in tree.joints for value in home[joint.name]]
     keyframe = etree.SubElement(document, 'keyframe')
     etree.SubElement(keyframe, 'key', name='home', qpos=fmt_vec(qpos))
-
-
-def _map_blocks(robot: Robot, urdf: Any, carried: Carried) -> None:
-    """
-    Carry the marks made on the model's blocks over to the URDF text's elements.
-
-    The text holds the robot's transmission and ros2_control blocks in the model's order.
-    """
-    blocks = [node for node in urdf if isinstance(node.tag, str)
-              and node.tag in ('gazebo', 'transmission', 'ros2_control')]
-    # the text writes robot.extensions in order (link- and joint-level ones are beside them)
-    by_tag: dict[str, list[Any]] = {}
-    for node in blocks:
-        by_tag.setdefault(node.tag, []).append(node)
-    model_blocks: dict[str, list[Any]] = {}
-    for block in robot.extensions:
-        model_blocks.setdefault(block.tag, []).append(block.element)
-    for tag in ('transmission', 'ros2_control'):
-        for model, text in zip(model_blocks.get(tag, []), by_tag.get(tag, [])):
-            _mark(model, text, carried)
-
-
-def _mark(model: Any, text: Any, carried: Carried) -> None:
-    """Mark ``text``'s elements as carried where ``model``'s same elements were."""
-    if id(model) in carried.transmissions:
-        carried.transmissions.add(id(text))
-    for mine, theirs in zip(model.iter(), text.iter()):
-        if id(mine) in carried.interfaces:
-            carried.interfaces.add(id(theirs))
 
 
 def _write(path: Path, text: str, meshes: MeshAssets, meshdir: str, scene: bool,

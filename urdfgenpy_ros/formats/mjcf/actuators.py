@@ -52,7 +52,7 @@ class Actuator:
     joint: Joint
     ctrlrange: tuple[float, float] | None
     gear: float
-    origin: Any  # the <command_interface> element, or None when from the option
+    origin: tuple[int, int] | None  # (ros2_control block, element number), None: option
 
 
 def _number(element: Any, name: str) -> float | None:
@@ -65,13 +65,15 @@ def _number(element: Any, name: str) -> float | None:
     return None
 
 
-def gears(robot: Robot) -> dict[str, tuple[float, Any]]:
-    """Return each joint's mechanical reduction and the transmission giving it."""
-    found: dict[str, tuple[float, Any]] = {}
-    for block in robot.extensions:
-        if block.tag != 'transmission':
-            continue
-        element = block.element
+def blocks(robot: Robot, tag: str) -> list[Any]:
+    """Return the elements of the robot's ``tag`` blocks, in order."""
+    return [block.element for block in robot.extensions if block.tag == tag]
+
+
+def gears(robot: Robot) -> dict[str, tuple[float, int]]:
+    """Return each joint's mechanical reduction and the number of the transmission."""
+    found: dict[str, tuple[float, int]] = {}
+    for number, element in enumerate(blocks(robot, 'transmission')):
         joints = [node.get('name') for node in element.findall('joint')]
         reductions = [node.findtext('mechanicalReduction') for node in element.iter()
                       if node.findtext('mechanicalReduction') is not None]
@@ -83,7 +85,7 @@ def gears(robot: Robot) -> dict[str, tuple[float, Any]]:
                 value = 1.0
         for name in joints:
             if name:
-                found[name] = (value, element)
+                found[name] = (value, number)
     return found
 
 
@@ -113,7 +115,7 @@ def declared_actuators(robot: Robot, kind: str | None) -> list[Actuator]:
     followers = {joint.name for joint in robot.joints if joint.mimic is not None}
     found: list[Actuator] = []
 
-    def add(name: str, what: str, element: Any) -> None:
+    def add(name: str, what: str, element: Any, origin: tuple[int, int] | None) -> None:
         if not robot.has_joint(name) or name in followers:
             return
         joint = robot.get_joint(name)
@@ -124,20 +126,22 @@ def declared_actuators(robot: Robot, kind: str | None) -> list[Actuator]:
         if span is not None and what != 'motor':
             span = (span[0] * gear, span[1] * gear) if gear > 0 else (span[1] * gear,
                                                                           span[0] * gear)
-        found.append(Actuator(what, joint, span, gear, element))
+        found.append(Actuator(what, joint, span, gear, origin))
 
     if kind is not None:
         for joint in robot.joints:
-            add(joint.name, kind, None)
+            add(joint.name, kind, None, None)
         return found
-    for block in robot.extensions:
-        if block.tag != 'ros2_control':
-            continue
-        for node in block.element.findall('joint'):
-            for interface in node.findall('command_interface'):
-                what = KINDS.get(interface.get('name', ''))
-                if what is not None:
-                    add(node.get('name', ''), what, interface)
+    for number, block in enumerate(blocks(robot, 'ros2_control')):
+        elements = list(block.iter())
+        for index, interface in enumerate(elements):
+            parent = interface.getparent()
+            if interface.tag != 'command_interface' or parent is None \
+                    or parent.tag != 'joint':
+                continue
+            what = KINDS.get(interface.get('name', ''))
+            if what is not None:
+                add(parent.get('name', ''), what, interface, (number, index))
     return found
 
 

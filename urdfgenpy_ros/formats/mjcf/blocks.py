@@ -39,8 +39,8 @@ SINGLETONS = frozenset(('compiler', 'option', 'size', 'visual', 'statistic', 'fl
 OURS = frozenset(('meshdir', 'angle', 'autolimits', 'inertiafromgeom'))  # the writer's
 
 
-def check_attributes(element: Any) -> list[tuple[Any, str]]:
-    """Return ``(element, message)`` for each attribute of ``element`` MuJoCo refuses."""
+def check_attributes(element: Any) -> list[tuple[str, str]]:
+    """Return ``(attribute, message)`` for each attribute of ``element`` MuJoCo refuses."""
     try:
         import mujoco
     except ImportError:
@@ -55,7 +55,7 @@ def check_attributes(element: Any) -> list[tuple[Any, str]]:
             mujoco.MjModel.from_xml_string(text)
         except ValueError as error:
             said = ' '.join(str(error).split('Element')[0].split())
-            found.append((element, f'<{element.tag} {name}="{value}">: MuJoCo says: {said}'))
+            found.append((name, f'<{element.tag} {name}="{value}">: MuJoCo says: {said}'))
     return found
 
 
@@ -70,8 +70,9 @@ def apply_block(block: Any | None, document: Any) -> None:
         if target is None:
             target = etree.Element(child.tag)
             _insert_section(document, target)
+        refused = {name for name, _ in check_attributes(child)}
         for name, value in child.attrib.items():
-            if name not in OURS:
+            if name not in OURS and name not in refused:
                 target.set(name, value)
 
 

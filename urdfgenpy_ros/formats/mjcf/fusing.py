@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.lumping import lump_fixed_joints, lumps
-from urdfgenpy_ros.transforms import from_xyz_rpy, IDENTITY4, Matrix4, multiply, to_xyz_rpy
+from urdfgenpy_ros.transforms import from_xyz_rpy, Matrix4, multiply, to_xyz_rpy
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -45,25 +45,27 @@ def fused(robot: Robot) -> tuple[Robot, dict[str, list[tuple[str, Origin]]],
     merged = lump_fixed_joints(robot)
     owners = {link.name: [link.name] * len(link.collisions) for link in robot.links}
     parent_of = {joint.name: joint.parent for joint in robot.joints}
-    into: dict[str, tuple[str, Matrix4]] = {}  # merged link -> (body, pose on it)
+    frame = {joint.name: from_xyz_rpy(joint.origin.xyz, joint.origin.rpy)
+             for joint in robot.joints}  # each joint's pose on its current parent
+    on: dict[str, list[tuple[str, Matrix4]]] = {}  # body -> merged links, pose on it
     remaining = list(robot.joints)
     while True:  # the order lump_fixed_joints merges in
         joint = next((j for j in remaining if lumps(j)), None)
         if joint is None:
             break
-        parent = parent_of[joint.name]
-        owners[parent] = owners[parent] + owners.pop(joint.child)
-        body, at = into.get(parent, (parent, IDENTITY4))
-        into[joint.child] = (body, multiply(at, from_xyz_rpy(joint.origin.xyz,
-                                                             joint.origin.rpy)))
+        parent, child, at = parent_of[joint.name], joint.child, frame[joint.name]
+        owners[parent] = owners[parent] + owners.pop(child)
+        moved = [(child, at)] + [(name, multiply(at, pose)) for name, pose in on.pop(child, [])]
+        on[parent] = on.get(parent, []) + moved
         for other in remaining:
-            if parent_of[other.name] == joint.child:
+            if parent_of[other.name] == child:
                 parent_of[other.name] = parent
+                frame[other.name] = multiply(at, frame[other.name])
         remaining.remove(joint)
+    order = {link.name: index for index, link in enumerate(robot.links)}
     sites: dict[str, list[tuple[str, Origin]]] = {}
-    for link in robot.links:  # in the robot's order
-        if link.name in into:
-            body, pose = into[link.name]
+    for body, placed in on.items():
+        for name, pose in sorted(placed, key=lambda item: order[item[0]]):
             xyz, rpy = to_xyz_rpy(pose)
-            sites.setdefault(body, []).append((link.name, Origin(xyz, rpy)))
+            sites.setdefault(body, []).append((name, Origin(xyz, rpy)))
     return merged, sites, owners

@@ -29,7 +29,8 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from urdfgenpy_ros.errors import SourceLocation, ValidationError
-from urdfgenpy_ros.validation.codes import CODES
+from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.validation.findings import Findings
 
 # tag -> (attributes carried, children carried); '*' children: judged by a handler
 CARRIED: dict[str, tuple[frozenset[str], frozenset[str]]] = {
@@ -73,30 +74,29 @@ class Carried:
     """What the writer made of the blocks whose meaning depends on their content."""
 
     friction_links: set[str] = field(default_factory=set)
-    transmissions: set[int] = field(default_factory=set)  # id() of mapped elements
-    interfaces: set[int] = field(default_factory=set)  # id() of command interfaces used
-    sensors: set[int] = field(default_factory=set)  # id() of <sensor> elements written
+    transmissions: set[int] = field(default_factory=set)  # numbers of the mapped ones
+    interfaces: set[tuple[int, int]] = field(default_factory=set)  # (block, element number)
+    sensors: set[str] = field(default_factory=set)  # names of the <sensor>s written
     stand_ins: dict[str, str] = field(default_factory=dict)
     missing: dict[str, str] = field(default_factory=dict)  # mesh URI -> why not written
     followers: set[str] = field(default_factory=set)
     links: set[str] = field(default_factory=set)
-    mujoco_check: Callable[[Any], list[tuple[Any, str]]] | None = None
+    mujoco_check: Callable[[Any], list[tuple[str, str]]] | None = None
 
 
 class Losses:
     """Collect the findings while walking the URDF document."""
 
-    def __init__(self, file: str | None, carried: Carried) -> None:
+    def __init__(self, robot: Robot, file: str | None, carried: Carried) -> None:
         self.file = file
         self.carried = carried
-        self.items: list[ValidationError] = []
+        self.findings = Findings(robot)
 
     def add(self, code: str, node: Any, element: str, message: str) -> None:
         """Record a finding about ``node`` (an lxml element) of the document."""
         line = node.sourceline if self.file is not None else None
-        where = SourceLocation(self.file, line, None if line is None else 1, _path(node))
-        self.items.append(ValidationError(code, CODES[code][0], element, where, message,
-                                          HINTS[code]))
+        self.findings.add(code, SourceLocation(self.file, line), element, _path(node),
+                          message, HINTS[code], str(node.tag))
 
 
 def _path(node: Any) -> str:
@@ -122,11 +122,12 @@ def _owner(node: Any) -> str:
     return 'robot'
 
 
-def find_losses(root: Any, file: str | None, carried: Carried) -> list[ValidationError]:
-    """Return one finding per element or attribute of the URDF ``root`` the MJCF drops."""
-    losses = Losses(file, carried)
+def find_losses(robot: Robot, root: Any, file: str | None, carried: Carried
+                ) -> list[ValidationError]:
+    """Return one finding per element or attribute of ``robot``'s URDF ``root`` not carried."""
+    losses = Losses(robot, file, carried)
     _walk(root, losses)
-    return losses.items
+    return losses.findings.items
 
 
 def _walk(node: Any, losses: Losses) -> None:
@@ -219,7 +220,7 @@ def _gazebo(node: Any, losses: Losses) -> None:
             continue
         if child.tag in ('preserveFixedJoint', 'disableFixedJointLumping'):
             continue  # honoured when fixed links are fused
-        if child.tag == 'sensor' and id(child) in losses.carried.sensors:
+        if child.tag == 'sensor' and child.get('name') in losses.carried.sensors:
             continue
         what = (f"<plugin filename=\"{child.get('filename')}\">" if child.tag == 'plugin'
                 else f"<sensor type=\"{child.get('type')}\">" if child.tag == 'sensor'
@@ -227,8 +228,13 @@ def _gazebo(node: Any, losses: Losses) -> None:
         losses.add('M806', child, owner, f'{what} is not carried')
 
 
+def _number(node: Any) -> int:
+    """Return the number of ``node`` among the robot's blocks of its tag."""
+    return [child for child in node.getparent() if child.tag == node.tag].index(node)
+
+
 def _transmission(node: Any, losses: Losses) -> None:
-    if id(node) not in losses.carried.transmissions:
+    if _number(node) not in losses.carried.transmissions:
         joints = ', '.join(repr(joint.get('name')) for joint in node.findall('joint'))
         losses.add('M805', node, _owner(node), f'maps to no actuator (joint {joints or "none"}'
                    ' has no actuator in the MJCF)')
@@ -236,6 +242,7 @@ def _transmission(node: Any, losses: Losses) -> None:
 
 def _ros2_control(node: Any, losses: Losses) -> None:
     owner = _owner(node)
+    number, elements = _number(node), list(node.iter())
     for child in node:
         if not isinstance(child.tag, str):
             continue
@@ -247,7 +254,7 @@ def _ros2_control(node: Any, losses: Losses) -> None:
         for interface in child:
             if not isinstance(interface.tag, str) or interface.tag != 'command_interface':
                 continue  # state interfaces: MuJoCo's joint state; params: read with them
-            if id(interface) in losses.carried.interfaces or follower:
+            if (number, elements.index(interface)) in losses.carried.interfaces or follower:
                 continue
             losses.add('M805', interface, owner, f"command interface "
                        f"{interface.get('name')!r} of joint {child.get('name')!r} became no "
@@ -264,5 +271,5 @@ def _mujoco(node: Any, losses: Losses) -> None:
             losses.add('M807', child, owner, f'<{child.tag}> in <mujoco> is not carried '
                        '(compiler, option and size are)')
             continue
-        for element, message in (check(child) if check is not None else []):
-            losses.add('M808', element, owner, message)
+        for _, message in (check(child) if check is not None else []):
+            losses.add('M808', child, owner, message)
