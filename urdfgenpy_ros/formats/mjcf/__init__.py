@@ -48,6 +48,7 @@ if TYPE_CHECKING:
 BASES = ('fixed', 'floating')
 DEFAULT_KP = 1.0  # MuJoCo's own default for a position actuator
 DEFAULT_KV = 1.0  # and for a velocity actuator
+TIMESTEP = 0.002  # MuJoCo's default
 EXPANDED = ' (expanded)'
 REFUSED = ('I201', 'I202', 'I203', 'I207')  # what MuJoCo refuses to compile
 
@@ -169,6 +170,11 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
                       links={link.name for link in robot.links},
                       mujoco_check=check_attributes)
     _friction(robot, written, worldbody, owners, carried)
+    from urdfgenpy_ros.formats.urdf import write_urdf
+    urdf = etree.fromstring(write_urdf(robot).encode('utf-8'),
+                            etree.XMLParser(huge_tree=True, resolve_entities=False,
+                                            no_network=True))
+    apply_block(urdf.find('mujoco'), document)
     _equalities(document, written)
     chosen = declared_actuators(written, actuators)
     gains = (kp if kp is not None else DEFAULT_KP, kv if kv is not None else DEFAULT_KV)
@@ -181,11 +187,6 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
         if actuator.joint.name in reductions:
             carried.transmissions.add(reductions[actuator.joint.name][1])
     _keyframe(document, tree, written)
-    from urdfgenpy_ros.formats.urdf import write_urdf
-    urdf = etree.fromstring(write_urdf(robot).encode('utf-8'),
-                            etree.XMLParser(huge_tree=True, resolve_entities=False,
-                                            no_network=True))
-    apply_block(urdf.find('mujoco'), document)
     if overlay is not None:
         merge_overlay(document, read_overlay(overlay))
     file = robot.source.file if robot.source is not None else None
@@ -242,7 +243,13 @@ def _friction(robot: Robot, written: Robot, worldbody: Any, owners: dict[str, li
 
 
 def _equalities(document: Any, robot: Robot) -> None:
-    """Write each mimic joint as a joint equality: q = offset + multiplier * q_leader."""
+    """
+    Write each mimic joint as a joint equality: q = offset + multiplier * q_leader.
+
+    MuJoCo's constraints are soft; this one is made as stiff as the step allows (a time
+    constant of two steps, MuJoCo's safe limit, and an impedance of 0.9999), so the
+    follower stays within about 1e-6 rad of the URDF's relation while the leader moves.
+    """
     mimics = [joint for joint in robot.joints if joint.mimic is not None
               and joint.type.is_movable and robot.has_joint(joint.mimic.joint)]
     if not mimics:
@@ -253,7 +260,17 @@ def _equalities(document: Any, robot: Robot) -> None:
         etree.SubElement(section, 'joint', name=f'{joint.name}_mimic', joint1=joint.name,
                          joint2=joint.mimic.joint,
                          polycoef=fmt_vec((joint.mimic.offset, joint.mimic.multiplier,
-                                           0.0, 0.0, 0.0)))
+                                           0.0, 0.0, 0.0)),
+                         solref=f'{fmt(2.0 * _timestep(document))} 1',
+                         solimp='0.9999 0.9999 0.001 0.5 2')
+
+
+def _timestep(document: Any) -> float:
+    option = document.find('option')
+    try:
+        return float(option.get('timestep', TIMESTEP)) if option is not None else TIMESTEP
+    except ValueError:
+        return TIMESTEP
 
 
 def _keyframe(document: Any, tree: BodyTree, robot: Robot) -> None:
