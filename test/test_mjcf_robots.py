@@ -1,0 +1,121 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+
+"""
+Every registry and corpus robot that check_urdf accepts, converted to MJCF and judged.
+
+MuJoCo compiles it and steps it 1000 times with zero control; per body the mass, centre
+of mass and inertia equal yourdfpy's reading of the URDF (pinocchio's lumped inertia when
+fixed links are fused); every link's pose equals pinocchio's forward kinematics at 20
+random configurations; each joint's range, damping, friction and effort limit equal the
+URDF's (1e-9). A robot whose mass or inertia MuJoCo refuses is refused before anything
+is written, and MuJoCo's own URDF import (keeping every body) refuses it too.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from helpers import (
+    check_urdf_verdict, CORPUS, CORPUS_PACKAGES, corpus_cases, require_module, xacro_expand)
+import mjcf_judge
+import pytest
+import registry_robots
+
+from urdfgenpy_ros.formats import load
+from urdfgenpy_ros.formats.mjcf import MjcfRefusedError, write_mjcf
+
+# more than a few seconds each (large meshes to convert and to hull)
+SLOW = {'cookie.urdf', 'panda.urdf', 'fr3.urdf', 'dual_fr3.urdf', 'upkie.urdf',
+        'upkie_camera.urdf', 'kinova_robotiq.urdf'}
+
+
+def _registry() -> list:
+    return [pytest.param(path, registry_robots.search_paths(), fuse,
+                         id=f'{registry_robots.robot_id(path)}-{"fused" if fuse else "bodies"}',
+                         marks=[pytest.mark.slow] if path.name in SLOW or fuse else [])
+            for path in registry_robots.robots() for fuse in (False, True)]
+
+
+def _corpus() -> list:
+    files = sorted(CORPUS.rglob('*.urdf')) if CORPUS.is_dir() else []
+    folders = sorted({(CORPUS / folder).parent for folder in CORPUS_PACKAGES.values()})
+    return corpus_cases([(path, folders, fuse) for path in files for fuse in (False, True)],
+                        [f'{path.relative_to(CORPUS)}-{"fused" if fuse else "bodies"}'
+                         for path in files for fuse in (False, True)])
+
+
+def _urdf_for_judges(path: Path, robot, folder: Path) -> Path:
+    """Return the URDF the judges read: the file, or real xacro's expansion of it."""
+    if not any(warning.code == 'X101' for warning in robot.read_warnings):
+        return path
+    expanded = folder / path.name
+    expanded.write_text(xacro_expand(path))
+    return expanded
+
+
+def _mujoco_import_refuses(robot) -> bool:
+    """Return whether MuJoCo's own URDF import, keeping every body, refuses the robot."""
+    import mujoco
+    from lxml import etree
+    root = etree.fromstring(robot.to_urdf().encode())
+    for shape in [*root.iter('visual'), *root.iter('collision')]:
+        shape.getparent().remove(shape)
+    root.append(etree.fromstring('<mujoco><compiler fusestatic="false"/></mujoco>'))
+    try:
+        mujoco.MjModel.from_xml_string(etree.tostring(root, encoding='unicode'))
+    except ValueError:
+        return True
+    return False
+
+
+def _judge(path: Path, search_paths: list, fuse: bool, tmp_path: Path) -> None:
+    require_module('mujoco')
+    require_module('pinocchio')
+    require_module('yourdfpy')
+    if not check_urdf_verdict(path):
+        pytest.skip('check_urdf refuses it')
+    robot = load(path, {}, search_paths)
+    target = tmp_path / 'robot.xml'
+    try:
+        write_mjcf(robot, target, fuse_fixed=fuse, search_paths=search_paths)
+    except MjcfRefusedError as refused:
+        assert {finding.code for finding in refused.findings} <= {'I201', 'I202', 'I203',
+                                                                  'I207'}
+        assert not target.exists() and _mujoco_import_refuses(robot)
+        return
+    model = mjcf_judge.compile_mjcf(target)
+    mjcf_judge.assert_steps_finite(model)
+    urdf = _urdf_for_judges(path, robot, tmp_path)
+    lumping = 'preserveFixedJoint' in urdf.read_text() or \
+        'disableFixedJointLumping' in urdf.read_text()
+    if not fuse:
+        mjcf_judge.assert_inertia_as_urdf(model, urdf)
+    elif not lumping:  # pinocchio lumps every fixed joint; these blocks keep some
+        mjcf_judge.assert_inertia_as_pinocchio(model, urdf)
+    assert mjcf_judge.assert_fk_as_pinocchio(model, urdf) > 0 or len(robot.links) == 1
+    mjcf_judge.assert_joints_as_urdf(model, robot)
+
+
+@pytest.mark.parametrize(('path', 'search_paths', 'fuse'), _registry())
+def test_registry_robot_in_mujoco(path: Path, search_paths: list, fuse: bool,
+                                  tmp_path: Path) -> None:
+    _judge(path, search_paths, fuse, tmp_path)
+
+
+@pytest.mark.parametrize(('path', 'search_paths', 'fuse'), _corpus())
+def test_corpus_robot_in_mujoco(path: Path, search_paths: list, fuse: bool,
+                                tmp_path: Path) -> None:
+    _judge(path, search_paths, fuse, tmp_path)
