@@ -29,7 +29,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from helpers import (
-    check_urdf_verdict, CORPUS, CORPUS_PACKAGES, corpus_cases, require_module, xacro_expand)
+    check_urdf_verdict, CORPUS, corpus_cases, CORPUS_PACKAGES, require_module, xacro_expand)
 import mjcf_judge
 import pytest
 import registry_robots

@@ -26,7 +26,7 @@ from pathlib import Path
 import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot
-from urdfgenpy_ros.cli.convert_mjcf import MjcfOptions, mjcf_options, write_mjcf_file
+from urdfgenpy_ros.cli.convert_mjcf import mjcf_options, MjcfOptions, write_mjcf_file
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.formats.sdf_inertia import refused_inertias
@@ -57,7 +57,7 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     Convert SOURCE to TARGET; the suffixes choose the formats.
 
     SOURCE is .urdf, .xacro (.urdf.xacro), a DH table (.yaml, .yml, .csv) or an assembly
-    (.assembly.yaml); TARGET is .urdf, .xacro, .sdf or MuJoCo's .xml/.mjcf. An SDF or
+    (.assembly.yaml); TARGET is .urdf, .xacro or .sdf, or MuJoCo's .xml/.mjcf. An SDF or
     MJCF that the engine would refuse (a link's inertia) is not written: exit status 2,
     one line per link. MJCF: what it cannot carry is reported, one line each (--strict:
     exit status 1); its meshes go to assets/ beside it.

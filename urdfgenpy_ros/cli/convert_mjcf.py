@@ -54,7 +54,7 @@ class MjcfOptions:
     report: str = 'text'
 
     def given(self) -> list[str]:
-        """Return the flags given (to refuse them for other output formats)."""
+        """Return the MJCF flags in use: other output formats refuse them."""
         flags = {'--fuse-fixed': self.fuse_fixed, '--base': self.base is not None,
                  '--actuators': self.actuators is not None, '--kp': self.kp is not None,
                  '--kv': self.kv is not None, '--scene': self.scene,
@@ -73,10 +73,10 @@ _OPTIONS = (
     click.option('--actuators', type=click.Choice(ACTUATOR_TYPES),
                  help='MJCF output: this actuator on every joint, instead of the ones '
                       '<ros2_control> declares.'),
-    click.option('--kp', type=float, help='MJCF output: position actuators\' gain '
-                                          "(MuJoCo's default 1)."),
-    click.option('--kv', type=float, help='MJCF output: velocity actuators\' gain '
-                                          "(MuJoCo's default 1)."),
+    click.option('--kp', type=float,
+                 help="MJCF output: position actuators' gain (MuJoCo's default 1)."),
+    click.option('--kv', type=float,
+                 help="MJCF output: velocity actuators' gain (MuJoCo's default 1)."),
     click.option('--scene', is_flag=True,
                  help='MJCF output: also write scene.xml (floor, light, the robot).'),
     click.option('--overlay', type=click.Path(exists=True, dir_okay=False, path_type=Path),

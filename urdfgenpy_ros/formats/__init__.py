@@ -77,7 +77,7 @@ def save(robot: Robot, path: str | PathLike[str], **options: Any) -> None:
     unknown = sorted(set(options) - set(row.options))
     if unknown:
         from urdfgenpy_ros.errors import ModelError
-        raise ModelError(f"{path}: {row.description} output takes no option "
+        raise ModelError(f'{path}: {row.description} output takes no option '
                          f"{', '.join(unknown)} (it takes {', '.join(row.options) or 'none'})")
     assert row.writer is not None
     row.writer(robot, path, **options)

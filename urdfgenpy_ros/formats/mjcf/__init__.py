@@ -207,7 +207,8 @@ def _note_gains(notes: list[str], chosen: list[Any], kp: float | None, kv: float
     for kind, given, value, option in (('position', kp, gains[0], 'kp'),
                                        ('velocity', kv, gains[1], 'kv')):
         if kind in kinds:
-            said = 'given' if given is not None else f"MuJoCo's default: set {option}= / --{option}"
+            said = ('given' if given is not None
+                    else f"MuJoCo's default: set {option}= / --{option}")
             notes.append(f'{kind} actuators: {option}={fmt(value)} ({said})')
 
 

@@ -124,8 +124,8 @@ def declared_actuators(robot: Robot, kind: str | None) -> list[Actuator]:
         gear = reductions.get(name, (1.0, None))[0]
         span = _range(what if what != 'motor' else 'effort', joint, element)
         if span is not None and what != 'motor':
-            span = (span[0] * gear, span[1] * gear) if gear > 0 else (span[1] * gear,
-                                                                          span[0] * gear)
+            low, high = span[0] * gear, span[1] * gear
+            span = (min(low, high), max(low, high))
         found.append(Actuator(what, joint, span, gear, origin))
 
     if kind is not None:

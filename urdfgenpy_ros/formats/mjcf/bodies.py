@@ -37,7 +37,7 @@ from urdfgenpy_ros.formats.mjcf.meshes import MeshAssets, MeshNotWritten
 from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Geometry, Mesh, Origin, Sphere
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import Joint, JointType
-from urdfgenpy_ros.link import Link, Visual
+from urdfgenpy_ros.link import Link, Shape, Visual
 from urdfgenpy_ros.transforms import quaternion_matrix
 
 if TYPE_CHECKING:
@@ -181,7 +181,9 @@ class BodyWriter:
             self._body(body, joint)
 
     def _shapes(self, body: Any, link: Link) -> None:
-        for kind, items in (('visual', link.visuals), ('collision', link.collisions)):
+        shapes: list[tuple[str, list[Shape]]] = [('visual', list(link.visuals)),
+                                                 ('collision', list(link.collisions))]
+        for kind, items in shapes:
             for number, item in enumerate(items, start=1):
                 where = f"link '{link.name}' {kind} {number}"
                 attributes: dict[str, str] = {}

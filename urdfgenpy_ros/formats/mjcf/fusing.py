@@ -34,8 +34,10 @@ if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
 
 
-def fused(robot: Robot) -> tuple[Robot, dict[str, list[tuple[str, Origin]]],
-                                  dict[str, list[str]]]:
+Sites = dict[str, list[tuple[str, Origin]]]
+
+
+def fused(robot: Robot) -> tuple[Robot, Sites, dict[str, list[str]]]:
     """
     Return the fused robot, the sites per body and the owner link of each collision.
 
@@ -63,7 +65,7 @@ def fused(robot: Robot) -> tuple[Robot, dict[str, list[tuple[str, Origin]]],
                 frame[other.name] = multiply(at, frame[other.name])
         remaining.remove(joint)
     order = {link.name: index for index, link in enumerate(robot.links)}
-    sites: dict[str, list[tuple[str, Origin]]] = {}
+    sites: Sites = {}
     for body, placed in on.items():
         for name, pose in sorted(placed, key=lambda item: order[item[0]]):
             xyz, rpy = to_xyz_rpy(pose)

@@ -256,7 +256,7 @@ def _ros2_control(node: Any, losses: Losses) -> None:
                 continue  # state interfaces: MuJoCo's joint state; params: read with them
             if (number, elements.index(interface)) in losses.carried.interfaces or follower:
                 continue
-            losses.add('M805', interface, owner, f"command interface "
+            losses.add('M805', interface, owner, 'command interface '
                        f"{interface.get('name')!r} of joint {child.get('name')!r} became no "
                        'actuator')
 

@@ -22,7 +22,7 @@ from xml.sax.saxutils import quoteattr
 
 def scene_text(model_file: str, name: str) -> str:
     """Return the text of a scene that includes ``model_file`` (the robot ``name``)."""
-    return f'''<mujoco model={quoteattr(name + ' scene')}>
+    return f"""<mujoco model={quoteattr(name + ' scene')}>
   <include file={quoteattr(model_file)}/>
   <statistic center="0 0 0.3" extent="1"/>
   <visual>
@@ -42,4 +42,4 @@ def scene_text(model_file: str, name: str) -> str:
     <geom name="floor" size="0 0 0.05" type="plane" material="groundplane"/>
   </worldbody>
 </mujoco>
-'''
+"""
