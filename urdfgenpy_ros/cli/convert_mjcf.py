@@ -76,7 +76,8 @@ _OPTIONS = (
     click.option('--kp', type=float,
                  help="MJCF output: position actuators' gain (MuJoCo's default 1)."),
     click.option('--kv', type=float,
-                 help="MJCF output: velocity actuators' gain (MuJoCo's default 1)."),
+                 help="MJCF output: velocity actuators' gain (MuJoCo's default 1), and the "
+                      "position actuators' damping."),
     click.option('--scene', is_flag=True,
                  help='MJCF output: also write scene.xml (floor, light, the robot).'),
     click.option('--overlay', type=click.Path(exists=True, dir_okay=False, path_type=Path),

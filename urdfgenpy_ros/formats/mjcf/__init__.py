@@ -105,7 +105,8 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     each merged link a ``<site>``); ``base`` is ``fixed`` (the default) or ``floating``
     (a free joint) unless the root link is ``world``; ``actuators`` (position, velocity,
     motor) puts that actuator on every joint instead of what ``<ros2_control>``
-    declares; ``kp``/``kv`` are the servo gains (MuJoCo's default 1 otherwise);
+    declares; ``kp``/``kv`` are the servo gains (MuJoCo's default 1 otherwise; ``kv``
+    also damps the position servos);
     ``overlay`` is an MJCF file merged in by element name; ``meshdir`` the folder beside
     ``path`` the meshes go to.
 
@@ -178,7 +179,7 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     _equalities(document, written)
     chosen = declared_actuators(written, actuators)
     gains = (kp if kp is not None else DEFAULT_KP, kv if kv is not None else DEFAULT_KV)
-    write_actuators(document, chosen, *gains)
+    write_actuators(document, chosen, *gains, servo_damping=kv)
     _note_gains(notes, chosen, kp, kv, gains)
     reductions = gears(written)
     for actuator in chosen:

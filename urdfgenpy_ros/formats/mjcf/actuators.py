@@ -145,8 +145,13 @@ def declared_actuators(robot: Robot, kind: str | None) -> list[Actuator]:
     return found
 
 
-def write_actuators(parent: Any, actuators: list[Actuator], kp: float, kv: float) -> None:
-    """Add an ``<actuator>`` section holding ``actuators`` to ``parent``."""
+def write_actuators(parent: Any, actuators: list[Actuator], kp: float, kv: float,
+                    servo_damping: float | None = None) -> None:
+    """
+    Add an ``<actuator>`` section holding ``actuators`` to ``parent``.
+
+    ``servo_damping`` is a position servo's ``kv`` (none: MuJoCo's, zero).
+    """
     if not actuators:
         return
     section = etree.SubElement(parent, 'actuator')
@@ -164,6 +169,8 @@ def write_actuators(parent: Any, actuators: list[Actuator], kp: float, kv: float
             attributes['ctrlrange'] = fmt_vec(actuator.ctrlrange)
         if actuator.kind == 'position':
             attributes['kp'] = fmt(kp)
+            if servo_damping is not None:
+                attributes['kv'] = fmt(servo_damping)
         elif actuator.kind == 'velocity':
             attributes['kv'] = fmt(kv)
         etree.SubElement(section, actuator.kind, attributes)
