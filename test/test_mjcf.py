@@ -304,3 +304,49 @@ def test_a_robot_without_inertial_on_a_moving_link_is_refused() -> None:
     robot.add_joint(Joint('j', 'continuous', 'base_link', 'arm'))
     with pytest.raises(MjcfRefusedError, match='nothing written'):
         write_mjcf(robot)
+
+
+def test_sensors_measure_what_gazebos_would() -> None:
+    import mujoco
+    import numpy
+    from urdfgenpy_ros.link import Collision
+    from urdfgenpy_ros.sensors import Camera, ForceTorque, Imu, Lidar
+    robot = Robot('sensing').add_link(Link('base_link', inertial=Inertial.from_box(
+        1.0, 0.1, 0.1, 0.1))).add_link(Link('head', inertial=Inertial.from_box(
+            1.0, 0.1, 0.1, 0.1))).add_link(Link('wall', collisions=[Collision(Box(0.1, 4, 4))]))
+    robot.add_joint(Joint('neck', 'revolute', 'base_link', 'head', axis=(0, 0, 1),
+                          origin=Origin((0, 0, 1), (0, 0, 0.3)),
+                          limit=JointLimit(-1, 1, effort=1, velocity=1)))
+    robot.add_joint(Joint('wall_joint', 'fixed', 'base_link', 'wall',
+                          origin=Origin((2.05, 0, 1))))
+    head = robot.get_link('head')
+    head.add_sensor(Camera('cam', origin=Origin((0.1, 0, 0.05), (0, 0.2, 0)), fov=1.2))
+    head.add_sensor(Imu('imu', origin=Origin((0, 0, 0.02), (0.1, 0, 0))))
+    head.add_sensor(Lidar('scan', samples=5, min_angle=-0.5, max_angle=0.5, range_max=30.0))
+    robot.get_joint('neck').add_sensor(ForceTorque('ft'))
+    result = write_mjcf(robot)
+    assert [finding.code for finding in result.findings] == ['M801']  # the sensors are carried
+    model = mujoco.MjModel.from_xml_string(result.text)
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+
+    def read(name: str) -> numpy.ndarray:
+        sensor = model.sensor(name)
+        return data.sensordata[sensor.adr[0]:sensor.adr[0] + sensor.dim[0]]
+
+    # rays at 0.3 + (-0.5 .. 0.5) rad hit the wall 2 m ahead at 2 / cos(angle), or miss
+    for index, angle in enumerate(0.3 + numpy.linspace(-0.5, 0.5, 5)):
+        hits = abs(2.0 * math.tan(angle)) < 2.0
+        expected = 2.0 / math.cos(angle) if hits else -1.0
+        assert abs(read(f'scan_ray{index}')[0] - expected) < 1e-9
+    gravity = 9.81  # an accelerometer at rest reads the reaction to gravity, in its frame
+    assert numpy.allclose(read('imu_accelerometer'),
+                          (0, gravity * math.sin(0.1), gravity * math.cos(0.1)), atol=1e-9)
+    assert numpy.allclose(read('ft_torque'), 0.0, atol=1e-9) and read('ft_force')[2] > 0
+    # the camera looks along the sensor's +X (yawed 0.3, pitched 0.2 down), +Z up
+    camera = model.camera('cam')
+    axes = data.cam_xmat[camera.id].reshape(3, 3)
+    forward = (math.cos(0.3) * math.cos(0.2), math.sin(0.3) * math.cos(0.2), -math.sin(0.2))
+    assert numpy.allclose(-axes[:, 2], forward, atol=1e-12)
+    assert abs(model.cam_fovy[camera.id] - math.degrees(2 * math.atan(
+        math.tan(0.6) * 480 / 640))) < 1e-9

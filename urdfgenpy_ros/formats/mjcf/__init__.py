@@ -40,6 +40,7 @@ from urdfgenpy_ros.formats.mjcf.bodies import BodyTree, BodyWriter, WORLD
 from urdfgenpy_ros.formats.mjcf.fusing import fused
 from urdfgenpy_ros.formats.mjcf.losses import Carried, find_losses
 from urdfgenpy_ros.formats.mjcf.meshes import MeshAssets
+from urdfgenpy_ros.formats.mjcf.sensors import write_sensors
 from urdfgenpy_ros.resources import PackageResolver
 
 if TYPE_CHECKING:
@@ -188,6 +189,7 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
         if actuator.joint.name in reductions:
             carried.transmissions.add(reductions[actuator.joint.name][1])
     _keyframe(document, tree, written)
+    carried.sensors = write_sensors(document, worldbody, written)
     if overlay is not None:
         merge_overlay(document, read_overlay(overlay))
     file = robot.source.file if robot.source is not None else None
