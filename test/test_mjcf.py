@@ -106,6 +106,9 @@ def test_everything_compiles_with_the_urdfs_physics(tmp_path: Path) -> None:
     assert mjcf_judge.assert_fk_as_pinocchio(model, EVERYTHING) > 0
     assert mjcf_judge.assert_joints_as_urdf(model, robot) == 4
     assert model.opt.timestep == 0.001  # the URDF's <mujoco><option>
+    wheel = [index for index in range(model.ngeom)
+             if model.geom_bodyid[index] == model.body('wheel').id]
+    assert [model.geom_friction[index][0] for index in wheel] == [0.9]  # <gazebo> mu1
 
 
 def test_ros2_control_interfaces_become_actuators_of_their_types(tmp_path: Path) -> None:
@@ -350,3 +353,31 @@ def test_sensors_measure_what_gazebos_would() -> None:
     assert numpy.allclose(-axes[:, 2], forward, atol=1e-12)
     assert abs(model.cam_fovy[camera.id] - math.degrees(2 * math.atan(
         math.tan(0.6) * 480 / 640))) < 1e-9
+
+
+def test_check_engines_mujoco_says_what_mujocos_import_drops(tmp_path: Path) -> None:
+    import mujoco
+    from urdfgenpy_ros.extensions import Extension
+    from urdfgenpy_ros.link import Collision
+    robot = _mimic_pair()
+    robot.get_link('leader_link').add_collision(Collision(Box(0.1, 0.02, 0.02)))
+    robot.add_extension(Extension.ros2_control('pair', '<joint name="leader">'
+                                               '<command_interface name="position"/></joint>'))
+    friction = Extension.gazebo('<mu1>0.7</mu1><mu2>0.7</mu2>')
+    robot.get_link('leader_link').add_extension(friction)
+    source = tmp_path / 'pair.urdf'
+    robot.to_urdf(source)
+    theirs = mujoco.MjModel.from_xml_path(str(source))  # MuJoCo's own URDF import
+    assert theirs.nu == 0 and theirs.geom_friction[0][0] == 1.0
+    ours = mujoco.MjModel.from_xml_string(write_mjcf(load(source)).text)
+    geom = next(index for index in range(ours.ngeom) if ours.geom_group[index] == 3)
+    assert ours.nu == 1 and ours.geom_friction[geom][0] == 0.7
+    result = CliRunner().invoke(main, ['check', str(source), '--engines', 'mujoco',
+                                       '--format', 'json'])
+    found = {(entry['code'], entry['element'], entry['line'])
+             for entry in json.loads(result.stdout)['files'][0]['findings']
+             if entry['code'] in ('M508', 'M509')}
+    text = source.read_text().splitlines()
+    line = next(number for number, row in enumerate(text, 1) if 'command_interface' in row)
+    block = next(number for number, row in enumerate(text, 1) if 'gazebo reference' in row)
+    assert found == {('M508', "joint 'leader'", line), ('M509', "link 'leader_link'", block)}

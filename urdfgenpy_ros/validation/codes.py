@@ -96,6 +96,8 @@ CODES: dict[str, tuple[Severity, str]] = {
     'M505': (W, 'MuJoCo refuses the model'),
     'M506': (W, 'MuJoCo cannot read the mesh'),
     'M507': (W, 'MuJoCo warns while compiling the model'),
+    'M508': (W, "MuJoCo's URDF import makes no actuator of a <ros2_control> command interface"),
+    'M509': (W, "MuJoCo's URDF import ignores <gazebo> friction (mu1, mu2)"),
     # MJCF export (formats/mjcf/losses.py): what the MJCF cannot carry
     'M801': (W, 'MJCF has no joint velocity limit'),
     'M802': (W, 'MJCF has no safety controller'),
@@ -121,6 +123,8 @@ PREFLIGHT_HINTS: dict[str, str] = {
     'M505': 'MuJoCo says why in the message; fix what it names',
     'M507': 'MuJoCo ignores or changes what it names: check the simulation does not need it',
     'M506': 'MuJoCo reads STL, OBJ and MSH meshes: convert it, or give --package-path',
+    'M508': 'urdfgenpy convert ROBOT robot.xml writes it as an actuator (docs/mujoco.md)',
+    'M509': "urdfgenpy convert ROBOT robot.xml gives the link's collision geoms that friction",
     'G601': '<gazebo reference="JOINT"><preserveFixedJoint>true</preserveFixedJoint></gazebo> '
             'keeps the link (and its frame) in Gazebo',
     'G602': 'give the link a mass and inertia (Inertial.from_geometry): Gazebo drops it',

@@ -37,6 +37,7 @@ from urdfgenpy_ros.formats.mjcf.actuators import write_actuators
 from urdfgenpy_ros.formats.mjcf.blocks import (
     apply_block, check_attributes, merge_overlay, read_overlay)
 from urdfgenpy_ros.formats.mjcf.bodies import BodyTree, BodyWriter, WORLD
+from urdfgenpy_ros.formats.mjcf.friction import declared_friction
 from urdfgenpy_ros.formats.mjcf.fusing import fused
 from urdfgenpy_ros.formats.mjcf.losses import Carried, find_losses
 from urdfgenpy_ros.formats.mjcf.meshes import MeshAssets
@@ -159,7 +160,9 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     etree.SubElement(defaults.getparent(), 'mesh', inertia='shell')
     asset = etree.SubElement(document, 'asset')
     worldbody = etree.SubElement(document, 'worldbody')
+    declared = declared_friction(robot)
     writer = BodyWriter(written, meshes, taken, sites)
+    writer.friction = ({link: value.text for link, value in declared.items()}, owners)
     tree = writer.write(worldbody)
     for element, attributes in meshes.elements():
         etree.SubElement(asset, element, attributes)
@@ -170,8 +173,9 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     carried = Carried(stand_ins=dict(tree.stand_ins), missing=dict(tree.missing),
                       followers={j.name for j in robot.joints if j.mimic is not None},
                       links={link.name for link in robot.links},
-                      mujoco_check=check_attributes)
-    _friction(robot, written, worldbody, owners, carried)
+                      mujoco_check=check_attributes,
+                      friction_links={link for link, value in declared.items()
+                                      if value.isotropic})
     from urdfgenpy_ros.formats.urdf import write_urdf
     urdf = etree.fromstring(write_urdf(robot).encode('utf-8'),
                             etree.XMLParser(huge_tree=True, resolve_entities=False,
@@ -213,37 +217,6 @@ def _note_gains(notes: list[str], chosen: list[Any], kp: float | None, kv: float
             said = ('given' if given is not None
                     else f"MuJoCo's default: set {option}= / --{option}")
             notes.append(f'{kind} actuators: {option}={fmt(value)} ({said})')
-
-
-def _friction(robot: Robot, written: Robot, worldbody: Any, owners: dict[str, list[str]],
-              carried: Carried) -> None:
-    """Give each link's collision geoms the ``mu1`` of its ``<gazebo reference>`` block."""
-    friction: dict[str, str] = {}
-    for block in [*robot.extensions, *(b for link in robot.links for b in link.extensions)]:
-        reference = block.reference
-        if block.tag != 'gazebo' or reference is None or not robot.has_link(reference):
-            continue
-        mu = block.element.findtext('mu1') or block.element.findtext('mu2')
-        if mu is None:
-            continue
-        try:
-            value = float(mu.strip())
-        except ValueError:
-            continue
-        friction[reference] = f'{fmt(value)} 0.005 0.0001'  # MuJoCo's torsion and rolling
-        mu2 = block.element.findtext('mu2')
-        if mu2 is None or mu2.strip() == mu.strip():
-            carried.friction_links.add(reference)
-    if not friction:
-        return
-    for body in worldbody.iter('body'):
-        name = body.get('name')
-        link_owners = owners.get(name, None)
-        geoms = [geom for geom in body.findall('geom') if geom.get('class') == 'collision']
-        for number, geom in enumerate(geoms):
-            owner = link_owners[number] if link_owners is not None else name
-            if owner in friction:
-                geom.set('friction', friction[owner])
 
 
 def _equalities(document: Any, robot: Robot) -> None:

@@ -53,6 +53,7 @@ class Actuator:
     ctrlrange: tuple[float, float] | None
     gear: float
     origin: tuple[int, int] | None  # (ros2_control block, element number), None: option
+    line: int | None = None  # the command interface's line, when it was read
 
 
 def _number(element: Any, name: str) -> float | None:
@@ -126,7 +127,8 @@ def declared_actuators(robot: Robot, kind: str | None) -> list[Actuator]:
         if span is not None and what != 'motor':
             low, high = span[0] * gear, span[1] * gear
             span = (min(low, high), max(low, high))
-        found.append(Actuator(what, joint, span, gear, origin))
+        found.append(Actuator(what, joint, span, gear, origin,
+                              getattr(element, 'sourceline', None)))
 
     if kind is not None:
         for joint in robot.joints:

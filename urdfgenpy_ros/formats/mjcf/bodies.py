@@ -144,6 +144,8 @@ class BodyWriter:
         self.sites = sites  # body -> merged links and where they are on it
         self.tree = BodyTree()
         self._geom_names: set[str] = set()
+        # friction by link, and the link each collision of a fused body came from
+        self.friction: tuple[dict[str, str], dict[str, list[str]]] = ({}, {})
 
     def write(self, worldbody: Any) -> BodyTree:
         """Add the bodies to ``worldbody``; return what the later sections need."""
@@ -204,6 +206,11 @@ class BodyWriter:
                     material = self._material(item)
                     if material is not None:
                         attributes['material'] = material
+                else:
+                    friction, owners = self.friction
+                    owner = owners[link.name][number - 1] if link.name in owners else link.name
+                    if owner in friction:
+                        attributes['friction'] = friction[owner]
                 etree.SubElement(body, 'geom', attributes)
 
     def _material(self, visual: Visual) -> str | None:

@@ -14,8 +14,9 @@
 
 
 """
-Sensors in MJCF: what Gazebo's ``<sensor>`` elements (built in Python, or read from
-``<gazebo reference>`` blocks) become in MuJoCo.
+Sensors in MJCF: what Gazebo's ``<sensor>`` elements become in MuJoCo.
+
+They are built in Python, or read from ``<gazebo reference>`` blocks.
 
 A camera becomes a ``<camera>`` looking where Gazebo's does (along the sensor's +X, with +Z
 up: MuJoCo's camera looks along its -Z with +Y up, the REP-103 optical frame turned half a
@@ -44,8 +45,8 @@ if TYPE_CHECKING:
 CAMERAS = ('camera', 'depth_camera', 'depth', 'rgbd_camera', 'wideanglecamera')
 LIDARS = ('gpu_lidar', 'lidar', 'ray', 'gpu_ray')
 # the sensor frame's axes seen from MuJoCo's camera frame: x_cam = -y, y_cam = z, z_cam = -x
-_OPTICAL = ((0.0, 0.0, -1.0, 0.0), (-1.0, 0.0, 0.0, 0.0), (0.0, 1.0, 0.0, 0.0),
-            (0.0, 0.0, 0.0, 1.0))
+_OPTICAL = [[0.0, 0.0, -1.0, 0.0], [-1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0],
+            [0.0, 0.0, 0.0, 1.0]]
 
 
 @dataclass
