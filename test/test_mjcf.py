@@ -381,3 +381,29 @@ def test_check_engines_mujoco_says_what_mujocos_import_drops(tmp_path: Path) -> 
     line = next(number for number, row in enumerate(text, 1) if 'command_interface' in row)
     block = next(number for number, row in enumerate(text, 1) if 'gazebo reference' in row)
     assert found == {('M508', "joint 'leader'", line), ('M509', "link 'leader_link'", block)}
+
+
+def test_every_input_converts_a_dh_table_an_assembly_and_xacro(tmp_path: Path) -> None:
+    from urdfgenpy_ros.dh import DHTable
+    from urdfgenpy_ros.examples import pan_tilt_unit
+    csv = tmp_path / 'arm.csv'
+    csv.write_text('# convention: standard\njoint,a,alpha,d,theta_offset,type,lower,upper\n'
+                   'shoulder,0,1.5707963267948966,0.1,0,revolute,-2,2\n'
+                   'slide,0,0,0.2,0,prismatic,0,0.5\n')
+    pan_tilt_unit().to_xacro(tmp_path / 'ptu.urdf.xacro')
+    pan_tilt_unit().to_urdf(tmp_path / 'ptu.urdf')
+    assembly = tmp_path / 'two.assembly.yaml'
+    assembly.write_text('name: two\nparts:\n  - file: ptu.urdf\n  - file: ptu.urdf\n'
+                        '    at: tilt_link\n    prefix: top_\n')
+    for source, joints in ((csv, 2), (tmp_path / 'ptu.urdf.xacro', 2), (assembly, 4)):
+        target = tmp_path / f'{source.name}.xml'
+        result = CliRunner().invoke(main, ['convert', str(source), str(target)])
+        assert result.exit_code == 0, result.output
+        model = mjcf_judge.compile_mjcf(target)
+        assert model.njnt == joints
+        mjcf_judge.assert_steps_finite(model)
+    # a DH skeleton's base has no mass: floating, MuJoCo would refuse it, so we do first
+    assert DHTable.from_file(csv).to_robot('arm').root.inertial is None
+    result = CliRunner().invoke(main, ['convert', str(csv), str(tmp_path / 'f.xml'),
+                                       '--base', 'floating'])
+    assert result.exit_code == 2 and 'I201' in result.output and 'floating' in result.output

@@ -53,6 +53,7 @@ DEFAULT_KV = 1.0  # and for a velocity actuator
 TIMESTEP = 0.002  # MuJoCo's default
 EXPANDED = ' (expanded)'
 REFUSED = ('I201', 'I202', 'I203', 'I207')  # what MuJoCo refuses to compile
+MINIMUM_MASS = 1e-15  # MuJoCo's mjMINVAL: a moving body needs this much
 
 
 class MjcfRefusedError(UrdfgenpyError):
@@ -81,17 +82,34 @@ def _source_folder(robot: Robot) -> Path | None:
     return path.parent if path.is_file() else None
 
 
-def _refuse(robot: Robot, written: Robot, fuse_fixed: bool) -> None:
+def _refuse(robot: Robot, written: Robot, fuse_fixed: bool, floating: bool) -> None:
     """Raise MjcfRefusedError when MuJoCo refuses a mass or tensor of ``written``."""
     from urdfgenpy_ros.validation import validate
     refused = [finding for finding in validate(written, check_meshes=False)
                if finding.code in REFUSED]
+    root = written.root
+    if floating and root.name != WORLD and _welded_mass(written, root.name) < MINIMUM_MASS:
+        from urdfgenpy_ros.errors import Severity, SourceLocation
+        refused.append(ValidationError(
+            'I201', Severity.ERROR, f'link {root.name!r}',
+            root.source or SourceLocation(path=f"/robot/link[@name='{root.name}']"),
+            'the root link moves (a floating base) but has no mass, nor anything welded '
+            'to it', 'give it a mass and inertia (Inertial.from_geometry), or keep the base '
+            'fixed: MuJoCo refuses a massless moving body'))
     if refused:
         fix = '' if fuse_fixed else ' (or pass fuse_fixed / --fuse-fixed if they are fixed links)'
         raise MjcfRefusedError(
             f'robot {robot.name!r}: MuJoCo refuses the mass or inertia of '
             f'{len(refused)} link(s): fix them (urdfgenpy check --fix){fix}; nothing written',
             refused)
+
+
+def _welded_mass(robot: Robot, name: str) -> float:
+    """Return the mass of link ``name`` and of every link welded to it below."""
+    link = robot.get_link(name)
+    mass = link.inertial.mass if link.inertial is not None else 0.0
+    return mass + sum(_welded_mass(robot, joint.child) for joint in robot.child_joints(name)
+                      if joint.type.value == 'fixed')
 
 
 def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
@@ -129,7 +147,7 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
                                  ' does not exist: define the link or fix the name')
     notes: list[str] = []
     written, sites, owners = fused(robot) if fuse_fixed else (robot, {}, {})
-    _refuse(robot, written, fuse_fixed)
+    _refuse(robot, written, fuse_fixed, base == 'floating')
     at_world = robot.root.name == WORLD
     taken = 'fixed' if base is None else base
     if at_world:

@@ -144,10 +144,20 @@ def converted_obj(path: Path) -> bytes:
             transform = transform @ trimesh.transformations.rotation_matrix(
                 -numpy.pi / 2.0, (0, 1, 0))
         mesh.apply_transform(transform)
-    text = trimesh.exchange.obj.export_obj(mesh, include_normals=False,
-                                           include_color=False, include_texture=False,
-                                           header=None, digits=15)
-    return str(text).encode('utf-8')
+    return obj_text(mesh.vertices.ravel().tolist(), (mesh.faces + 1).ravel().tolist())
+
+
+def obj_text(coordinates: list[float], corners: list[int]) -> bytes:
+    """
+    Return OBJ text of a triangle mesh, each coordinate exact (the shortest repr).
+
+    ``coordinates`` are x, y, z of each vertex in a row; ``corners`` the three 1-based
+    vertex numbers of each face in a row.
+    """
+    numbers = list(map(repr, coordinates))
+    vertices = map('v {} {} {}'.format, numbers[0::3], numbers[1::3], numbers[2::3])
+    faces = map('f {} {} {}'.format, corners[0::3], corners[1::3], corners[2::3])
+    return ('\n'.join(vertices) + '\n' + '\n'.join(faces) + '\n').encode('ascii')
 
 
 def load_mesh(path: Path) -> Any:
