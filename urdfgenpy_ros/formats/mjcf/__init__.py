@@ -162,9 +162,10 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
                         meshdir if path is not None else None)
     document = etree.Element('mujoco', model=robot.name)
     document.append(etree.Comment(
-        (f' Written by urdfgenpy_ros from robot {robot.name!r}. {notes[0]}. Fixed links '
-         f'{"fused into their parents (each a site)" if fuse_fixed else "kept as bodies"}. '
-         ).replace('--', '- -')))
+        f' Written by urdfgenpy_ros from robot {robot.name!r}. '
+        f"{notes[0].replace(' / --base floating', '')}. Fixed links "
+        f'{"fused into their parents (each a site)" if fuse_fixed else "kept as bodies"}. '
+        .replace('--', '- -')))
     compiler = etree.SubElement(document, 'compiler', angle='radian', autolimits='true',
                                 inertiafromgeom='false')
     if path is not None and meshdir:
