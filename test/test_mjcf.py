@@ -28,7 +28,7 @@ from pathlib import Path
 import re
 
 from click.testing import CliRunner
-from helpers import FIXTURES, require_module
+from helpers import assert_check_urdf_accepts, FIXTURES, require_module
 import mjcf_judge
 import pytest
 
@@ -57,6 +57,7 @@ def _marked(path: Path) -> set[tuple[int, str]]:
 
 
 def test_every_loss_is_named_on_its_line_and_nothing_else() -> None:
+    assert_check_urdf_accepts(EVERYTHING)  # a real URDF, as ROS reads it
     result = write_mjcf(load(EVERYTHING))
     reported = {(finding.location.line, finding.code) for finding in result.findings}
     assert len(result.findings) == len(reported)  # one finding per thing
@@ -213,6 +214,8 @@ def test_two_runs_write_the_same_bytes(tmp_path: Path) -> None:
         files.append({path.relative_to(tmp_path / run): path.read_bytes()
                       for path in sorted((tmp_path / run).rglob('*')) if path.is_file()})
     assert files[0] == files[1] and len(files[0]) == 3
+    robot.save(tmp_path / 'c' / 'robot.mjcf', scene=True)  # .mjcf is MJCF too, options pass
+    assert (tmp_path / 'c' / 'robot.mjcf').read_bytes() == files[0][Path('robot.xml')]
 
 
 def test_fused_links_stay_as_sites_with_the_lumped_inertia(tmp_path: Path) -> None:

@@ -36,11 +36,13 @@ from urdfgenpy_ros.formats.mjcf.actuators import ACTUATOR_TYPES, declared_actuat
 from urdfgenpy_ros.formats.mjcf.actuators import write_actuators
 from urdfgenpy_ros.formats.mjcf.blocks import (
     apply_block, check_attributes, merge_overlay, read_overlay)
-from urdfgenpy_ros.formats.mjcf.bodies import BodyTree, BodyWriter, WORLD
+from urdfgenpy_ros.formats.mjcf.bodies import BodyWriter, WORLD
 from urdfgenpy_ros.formats.mjcf.friction import declared_friction
 from urdfgenpy_ros.formats.mjcf.fusing import fused
+from urdfgenpy_ros.formats.mjcf.keyframe import write_keyframe
 from urdfgenpy_ros.formats.mjcf.losses import Carried, find_losses
 from urdfgenpy_ros.formats.mjcf.meshes import MeshAssets
+from urdfgenpy_ros.formats.mjcf.mimic import write_equalities
 from urdfgenpy_ros.formats.mjcf.sensors import write_sensors
 from urdfgenpy_ros.resources import PackageResolver
 
@@ -50,7 +52,6 @@ if TYPE_CHECKING:
 BASES = ('fixed', 'floating')
 DEFAULT_KP = 1.0  # MuJoCo's own default for a position actuator
 DEFAULT_KV = 1.0  # and for a velocity actuator
-TIMESTEP = 0.002  # MuJoCo's default
 EXPANDED = ' (expanded)'
 REFUSED = ('I201', 'I202', 'I203', 'I207')  # what MuJoCo refuses to compile
 MINIMUM_MASS = 1e-15  # MuJoCo's mjMINVAL: a moving body needs this much
@@ -200,7 +201,7 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
                             etree.XMLParser(huge_tree=True, resolve_entities=False,
                                             no_network=True))
     apply_block(urdf.find('mujoco'), document)
-    _equalities(document, written)
+    write_equalities(document, written)
     chosen = declared_actuators(written, actuators)
     gains = (kp if kp is not None else DEFAULT_KP, kv if kv is not None else DEFAULT_KV)
     write_actuators(document, chosen, *gains, servo_damping=kv)
@@ -211,7 +212,7 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
             carried.interfaces.add(actuator.origin)
         if actuator.joint.name in reductions:
             carried.transmissions.add(reductions[actuator.joint.name][1])
-    _keyframe(document, tree, written)
+    write_keyframe(document, tree, written)
     carried.sensors = write_sensors(document, worldbody, written)
     if overlay is not None:
         merge_overlay(document, read_overlay(overlay))
@@ -236,56 +237,6 @@ def _note_gains(notes: list[str], chosen: list[Any], kp: float | None, kv: float
             said = ('given' if given is not None
                     else f"MuJoCo's default: set {option}= / --{option}")
             notes.append(f'{kind} actuators: {option}={fmt(value)} ({said})')
-
-
-def _equalities(document: Any, robot: Robot) -> None:
-    """
-    Write each mimic joint as a joint equality: q = offset + multiplier * q_leader.
-
-    MuJoCo's constraints are soft; this one is made as stiff as the step allows (a time
-    constant of two steps, MuJoCo's safe limit, and an impedance of 0.9999), so the
-    follower stays within about 1e-6 rad of the URDF's relation while the leader moves.
-    """
-    mimics = [joint for joint in robot.joints if joint.mimic is not None
-              and joint.type.is_movable and robot.has_joint(joint.mimic.joint)]
-    if not mimics:
-        return
-    section = etree.SubElement(document, 'equality')
-    for joint in mimics:
-        assert joint.mimic is not None
-        etree.SubElement(section, 'joint', name=f'{joint.name}_mimic', joint1=joint.name,
-                         joint2=joint.mimic.joint,
-                         polycoef=fmt_vec((joint.mimic.offset, joint.mimic.multiplier,
-                                           0.0, 0.0, 0.0)),
-                         solref=f'{fmt(2.0 * _timestep(document))} 1',
-                         solimp='0.9999 0.9999 0.001 0.5 2')
-
-
-def _timestep(document: Any) -> float:
-    option = document.find('option')
-    try:
-        return float(option.get('timestep', TIMESTEP)) if option is not None else TIMESTEP
-    except ValueError:
-        return TIMESTEP
-
-
-def _keyframe(document: Any, tree: BodyTree, robot: Robot) -> None:
-    """Write the ``home`` keyframe: every joint at zero, clamped to its limits."""
-    if not tree.joints:
-        return
-    home = {joint.name: joint.home for joint in tree.joints}
-    for joint in robot.joints:
-        mimic = joint.mimic
-        if mimic is not None and joint.name in home and mimic.joint in home \
-                and len(home[joint.name]) == 1:
-            value = mimic.offset + mimic.multiplier * home[mimic.joint][0]
-            limit = joint.limit
-            if limit is not None and joint.type.needs_limit and limit.lower < limit.upper:
-                value = min(max(value, limit.lower), limit.upper)
-            home[joint.name] = (value,)
-    qpos = [value for joint in tree.joints for value in home[joint.name]]
-    keyframe = etree.SubElement(document, 'keyframe')
-    etree.SubElement(keyframe, 'key', name='home', qpos=fmt_vec(qpos))
 
 
 def _write(path: Path, text: str, meshes: MeshAssets, meshdir: str, scene: bool,
