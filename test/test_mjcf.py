@@ -410,3 +410,16 @@ def test_every_input_converts_a_dh_table_an_assembly_and_xacro(tmp_path: Path) -
     result = CliRunner().invoke(main, ['convert', str(csv), str(tmp_path / 'f.xml'),
                                        '--base', 'floating'])
     assert result.exit_code == 2 and 'I201' in result.output and 'floating' in result.output
+
+
+def test_losses_in_a_xacro_file_point_at_its_lines(tmp_path: Path) -> None:
+    from urdfgenpy_ros.examples import pan_tilt_unit
+    source = tmp_path / 'ptu.urdf.xacro'
+    pan_tilt_unit().to_xacro(source)
+    lines = source.read_text().splitlines()
+    result = write_mjcf(load(source))
+    for finding in result.findings:  # the velocity limits, at their joint's tag
+        name = finding.element.split("'")[1]
+        assert finding.location.file == str(source)
+        assert f'<joint name="{name}"' in lines[finding.location.line - 1]
+    assert [finding.code for finding in result.findings] == ['M801', 'M801']

@@ -100,10 +100,12 @@ class Losses:
 
 
 def _path(node: Any) -> str:
+    """Return the element path (``/robot/joint[@name='elbow']/limit``), as check's."""
     parts = []
     while node is not None:
         name = node.get('name') or node.get('reference')
-        parts.append(f"{node.tag}[@name='{name}']" if name else str(node.tag))
+        root = node.getparent() is None
+        parts.append(f"{node.tag}[@name='{name}']" if name and not root else str(node.tag))
         node = node.getparent()
     return '/' + '/'.join(reversed(parts))
 
