@@ -184,3 +184,13 @@ def assert_joints_as_urdf(model, robot) -> int:
             assert tuple(model.jnt_actfrcrange[index]) == (-limit.effort, limit.effort)
         checked += 1
     return checked
+
+
+def assert_total_mass_as_urdf(model, urdf_path: Path) -> None:
+    """The bodies' masses add up to the URDF's links' masses (yourdfpy's reading)."""
+    import yourdfpy
+    urdf = yourdfpy.URDF.load(str(urdf_path), load_meshes=False, build_scene_graph=False,
+                              build_collision_scene_graph=False).robot
+    total = sum(link.inertial.mass for link in urdf.links
+                if link.inertial is not None and link.inertial.mass is not None)
+    assert abs(float(model.body_mass.sum()) - total) <= TOLERANCE * max(1.0, total)

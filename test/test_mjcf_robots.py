@@ -105,6 +105,7 @@ def _judge(path: Path, search_paths: list, fuse: bool, tmp_path: Path) -> None:
         mjcf_judge.assert_inertia_as_urdf(model, urdf)
     elif not lumping:  # pinocchio lumps every fixed joint; these blocks keep some
         mjcf_judge.assert_inertia_as_pinocchio(model, urdf)
+    mjcf_judge.assert_total_mass_as_urdf(model, urdf)
     assert mjcf_judge.assert_fk_as_pinocchio(model, urdf) > 0 or len(robot.links) == 1
     mjcf_judge.assert_joints_as_urdf(model, robot)
 
