@@ -47,7 +47,7 @@ def body_tensor(model, index: int) -> numpy.ndarray:
 
 
 def assert_steps_finite(model, steps: int = 1000) -> None:
-    """Step ``steps`` times with zero control from the home keyframe; all stays finite."""
+    """Step ``steps`` times with zero control from the model's initial state; all stays finite."""
     import mujoco
     data = mujoco.MjData(model)
     for _ in range(steps):
@@ -187,7 +187,7 @@ def assert_joints_as_urdf(model, robot) -> int:
 
 
 def assert_total_mass_as_urdf(model, urdf_path: Path) -> None:
-    """The bodies' masses add up to the URDF's links' masses (yourdfpy's reading)."""
+    """Check that the bodies' masses add up to the URDF's (as yourdfpy reads them)."""
     import yourdfpy
     urdf = yourdfpy.URDF.load(str(urdf_path), load_meshes=False, build_scene_graph=False,
                               build_collision_scene_graph=False).robot
