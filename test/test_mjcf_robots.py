@@ -52,7 +52,8 @@ def _registry() -> list:
 def _corpus() -> list:
     files = sorted(CORPUS.rglob('*.urdf')) if CORPUS.is_dir() else []
     folders = sorted({(CORPUS / folder).parent for folder in CORPUS_PACKAGES.values()})
-    return corpus_cases([(path, folders, fuse) for path in files for fuse in (False, True)],
+    cases = [(path, folders, fuse) for path in files for fuse in (False, True)]
+    return corpus_cases(cases or [(None, [], False)],  # without a corpus: one skip
                         [f'{path.relative_to(CORPUS)}-{"fused" if fuse else "bodies"}'
                          for path in files for fuse in (False, True)])
 
