@@ -423,3 +423,28 @@ def test_losses_in_a_xacro_file_point_at_its_lines(tmp_path: Path) -> None:
         assert finding.location.file == str(source)
         assert f'<joint name="{name}"' in lines[finding.location.line - 1]
     assert [finding.code for finding in result.findings] == ['M801', 'M801']
+
+
+@pytest.mark.parametrize('suffix', ['.ply', '.glb'])
+def test_ply_and_glb_meshes_are_converted_with_their_volume(suffix: str,
+                                                            tmp_path: Path) -> None:
+    trimesh = require_module('trimesh')
+    box = trimesh.creation.box((0.1, 0.2, 0.3))
+    box.export(str(tmp_path / f'part{suffix}'))
+    robot = Robot('r').add_link(Link('base_link', inertial=Inertial.from_box(
+        1.0, 0.1, 0.2, 0.3), visuals=[Visual(Mesh(str(tmp_path / f'part{suffix}')))]))
+    robot.to_mjcf(tmp_path / 'out' / 'robot.xml')
+    converted = trimesh.load(str(tmp_path / 'out' / 'assets' / 'part.obj'), force='mesh')
+    source = trimesh.load(str(tmp_path / f'part{suffix}'), force='mesh')
+    assert abs(converted.volume - source.volume) <= 1e-6 * source.volume
+    assert mjcf_judge.compile_mjcf(tmp_path / 'out' / 'robot.xml').nmesh == 1
+
+
+def test_the_world_links_inertial_is_a_loss() -> None:
+    robot = Robot('welded').add_link(Link('world', inertial=Inertial.from_box(
+        1.0, 0.1, 0.1, 0.1))).add_link(Link('base_link', inertial=Inertial.from_box(
+            1.0, 0.1, 0.1, 0.1)))
+    robot.add_joint(Joint('weld', 'fixed', 'world', 'base_link'))
+    result = write_mjcf(robot)
+    assert [(finding.code, finding.element) for finding in result.findings] == [
+        ('M807', "link 'world'")]

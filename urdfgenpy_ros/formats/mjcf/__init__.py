@@ -193,7 +193,7 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     carried = Carried(stand_ins=dict(tree.stand_ins), missing=dict(tree.missing),
                       followers={j.name for j in robot.joints if j.mimic is not None},
                       links={link.name for link in robot.links},
-                      mujoco_check=check_attributes,
+                      mujoco_check=check_attributes, world_root=at_world,
                       friction_links={link for link, value in declared.items()
                                       if value.isotropic})
     from urdfgenpy_ros.formats.urdf import write_urdf

@@ -81,6 +81,7 @@ class Carried:
     missing: dict[str, str] = field(default_factory=dict)  # mesh URI -> why not written
     followers: set[str] = field(default_factory=set)
     links: set[str] = field(default_factory=set)
+    world_root: bool = False  # the root link is 'world': MuJoCo's world body, no inertial
     mujoco_check: Callable[[Any], list[tuple[str, str]]] | None = None
 
 
@@ -154,6 +155,10 @@ def _walk(node: Any, losses: Losses) -> None:
                        'counterpart')
     if tag == 'limit':
         _limit(node, losses, owner)
+    if tag == 'inertial' and losses.carried.world_root and owner == "link 'world'":
+        losses.add('M807', node, owner, "<inertial> of the root link 'world' is not carried: "
+                   "MuJoCo's world body has no mass")
+        return
     if tag in SIZES and not _positive(node.get(SIZES[tag], '')):
         losses.add('M809', node, owner, f'<{tag} {SIZES[tag]}="{node.get(SIZES[tag])}"> has '
                    'a size of zero: MuJoCo refuses such a geom, so it is not written')
