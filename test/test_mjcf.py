@@ -356,6 +356,8 @@ def test_sensors_measure_what_gazebos_would() -> None:
     assert numpy.allclose(-axes[:, 2], forward, atol=1e-12)
     assert abs(model.cam_fovy[camera.id] - math.degrees(2 * math.atan(
         math.tan(0.6) * 480 / 640))) < 1e-9
+    head.sensors[2].vertical_samples = 16  # a 3D lidar: one ring is written, and said
+    assert sorted(finding.code for finding in write_mjcf(robot).findings) == ['M801', 'M806']
 
 
 def test_check_engines_mujoco_says_what_mujocos_import_drops(tmp_path: Path) -> None:

@@ -213,7 +213,7 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
         if actuator.joint.name in reductions:
             carried.transmissions.add(reductions[actuator.joint.name][1])
     write_keyframe(document, tree, written)
-    carried.sensors = write_sensors(document, worldbody, written)
+    carried.sensors = write_sensors(document, worldbody, written, carried.partly)
     if overlay is not None:
         merge_overlay(document, read_overlay(overlay))
     file = robot.source.file if robot.source is not None else None

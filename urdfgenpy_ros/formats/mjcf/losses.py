@@ -77,6 +77,7 @@ class Carried:
     transmissions: set[int] = field(default_factory=set)  # numbers of the mapped ones
     interfaces: set[tuple[int, int]] = field(default_factory=set)  # (block, element number)
     sensors: set[str] = field(default_factory=set)  # names of the <sensor>s written
+    partly: dict[str, str] = field(default_factory=dict)  # sensor -> what was left out
     stand_ins: dict[str, str] = field(default_factory=dict)
     missing: dict[str, str] = field(default_factory=dict)  # mesh URI -> why not written
     followers: set[str] = field(default_factory=set)
@@ -228,6 +229,10 @@ def _gazebo(node: Any, losses: Losses) -> None:
         if child.tag in ('preserveFixedJoint', 'disableFixedJointLumping'):
             continue  # honoured when fixed links are fused
         if child.tag == 'sensor' and child.get('name') in losses.carried.sensors:
+            left = losses.carried.partly.get(child.get('name'))
+            if left:
+                losses.add('M806', child, owner, f"<sensor name=\"{child.get('name')}\">: "
+                           + left)
             continue
         what = (f"<plugin filename=\"{child.get('filename')}\">" if child.tag == 'plugin'
                 else f"<sensor type=\"{child.get('type')}\">" if child.tag == 'sensor'

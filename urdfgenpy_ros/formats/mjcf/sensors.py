@@ -96,8 +96,13 @@ def _number(element: Any, path: str, default: float) -> float:
         return default
 
 
-def write_sensors(document: Any, worldbody: Any, robot: Robot) -> set[str]:
-    """Add the robot's sensors to the bodies and a ``<sensor>`` section; return their names."""
+def write_sensors(document: Any, worldbody: Any, robot: Robot,
+                  partly: dict[str, str] | None = None) -> set[str]:
+    """
+    Add the robot's sensors to the bodies and a ``<sensor>`` section; return their names.
+
+    ``partly`` gets, by sensor name, what of a sensor written was left out.
+    """
     bodies = {body.get('name'): body for body in worldbody.iter('body')}
     section = etree.Element('sensor')
     written = set()
@@ -120,7 +125,9 @@ def write_sensors(document: Any, worldbody: Any, robot: Robot) -> set[str]:
             for what in ('force', 'torque'):
                 etree.SubElement(section, what, name=f'{name}_{what}', site=name)
         elif kind in LIDARS:
-            _lidar(body, section, name, pose, placed.element)
+            left = _lidar(body, section, name, pose, placed.element)
+            if left and partly is not None:
+                partly[name] = left
         else:
             continue
         written.add(name)
@@ -167,9 +174,11 @@ def _camera(body: Any, name: str, pose: Origin, element: Any) -> None:
     _first_after_joints(body, 'camera', attributes)
 
 
-def _lidar(body: Any, section: Any, name: str, pose: Origin, element: Any) -> None:
+def _lidar(body: Any, section: Any, name: str, pose: Origin, element: Any) -> str:
+    """Write a lidar's horizontal ring of rangefinders; return what was left out, or ''."""
     scan = element.find('lidar') if element.find('lidar') is not None else element.find('ray')
     scan = scan if scan is not None else element
+    vertical = int(_number(scan, 'scan/vertical/samples', 1.0))
     samples = int(_number(scan, 'scan/horizontal/samples', 1.0)) or 1
     low = _number(scan, 'scan/horizontal/min_angle', 0.0)
     high = _number(scan, 'scan/horizontal/max_angle', 0.0)
@@ -187,3 +196,5 @@ def _lidar(body: Any, section: Any, name: str, pose: Origin, element: Any) -> No
         if cutoff > 0.0:
             attributes['cutoff'] = fmt(cutoff)
         etree.SubElement(section, 'rangefinder', attributes)
+    return (f'its {vertical} vertical samples are not carried: one horizontal ring of '
+            f'{samples} rangefinders is written' if vertical > 1 else '')
