@@ -450,3 +450,12 @@ def test_the_world_links_inertial_is_a_loss() -> None:
     result = write_mjcf(robot)
     assert [(finding.code, finding.element) for finding in result.findings] == [
         ('M807', "link 'world'")]
+
+
+def test_a_mimic_mujoco_cannot_couple_is_a_loss() -> None:
+    robot = _mimic_pair()
+    robot.get_joint('follower').type = 'fixed'  # a mimic on a fixed joint couples nothing
+    result = write_mjcf(robot)
+    assert [(finding.code, finding.element) for finding in result.findings
+            if finding.code != 'M801'] == [('M807', "joint 'follower'")]
+    assert '<equality>' not in result.text

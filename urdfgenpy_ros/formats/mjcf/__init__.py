@@ -201,7 +201,7 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
                             etree.XMLParser(huge_tree=True, resolve_entities=False,
                                             no_network=True))
     apply_block(urdf.find('mujoco'), document)
-    write_equalities(document, written)
+    carried.mimics = write_equalities(document, written)
     chosen = declared_actuators(written, actuators)
     gains = (kp if kp is not None else DEFAULT_KP, kv if kv is not None else DEFAULT_KV)
     write_actuators(document, chosen, *gains, servo_damping=kv)

@@ -82,6 +82,7 @@ class Carried:
     missing: dict[str, str] = field(default_factory=dict)  # mesh URI -> why not written
     followers: set[str] = field(default_factory=set)
     links: set[str] = field(default_factory=set)
+    mimics: set[str] = field(default_factory=set)  # followers written as equalities
     world_root: bool = False  # the root link is 'world': MuJoCo's world body, no inertial
     mujoco_check: Callable[[Any], list[tuple[str, str]]] | None = None
 
@@ -156,6 +157,10 @@ def _walk(node: Any, losses: Losses) -> None:
                        'counterpart')
     if tag == 'limit':
         _limit(node, losses, owner)
+    if tag == 'mimic' and parent is not None and parent.get('name') not in \
+            losses.carried.mimics:
+        losses.add('M807', node, owner, f"<mimic joint=\"{node.get('joint')}\"> is not "
+                   'carried: MuJoCo couples two joints that each move along one axis')
     if tag == 'inertial' and losses.carried.world_root and owner == "link 'world'":
         losses.add('M807', node, owner, "<inertial> of the root link 'world' is not carried: "
                    "MuJoCo's world body has no mass")

@@ -29,18 +29,20 @@ if TYPE_CHECKING:
 TIMESTEP = 0.002  # MuJoCo's default
 
 
-def write_equalities(document: Any, robot: Robot) -> None:
+def write_equalities(document: Any, robot: Robot) -> set[str]:
     """
     Write each mimic joint as a joint equality: q = offset + multiplier * q_leader.
 
     MuJoCo's constraints are soft; this one is made as stiff as the step allows (a time
     constant of two steps, MuJoCo's safe limit, and an impedance of 0.9999), so the
     follower stays within about 1e-6 rad of the URDF's relation while the leader moves.
+    Both joints must move along one axis; return the followers written.
     """
     mimics = [joint for joint in robot.joints if joint.mimic is not None
-              and joint.type.is_movable and robot.has_joint(joint.mimic.joint)]
+              and joint.type.is_movable and robot.has_joint(joint.mimic.joint)
+              and robot.get_joint(joint.mimic.joint).type.is_movable]
     if not mimics:
-        return
+        return set()
     section = etree.SubElement(document, 'equality')
     for joint in mimics:
         assert joint.mimic is not None
@@ -50,6 +52,7 @@ def write_equalities(document: Any, robot: Robot) -> None:
                                            0.0, 0.0, 0.0)),
                          solref=f'{fmt(2.0 * _timestep(document))} 1',
                          solimp='0.9999 0.9999 0.001 0.5 2')
+    return {joint.name for joint in mimics}
 
 
 def _timestep(document: Any) -> float:
