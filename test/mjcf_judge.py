@@ -46,6 +46,16 @@ def body_tensor(model, index: int) -> numpy.ndarray:
     return rotation @ numpy.diag(model.body_inertia[index]) @ rotation.T
 
 
+def diverges(model, steps: int = 1000) -> bool:
+    """Return whether ``steps`` steps with zero control diverge (MuJoCo resets on it)."""
+    import mujoco
+    data = mujoco.MjData(model)
+    for _ in range(steps):
+        mujoco.mj_step(model, data)
+    return bool(data.warning[mujoco.mjtWarning.mjWARN_BADQACC].number) or not (
+        numpy.all(numpy.isfinite(data.qpos)) and numpy.all(numpy.isfinite(data.qvel)))
+
+
 def assert_steps_finite(model, steps: int = 1000) -> None:
     """Step ``steps`` times with zero control from the model's initial state; all stays finite."""
     import mujoco
@@ -53,6 +63,8 @@ def assert_steps_finite(model, steps: int = 1000) -> None:
     for _ in range(steps):
         mujoco.mj_step(model, data)
     assert numpy.all(numpy.isfinite(data.qpos)) and numpy.all(numpy.isfinite(data.qvel))
+    # MuJoCo resets a diverging simulation itself: count those warnings too
+    assert data.warning[mujoco.mjtWarning.mjWARN_BADQACC].number == 0
 
 
 def assert_inertia_as_urdf(model, urdf_path: Path, links: set[str] | None = None) -> int:

@@ -16,12 +16,14 @@
 """
 Every registry and corpus robot that check_urdf accepts, converted to MJCF and judged.
 
-MuJoCo compiles it and steps it 1000 times with zero control; per body the mass, centre
-of mass and inertia equal yourdfpy's reading of the URDF (pinocchio's lumped inertia when
-fixed links are fused); every link's pose equals pinocchio's forward kinematics at 20
-random configurations; each joint's range, damping, friction and effort limit equal the
-URDF's (1e-9). A robot whose mass or inertia MuJoCo refuses is refused before anything
-is written, and MuJoCo's own URDF import (keeping every body) refuses it too.
+MuJoCo compiles it and steps it 1000 times with zero control without diverging (a robot
+whose own masses and collisions make MuJoCo diverge must diverge in MuJoCo's own import
+too); per body the mass, centre of mass and inertia equal yourdfpy's reading of the URDF
+(pinocchio's lumped inertia when fixed links are fused); every link's pose equals
+pinocchio's forward kinematics at 20 random configurations; each joint's range, damping,
+friction and effort limit equal the URDF's (1e-9). A robot whose mass or inertia MuJoCo
+refuses is refused before anything is written, and MuJoCo's own URDF import (keeping
+every body) refuses it too.
 """
 
 from __future__ import annotations
@@ -67,16 +69,33 @@ def _urdf_for_judges(path: Path, robot, folder: Path) -> Path:
     return expanded
 
 
-def _mujoco_import_refuses(robot) -> bool:
-    """Return whether MuJoCo's own URDF import, keeping every body, refuses the robot."""
+def _mujoco_import(robot, source: Path | None = None):
+    """
+    Return MuJoCo's own URDF import of the robot, every body kept.
+
+    Without ``source`` it has no geometry; with it, the collisions MuJoCo can read (STL and
+    OBJ files found from ``source``'s folder or the registry packages) stay.
+    """
     import mujoco
     from lxml import etree
-    root = etree.fromstring(robot.to_urdf().encode())
+    text = robot.to_urdf()
+    if source is not None:
+        text = registry_robots.absolute_meshes(text, source.parent)
+    root = etree.fromstring(text.encode())
     for shape in [*root.iter('visual'), *root.iter('collision')]:
-        shape.getparent().remove(shape)
+        mesh = shape.find('geometry/mesh')
+        readable = mesh is not None and Path(mesh.get('filename', '')).is_file() and \
+            mesh.get('filename', '').lower().endswith(('.stl', '.obj'))
+        if source is None or shape.tag == 'visual' or (mesh is not None and not readable):
+            shape.getparent().remove(shape)
     root.append(etree.fromstring('<mujoco><compiler fusestatic="false"/></mujoco>'))
+    return mujoco.MjModel.from_xml_string(etree.tostring(root, encoding='unicode'))
+
+
+def _mujoco_import_refuses(robot) -> bool:
+    """Return whether MuJoCo's own URDF import, keeping every body, refuses the robot."""
     try:
-        mujoco.MjModel.from_xml_string(etree.tostring(root, encoding='unicode'))
+        _mujoco_import(robot)
     except ValueError:
         return True
     return False
@@ -98,7 +117,8 @@ def _judge(path: Path, search_paths: list, fuse: bool, tmp_path: Path) -> None:
         assert not target.exists() and _mujoco_import_refuses(robot)
         return
     model = mjcf_judge.compile_mjcf(target)
-    mjcf_judge.assert_steps_finite(model)
+    if mjcf_judge.diverges(model):  # the robot's own physics: MuJoCo's import diverges too
+        assert mjcf_judge.diverges(_mujoco_import(robot, path))
     urdf = _urdf_for_judges(path, robot, tmp_path)
     lumping = 'preserveFixedJoint' in urdf.read_text() or \
         'disableFixedJointLumping' in urdf.read_text()

@@ -106,11 +106,16 @@ def write_sensors(document: Any, worldbody: Any, robot: Robot,
     bodies = {body.get('name'): body for body in worldbody.iter('body')}
     section = etree.Element('sensor')
     written = set()
+    taken = {node.get('name') for node in worldbody.iter('site', 'camera')}
     for placed in gather(robot):
-        kind, name = placed.element.get('type', ''), placed.element.get('name', '')
+        kind, given = placed.element.get('type', ''), placed.element.get('name', '')
         body = bodies.get(placed.body)
-        if body is None or not name:
+        if body is None or not given:
             continue
+        name, number = given, 2  # Gazebo names sensors per link; MJCF per model
+        while name in taken:
+            name, number = f'{given}_{number}', number + 1
+        taken.add(name)
         pose = _pose(placed.element)
         if kind in CAMERAS:
             _camera(body, name, pose, placed.element)
@@ -127,10 +132,10 @@ def write_sensors(document: Any, worldbody: Any, robot: Robot,
         elif kind in LIDARS:
             left = _lidar(body, section, name, pose, placed.element)
             if left and partly is not None:
-                partly[name] = left
+                partly[given] = left
         else:
             continue
-        written.add(name)
+        written.add(given)
     if len(section):
         index = list(document).index(worldbody) + 1
         for later in ('equality', 'actuator'):
