@@ -146,38 +146,15 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
             if not robot.has_link(getattr(joint, role)):
                 raise ModelError(f'joint {joint.name!r}: {role} link {getattr(joint, role)!r}'
                                  ' does not exist: define the link or fix the name')
-    notes: list[str] = []
     written, sites, owners = fused(robot) if fuse_fixed else (robot, {}, {})
     _refuse(robot, written, fuse_fixed, base == 'floating')
     at_world = robot.root.name == WORLD
     taken = 'fixed' if base is None else base
-    if at_world:
-        notes.append(f"base: the root link is 'world': its joints attach the robot to the "
-                     f'world{" (base=" + repr(base) + " ignored)" if base else ""}')
-    elif base is None:
-        notes.append("base: fixed (the default; base='floating' / --base floating gives the "
-                     'root a free joint)')
-    else:
-        notes.append(f'base: {base}')
+    notes = [_base_note(at_world, base)]
     meshes = MeshAssets(PackageResolver(search_paths), _source_folder(robot),
                         meshdir if path is not None else None)
-    document = etree.Element('mujoco', model=robot.name)
-    document.append(etree.Comment(
-        f' Written by urdfgenpy_ros from robot {robot.name!r}. '
-        f"{notes[0].replace(' / --base floating', '')}. Fixed links "
-        f'{"fused into their parents (each a site)" if fuse_fixed else "kept as bodies"}. '
-        .replace('--', '- -')))
-    compiler = etree.SubElement(document, 'compiler', angle='radian', autolimits='true',
-                                inertiafromgeom='false')
-    if path is not None and meshdir:
-        compiler.set('meshdir', meshdir)
-    defaults = etree.SubElement(etree.SubElement(document, 'default'), 'default',
-                                {'class': 'visual'})
-    etree.SubElement(defaults, 'geom', contype='0', conaffinity='0', group='2')
-    collision = etree.SubElement(defaults.getparent(), 'default', {'class': 'collision'})
-    etree.SubElement(collision, 'geom', group='3')
-    # inertia comes from the URDF: a mesh's own volume (open surfaces have none) is unused
-    etree.SubElement(defaults.getparent(), 'mesh', inertia='shell')
+    document = _skeleton(robot.name, notes[0], fuse_fixed,
+                         meshdir if path is not None else None)
     asset = etree.SubElement(document, 'asset')
     worldbody = etree.SubElement(document, 'worldbody')
     declared = declared_friction(robot)
@@ -226,6 +203,39 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     if path is not None:
         result.files = _write(Path(path), text, meshes, meshdir, scene, robot.name)
     return result
+
+
+def _base_note(at_world: bool, base: str | None) -> str:
+    """Return the note saying which base the model has, and why."""
+    if at_world:
+        return ("base: the root link is 'world': its joints attach the robot to the world"
+                + (f' (base={base!r} ignored)' if base else ''))
+    if base is None:
+        return ("base: fixed (the default; base='floating' / --base floating gives the root "
+                'a free joint)')
+    return f'base: {base}'
+
+
+def _skeleton(name: str, base: str, fuse_fixed: bool, meshdir: str | None) -> Any:
+    """Return the ``<mujoco>`` root with its header comment, compiler and defaults."""
+    document = etree.Element('mujoco', model=name)
+    document.append(etree.Comment(
+        f' Written by urdfgenpy_ros from robot {name!r}. '
+        f"{base.replace(' / --base floating', '')}. Fixed links "
+        f'{"fused into their parents (each a site)" if fuse_fixed else "kept as bodies"}. '
+        .replace('--', '- -')))
+    compiler = etree.SubElement(document, 'compiler', angle='radian', autolimits='true',
+                                inertiafromgeom='false')
+    if meshdir:
+        compiler.set('meshdir', meshdir)
+    defaults = etree.SubElement(document, 'default')
+    visual = etree.SubElement(defaults, 'default', {'class': 'visual'})
+    etree.SubElement(visual, 'geom', contype='0', conaffinity='0', group='2')
+    collision = etree.SubElement(defaults, 'default', {'class': 'collision'})
+    etree.SubElement(collision, 'geom', group='3')
+    # inertia comes from the URDF: a mesh's own volume (open surfaces have none) is unused
+    etree.SubElement(defaults, 'mesh', inertia='shell')
+    return document
 
 
 def _note_gains(notes: list[str], chosen: list[Any], kp: float | None, kv: float | None,
