@@ -60,6 +60,22 @@ def _corpus() -> list:
                          for path in files for fuse in (False, True)])
 
 
+def _example_robot_data() -> list:
+    """Return example-robot-data's URDF files (pip's example-robot-data), all slow."""
+    from importlib import metadata
+    try:
+        share = Path(str(metadata.distribution('example-robot-data').locate_file(
+            'cmeel.prefix/share/example-robot-data/robots')))
+    except metadata.PackageNotFoundError:
+        share = Path('/nonexistent')
+    files = sorted(share.glob('*/robots/*.urdf')) + sorted(share.glob('*/urdf/*.urdf'))
+    if not files:
+        return [pytest.param(None, [], False, id='not-installed', marks=pytest.mark.skip(
+            'example-robot-data not installed'))]
+    return [pytest.param(path, [share], False, id=str(path.relative_to(share)),
+                         marks=pytest.mark.slow) for path in files]
+
+
 def _urdf_for_judges(path: Path, robot, folder: Path) -> Path:
     """Return the URDF the judges read: the file, or real xacro's expansion of it."""
     if not any(warning.code == 'X101' for warning in robot.read_warnings):
@@ -140,4 +156,10 @@ def test_registry_robot_in_mujoco(path: Path, search_paths: list, fuse: bool,
 @pytest.mark.parametrize(('path', 'search_paths', 'fuse'), _corpus())
 def test_corpus_robot_in_mujoco(path: Path, search_paths: list, fuse: bool,
                                 tmp_path: Path) -> None:
+    _judge(path, search_paths, fuse, tmp_path)
+
+
+@pytest.mark.parametrize(('path', 'search_paths', 'fuse'), _example_robot_data())
+def test_example_robot_data_in_mujoco(path: Path, search_paths: list, fuse: bool,
+                                      tmp_path: Path) -> None:
     _judge(path, search_paths, fuse, tmp_path)
