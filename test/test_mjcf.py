@@ -459,3 +459,18 @@ def test_a_mimic_mujoco_cannot_couple_is_a_loss() -> None:
     assert [(finding.code, finding.element) for finding in result.findings
             if finding.code != 'M801'] == [('M807', "joint 'follower'")]
     assert '<equality>' not in result.text
+
+
+def test_convert_replaces_no_file_of_the_users_without_force(tmp_path: Path) -> None:
+    from urdfgenpy_ros.examples import pan_tilt_unit
+    source = tmp_path / 'ptu.urdf'
+    pan_tilt_unit().to_urdf(source)
+    mine = tmp_path / 'scene.xml'
+    mine.write_text('<mujoco><!-- my own scene --></mujoco>')
+    result = CliRunner().invoke(main, ['convert', str(source), str(tmp_path / 'ptu.xml'),
+                                       '--scene'])
+    assert result.exit_code == 2 and 'scene.xml exists: pass --force' in result.output
+    assert 'my own scene' in mine.read_text() and not (tmp_path / 'ptu.xml').exists()
+    result = CliRunner().invoke(main, ['convert', str(source), str(tmp_path / 'ptu.xml'),
+                                       '--scene', '--force'])
+    assert result.exit_code == 0 and 'include file="ptu.xml"' in mine.read_text()

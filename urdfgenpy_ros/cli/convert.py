@@ -84,7 +84,7 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     if kind == 'sdf':
         _refuse_invalid_inertia(robot, target)
     if kind == 'mjcf':  # meshes are resolved from the source and copied beside the target
-        raise SystemExit(write_mjcf_file(robot, target, mjcf, package_paths))
+        raise SystemExit(write_mjcf_file(robot, target, mjcf, package_paths, force))
     rebase_meshes(robot, source.parent, target.parent)  # relative meshes still found
     robot.save(target)
     click.echo(f'wrote {target}: {len(robot.links)} links, {len(robot.joints)} joints')

@@ -107,13 +107,17 @@ def mjcf_options(function: Callable[..., Any]) -> Callable[..., Any]:
 
 
 def write_mjcf_file(robot: Robot, target: Path, options: MjcfOptions,
-                    search_paths: tuple[Path, ...]) -> int:
-    """Write ``robot`` as MJCF to ``target``; print the report; return the exit status."""
+                    search_paths: tuple[Path, ...], force: bool = False) -> int:
+    """
+    Write ``robot`` as MJCF to ``target``; print the report; return the exit status.
+
+    Without ``force``, a mesh or scene file beside it with other content is refused.
+    """
     try:
         result = write_mjcf(robot, target, fuse_fixed=options.fuse_fixed, base=options.base,
                             actuators=options.actuators, kp=options.kp, kv=options.kv,
                             scene=options.scene, overlay=options.overlay,
-                            search_paths=search_paths)
+                            search_paths=search_paths, overwrite=force)
     except MjcfRefusedError as error:
         for finding in error.findings:
             click.echo(str(finding), err=True)

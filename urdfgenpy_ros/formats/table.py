@@ -134,7 +134,7 @@ FORMATS: tuple[Format, ...] = (
            not_read='reading SDF is not supported (convert from URDF or Xacro)'),
     Format('mjcf', ('.xml', '.mjcf'), 'MuJoCo MJCF', None, _write_mjcf,
            ('fuse_fixed', 'base', 'actuators', 'kp', 'kv', 'scene', 'overlay', 'meshdir',
-            'search_paths'),
+            'search_paths', 'overwrite'),
            not_read='reading MJCF is not supported: urdfgenpy writes it (a URDF or Xacro '
                     'file named .xml: rename it .urdf or .urdf.xacro)'),
     Format('assembly', ('.assembly.yaml', '.assembly.yml'), 'assembly file',

@@ -118,7 +118,7 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
                actuators: str | None = None, kp: float | None = None,
                kv: float | None = None, scene: bool = False,
                overlay: str | PathLike[str] | None = None, meshdir: str = 'assets',
-               search_paths: Any = ()) -> MjcfResult:
+               search_paths: Any = (), overwrite: bool = True) -> MjcfResult:
     """
     Return the MJCF of ``robot``; with ``path``, write it, its meshes and ``scene.xml``.
 
@@ -129,7 +129,8 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     declares; ``kp``/``kv`` are the servo gains (MuJoCo's default 1 otherwise; ``kv``
     also damps the position servos);
     ``overlay`` is an MJCF file merged in by element name; ``meshdir`` the folder beside
-    ``path`` the meshes go to.
+    ``path`` the meshes go to; without ``overwrite``, a file there with other content is
+    refused before anything is written.
 
     :raises MjcfRefusedError: for a mass or tensor MuJoCo refuses, before writing.
     :raises ModelError: for a bad option or a mesh that cannot be found or read.
@@ -201,7 +202,8 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     text = etree.tostring(document, encoding='unicode') + '\n'
     result = MjcfResult(text, findings, notes)
     if path is not None:
-        result.files = _write(Path(path), text, meshes, meshdir, scene, robot.name)
+        result.files = _write(Path(path), text, meshes, meshdir, scene, robot.name,
+                              overwrite)
     return result
 
 
@@ -250,24 +252,30 @@ def _note_gains(notes: list[str], chosen: list[Any], kp: float | None, kv: float
 
 
 def _write(path: Path, text: str, meshes: MeshAssets, meshdir: str, scene: bool,
-           name: str) -> list[Path]:
-    """Write the model, its meshes and, with ``scene``, ``scene.xml``; return the files."""
-    from urdfgenpy_ros.formats._xml import write_text
-    contents = meshes.contents()  # converted first: a mesh that fails writes nothing
-    written = []
+           name: str, overwrite: bool) -> list[Path]:
+    """
+    Write the model, its meshes and, with ``scene``, ``scene.xml``; return the files.
+
+    Everything is made in memory first (a mesh that fails writes nothing); without
+    ``overwrite``, a file that exists with other content is refused before any is written.
+    """
+    from urdfgenpy_ros.formats._xml import xml_bytes
     folder = path.parent / meshdir
-    for file, data in contents.items():
-        folder.mkdir(parents=True, exist_ok=True)
-        (folder / file).write_bytes(data)
-        written.append(folder / file)
-    write_text(path, text)
-    written.append(path)
+    planned = {folder / file: data for file, data in meshes.contents().items()}
+    planned[path] = xml_bytes(text)
     if scene:
         from urdfgenpy_ros.formats.mjcf.scene import scene_text
         target = path.parent / 'scene.xml'
         if target.resolve() == path.resolve():
             raise ModelError(f'{path}: the scene is written to scene.xml beside the model: '
                              'name the model otherwise')
-        write_text(target, scene_text(path.name, name))
-        written.append(target)
-    return written
+        planned[target] = xml_bytes(scene_text(path.name, name))
+    if not overwrite:
+        for file, data in planned.items():
+            if file.exists() and file.read_bytes() != data:
+                raise ModelError(f'{file} exists: pass --force (overwrite=True) to replace '
+                                 'it, or write the model to another folder')
+    for file, data in planned.items():
+        file.parent.mkdir(parents=True, exist_ok=True)
+        file.write_bytes(data)
+    return list(planned)
