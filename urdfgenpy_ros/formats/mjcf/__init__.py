@@ -24,6 +24,7 @@ base, the gains) as notes, and the files it wrote beside the model (meshes, scen
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+import importlib.util
 from os import PathLike
 from pathlib import Path
 from typing import Any, TYPE_CHECKING
@@ -179,6 +180,9 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
                             etree.XMLParser(huge_tree=True, resolve_entities=False,
                                             no_network=True))
     apply_block(urdf.find('mujoco'), document)
+    if urdf.find('mujoco') is not None and importlib.util.find_spec('mujoco') is None:
+        notes.append("the URDF's <mujoco> block was copied unchecked: MuJoCo checks it "
+                     "when installed (pip install 'urdfgenpy_ros[engines]')")
     carried.mimics = write_equalities(document, written)
     chosen = declared_actuators(written, actuators)
     gains = (kp if kp is not None else DEFAULT_KP, kv if kv is not None else DEFAULT_KV)
