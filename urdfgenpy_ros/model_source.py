@@ -21,11 +21,8 @@ import importlib
 from pathlib import Path
 
 from urdfgenpy_ros.errors import UrdfgenpyError
-from urdfgenpy_ros.formats import DH_SUFFIXES, load
+from urdfgenpy_ros.formats import find_format, load
 from urdfgenpy_ros.robot import Robot
-
-
-_FILES = ('.urdf', '.xacro', *DH_SUFFIXES)
 
 
 def parse_xacro_args(arguments: Sequence[str]) -> dict[str, str]:
@@ -55,8 +52,9 @@ def load_model(model: str, xacro_args: Sequence[str] = (),
         from urdfgenpy_ros.examples import pan_tilt_unit
         return pan_tilt_unit(), []
     path = Path(model).expanduser()
-    if path.name.lower().endswith(_FILES):
-        if not path.is_file():
+    row = find_format(path)
+    if row is not None:  # a format's file (load refuses one no format reads, in one line)
+        if row.reader is not None and not path.is_file():
             raise UrdfgenpyError(f"parameter 'model': {model} does not exist (give the path "
                                  'of a .urdf, .xacro, DH table or assembly file)')
         robot = load(path, parse_xacro_args(xacro_args), package_paths)

@@ -446,10 +446,14 @@ class Robot:
         from urdfgenpy_ros.formats import sdf
         return sdf.write_sdf(self, path, lump_fixed)
 
-    def save(self, path: str | PathLike[str]) -> None:
-        """Write the robot in the format its suffix names (.urdf, .xacro, .sdf)."""
+    def save(self, path: str | PathLike[str], **options: Any) -> None:
+        """
+        Write the robot in the format its suffix names (.urdf, .xacro, .sdf, .xml, .mjcf).
+
+        ``options`` go to that format's writer (``fuse_fixed=True`` for MJCF, say).
+        """
         from urdfgenpy_ros.formats import save
-        save(self, path)
+        save(self, path, **options)
 
     def tree_string(self) -> str:
         """Return the kinematic tree as plain text."""
@@ -597,3 +601,21 @@ class Robot:
         """
         from urdfgenpy_ros.dynamics import gravity_torques
         return gravity_torques(self, q, gravity, payload)
+
+    # ---- MuJoCo --------------------------------------------------------------------
+
+    def to_mjcf(self, path: str | PathLike[str] | None = None, **options: Any) -> str:
+        """
+        Return MuJoCo MJCF; with ``path``, also write it and its meshes beside it.
+
+        Options: ``fuse_fixed``, ``base`` ('fixed' or 'floating'), ``actuators``
+        ('position', 'velocity', 'motor'), ``kp``, ``kv``, ``scene``, ``overlay``,
+        ``meshdir``, ``search_paths`` (see :func:`urdfgenpy_ros.formats.mjcf.write_mjcf`).
+        Each thing the MJCF cannot carry is a ``UserWarning`` in ``check``'s format.
+        """
+        import warnings
+        from urdfgenpy_ros.formats.mjcf import write_mjcf
+        result = write_mjcf(self, path, **options)
+        for finding in result.findings:
+            warnings.warn(str(finding), stacklevel=2)
+        return result.text

@@ -26,6 +26,7 @@ from pathlib import Path
 import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot
+from urdfgenpy_ros.cli.convert_mjcf import mjcf_options, MjcfOptions, write_mjcf_file
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.formats.sdf_inertia import refused_inertias
@@ -53,19 +54,25 @@ from urdfgenpy_ros.robot import Robot
 @click.option('--drop-frames', is_flag=True, help='With --merge-fixed: remove merged links.')
 @click.option('--keep', 'keep', multiple=True, metavar='LINK',
               help='With --merge-fixed: never merge this link (repeatable).')
+@mjcf_options
 @input_options
 def convert(source: Path, target: Path, arguments: tuple[str, ...],
             package_paths: tuple[Path, ...], force: bool, lump_fixed: bool,
-            urdf_version: str | None, merge_fixed: bool = False,
+            urdf_version: str | None, mjcf: MjcfOptions, merge_fixed: bool = False,
             drop_frames: bool = False, keep: tuple[str, ...] = ()) -> None:
     """
     Convert SOURCE to TARGET; the suffixes choose the formats.
 
     SOURCE is .urdf, .xacro (.urdf.xacro), a DH table (.yaml, .yml, .csv) or an assembly
-    (.assembly.yaml); TARGET is .urdf, .xacro or .sdf. An SDF that libsdformat would
-    refuse (a link's inertia) is not written: exit status 2, one line per link.
+    (.assembly.yaml); TARGET is .urdf, .xacro or .sdf, or MuJoCo's .xml/.mjcf. An SDF or
+    MJCF that the engine would refuse (a link's inertia) is not written: exit status 2,
+    one line per link. MJCF: what it cannot carry is reported, one line each (--strict:
+    exit status 1); its meshes go to assets/ beside it.
     """
     kind = format_of(target)
+    if kind != 'mjcf' and mjcf.given():
+        raise UrdfgenpyError(f"{target}: {', '.join(mjcf.given())} apply to MJCF output "
+                             '(.xml, .mjcf) only: drop them or write .xml')
     if lump_fixed and kind != 'sdf':
         raise UrdfgenpyError(f'{target}: --lump-fixed applies to .sdf output only: drop it '
                              'or write .sdf')
@@ -89,6 +96,8 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
         robot = lump_fixed_joints(robot)  # what to_sdf(lump_fixed=True) writes
     if kind == 'sdf':
         _refuse_invalid_inertia(robot, target)
+    if kind == 'mjcf':  # meshes are resolved from the source and copied beside the target
+        raise SystemExit(write_mjcf_file(robot, target, mjcf, package_paths, force))
     rebase_meshes(robot, source.parent, target.parent)  # relative meshes still found
     robot.save(target)
     click.echo(f'wrote {target}: {len(robot.links)} links, {len(robot.joints)} joints')

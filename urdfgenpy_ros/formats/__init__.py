@@ -12,35 +12,40 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""Reading and writing robot descriptions, chosen by file suffix."""
+
+"""
+Reading and writing robot descriptions, chosen by file suffix.
+
+The formats are the rows of :data:`urdfgenpy_ros.formats.table.FORMATS`; ``load`` and
+``save`` are the one front door every front end goes through.
+"""
 
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from os import PathLike
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import ModelError
+from urdfgenpy_ros.formats.table import find_format, FORMATS, reader_for, writer_for
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.errors import ReadWarning
-    from urdfgenpy_ros.formats.detect import XacroEvidence
     from urdfgenpy_ros.robot import Robot
 
-WRITERS = {'.urdf': 'urdf', '.xacro': 'xacro', '.sdf': 'sdf'}
-DH_SUFFIXES = ('.yaml', '.yml', '.csv')
+WRITERS = {suffix: row.name for row in FORMATS if row.writer for suffix in row.suffixes}
+"""Written suffix -> format name (derived from the table)."""
+DH_SUFFIXES = next(row.suffixes for row in FORMATS if row.name == 'dh')
+
+__all__ = ['DH_SUFFIXES', 'find_format', 'format_of', 'FORMATS', 'load', 'save', 'WRITERS']
 
 
 def format_of(path: str | PathLike[str]) -> str:
-    """Return ``urdf``, ``xacro`` or ``sdf`` for a file name; raise ValueError otherwise."""
-    suffix = Path(path).suffix.lower()
-    try:
-        return WRITERS[suffix]
-    except KeyError:
-        known = ', '.join(WRITERS)
-        raise ModelError(f'{path}: unknown suffix {suffix!r} (use one of {known}, '
-                         'or .urdf.xacro)') from None
+    """
+    Return the name of the format that writes ``path`` (``urdf``, ``xacro``, ``sdf``, ``mjcf``).
+
+    :raises ModelError: one line, for a suffix no format writes.
+    """
+    return writer_for(path).name
 
 
 def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
@@ -52,50 +57,27 @@ def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
     assembly file (``*.assembly.yaml``, or YAML with a top-level ``parts:``) gives the
     robot its parts make; any other .yaml, .yml or .csv file is a DH table and gives its
     skeleton. A ``.urdf`` file that is Xacro (TurtleBot3's are) is expanded with xacro, as
-    ROS launch files do, and the robot gets a read warning (X101) saying so.
+    ROS launch files do, and the robot gets a read warning (X101) saying so. A suffix no
+    format reads (``.sdf``, ``.xml``, ``.txt``) is refused in one line.
+
+    :raises ModelError: for a suffix no format reads.
     """
-    from urdfgenpy_ros.robot import Robot
-    if Path(path).suffix.lower() in DH_SUFFIXES:
-        from urdfgenpy_ros.assembly_file import is_assembly
-        if is_assembly(path):  # *.assembly.yaml, or a YAML file with a top-level parts:
-            return Robot.from_assembly(path, list(search_paths))
-        from urdfgenpy_ros.dh import DHTable
-        return DHTable.from_file(path).to_robot(Path(path).name.split('.')[0])
-    if Path(path).suffix.lower() not in WRITERS:
-        raise ModelError(f'{path}: unknown suffix {Path(path).suffix.lower()!r} (urdfgenpy '
-                         'reads .urdf, .xacro and .urdf.xacro files, and DH tables and '
-                         'assembly files in .yaml, .yml or .csv)')
-    kind = format_of(path)
-    if kind == 'sdf':
-        raise ModelError(f'{path}: reading SDF is not supported (convert from URDF or Xacro)')
-    if kind == 'urdf':
-        from urdfgenpy_ros.formats.detect import xacro_evidence_in
-        from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
-        data = Path(path).read_bytes()
-        evidence = xacro_evidence_in(data, str(path))
-        if evidence is None:
-            return read_urdf_bytes(data, str(path))
-        robot = Robot.from_xacro(path, dict(mappings or {}), search_paths=list(search_paths))
-        robot.read_warnings.insert(0, _read_as_xacro(evidence, mappings))
-        return robot
-    return Robot.from_xacro(path, dict(mappings or {}), search_paths=list(search_paths))
+    row = reader_for(path)
+    assert row.reader is not None
+    return row.reader(Path(path), dict(mappings or {}), search_paths)
 
 
-def _read_as_xacro(evidence: XacroEvidence, mappings: Mapping[str, str] | None) -> ReadWarning:
-    from urdfgenpy_ros.errors import ReadWarning
-    given = ' '.join(f'{name}:={value}' for name, value in (mappings or {}).items())
-    return ReadWarning(evidence.location, 'X101', (
-        f'the file is Xacro ({evidence.what}): expanded with xacro '
-        f'({"arguments " + given if given else "no arguments"}); plain URDF tools cannot '
-        'read it, so name it .urdf.xacro'))
+def save(robot: Robot, path: str | PathLike[str], **options: Any) -> None:
+    """
+    Write ``robot`` to ``path`` in the format its suffix names, with the writer's options.
 
-
-def save(robot: Robot, path: str | PathLike[str]) -> None:
-    """Write ``robot`` to ``path`` in the format its suffix names."""
-    kind = format_of(path)
-    if kind == 'urdf':
-        robot.to_urdf(path)
-    elif kind == 'xacro':
-        robot.to_xacro(path)
-    else:
-        robot.to_sdf(path)
+    :raises ModelError: for a suffix no format writes, or an option its writer lacks.
+    """
+    row = writer_for(path)
+    unknown = sorted(set(options) - set(row.options))
+    if unknown:
+        from urdfgenpy_ros.errors import ModelError
+        raise ModelError(f'{path}: {row.description} output takes no option '
+                         f"{', '.join(unknown)} (it takes {', '.join(row.options) or 'none'})")
+    assert row.writer is not None
+    row.writer(robot, path, **options)

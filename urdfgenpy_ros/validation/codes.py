@@ -99,6 +99,18 @@ CODES: dict[str, tuple[Severity, str]] = {
     'M505': (W, 'MuJoCo refuses the model'),
     'M506': (W, 'MuJoCo cannot read the mesh'),
     'M507': (W, 'MuJoCo warns while compiling the model'),
+    'M508': (W, "MuJoCo's URDF import makes no actuator of a <ros2_control> command interface"),
+    'M509': (W, "MuJoCo's URDF import ignores <gazebo> friction (mu1, mu2)"),
+    # MJCF export (formats/mjcf/losses.py): what the MJCF cannot carry
+    'M801': (W, 'MJCF has no joint velocity limit'),
+    'M802': (W, 'MJCF has no safety controller'),
+    'M803': (W, 'MJCF has no joint calibration'),
+    'M804': (W, 'joint written as a stand-in of several MJCF joints'),
+    'M805': (W, 'transmission or ros2_control part that maps to no actuator'),
+    'M806': (W, 'Gazebo element not carried into MJCF'),
+    'M807': (W, 'element or attribute with no MJCF counterpart'),
+    'M808': (W, "<mujoco> block attribute MuJoCo's schema refuses"),
+    'M809': (W, 'geometry not written to MJCF (mesh not found or unreadable, size zero)'),
     'G601': (W, "SDFormat's URDF conversion lumps the link into its parent (fixed joint)"),
     'G602': (W, "SDFormat's URDF conversion drops the link (and everything below it)"),
 }
@@ -114,6 +126,8 @@ PREFLIGHT_HINTS: dict[str, str] = {
     'M505': 'MuJoCo says why in the message; fix what it names',
     'M507': 'MuJoCo ignores or changes what it names: check the simulation does not need it',
     'M506': 'MuJoCo reads STL, OBJ and MSH meshes: convert it, or give --package-path',
+    'M508': 'urdfgenpy convert ROBOT robot.xml writes it as an actuator (docs/mujoco.md)',
+    'M509': "urdfgenpy convert ROBOT robot.xml gives the link's collision geoms that friction",
     'G601': '<gazebo reference="JOINT"><preserveFixedJoint>true</preserveFixedJoint></gazebo> '
             'keeps the link (and its frame) in Gazebo',
     'G602': 'give the link a mass and inertia (Inertial.from_geometry): Gazebo drops it',

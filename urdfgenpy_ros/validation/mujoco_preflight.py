@@ -57,7 +57,8 @@ _RELATIVE = 1e-6  # MuJoCo computes in doubles; principal moments differ by roun
 
 def mujoco_findings(robot: Robot, findings: Findings, search_paths: list[Any],
                     base: Path | None) -> None:
-    """Add what MuJoCo's compile of ``robot`` changes (M501-M506) to ``findings``."""
+    """Add what MuJoCo's compile of ``robot`` changes or drops (M501-M509) to ``findings``."""
+    _dropped_by_import(robot, findings)
     try:
         import mujoco
     except ImportError:
@@ -314,6 +315,36 @@ def _hulls(meshes: list[tuple[str, str, Path]], findings: Findings) -> None:
         findings.add('M504', robot.get_link(name), f'link {name!r}', where,
                      f'{path.name} is not convex; MuJoCo collides with its convex hull{size}',
                      PREFLIGHT_HINTS['M504'], 'mesh')
+
+
+def _dropped_by_import(robot: Robot, findings: Findings) -> None:
+    """
+    Report what MuJoCo's URDF import drops that the MJCF export carries (M508, M509).
+
+    The export's own readings decide: the actuators it makes of ``<ros2_control>``, and
+    the friction it gives links from their ``<gazebo reference>`` blocks.
+    """
+    from urdfgenpy_ros.formats.mjcf.actuators import declared_actuators
+    from urdfgenpy_ros.formats.mjcf.friction import declared_friction
+    file = robot.source.file if robot.source is not None else None
+    for actuator in declared_actuators(robot, None):
+        joint = actuator.joint
+        where = SourceLocation(file, actuator.line) if actuator.line and file else joint
+        findings.add('M508', where, f'joint {joint.name!r}',
+                     '/robot/ros2_control/joint/command_interface',
+                     f'its {_INTERFACES[actuator.kind]} command interface becomes no '
+                     "actuator in MuJoCo's URDF import: the model cannot be driven",
+                     PREFLIGHT_HINTS['M508'], 'command_interface')
+    for link, friction in declared_friction(robot).items():
+        line = friction.element.sourceline
+        findings.add('M509', SourceLocation(file, line) if line and file else None,
+                     f'link {link!r}',
+                     f"/robot/gazebo[@reference='{link}']",
+                     f"MuJoCo's URDF import ignores its friction ({friction.text.split()[0]}): "
+                     "its geoms get MuJoCo's default 1", PREFLIGHT_HINTS['M509'], 'gazebo')
+
+
+_INTERFACES = {'position': 'position', 'velocity': 'velocity', 'motor': 'effort'}
 
 
 def _by_rules(robot: Robot, findings: Findings) -> None:

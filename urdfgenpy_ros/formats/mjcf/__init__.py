@@ -1,0 +1,285 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+
+"""
+MuJoCo MJCF writer: every link a body, the physics as the URDF gives it, losses named.
+
+:func:`write_mjcf` returns an :class:`MjcfResult`: the MJCF text, the findings for what
+the MJCF cannot carry (M801-M808, in ``check``'s format), the choices it made (the
+base, the gains) as notes, and the files it wrote beside the model (meshes, scene).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+import importlib.util
+from os import PathLike
+from pathlib import Path
+from typing import Any, TYPE_CHECKING
+
+from lxml import etree
+
+from urdfgenpy_ros.errors import ModelError, UrdfgenpyError, ValidationError
+from urdfgenpy_ros.floats import fmt, fmt_vec
+from urdfgenpy_ros.formats.mjcf.actuators import ACTUATOR_TYPES, declared_actuators, gears
+from urdfgenpy_ros.formats.mjcf.actuators import write_actuators
+from urdfgenpy_ros.formats.mjcf.blocks import (
+    apply_block, check_attributes, merge_overlay, read_overlay)
+from urdfgenpy_ros.formats.mjcf.bodies import BodyWriter, WORLD
+from urdfgenpy_ros.formats.mjcf.friction import declared_friction
+from urdfgenpy_ros.formats.mjcf.fusing import fused
+from urdfgenpy_ros.formats.mjcf.keyframe import write_keyframe
+from urdfgenpy_ros.formats.mjcf.losses import Carried, find_losses
+from urdfgenpy_ros.formats.mjcf.meshes import MeshAssets
+from urdfgenpy_ros.formats.mjcf.mimic import write_equalities
+from urdfgenpy_ros.formats.mjcf.sensors import write_sensors
+from urdfgenpy_ros.resources import PackageResolver
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
+
+BASES = ('fixed', 'floating')
+DEFAULT_KP = 1.0  # MuJoCo's own default for a position actuator
+DEFAULT_KV = 1.0  # and for a velocity actuator
+EXPANDED = ' (expanded)'
+REFUSED = ('I201', 'I202', 'I203', 'I207')  # what MuJoCo refuses to compile
+MINIMUM_MASS = 1e-15  # MuJoCo's mjMINVAL: a moving body needs this much
+
+
+class MjcfRefusedError(UrdfgenpyError):
+    """The robot has what MuJoCo refuses (an inertia, a mass): nothing was written."""
+
+    def __init__(self, message: str, findings: list[ValidationError]) -> None:
+        super().__init__(message)
+        self.findings = findings
+
+
+@dataclass
+class MjcfResult:
+    """The MJCF text, what it cannot carry, the choices made, and the files written."""
+
+    text: str
+    findings: list[ValidationError] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    files: list[Path] = field(default_factory=list)
+
+
+def _source_folder(robot: Robot) -> Path | None:
+    file = robot.source.file if robot.source is not None else None
+    if not file:
+        return None
+    path = Path(file.removesuffix(EXPANDED))
+    return path.parent if path.is_file() else None
+
+
+def _refuse(robot: Robot, written: Robot, fuse_fixed: bool, floating: bool) -> None:
+    """Raise MjcfRefusedError when MuJoCo refuses a mass or tensor of ``written``."""
+    from urdfgenpy_ros.validation import validate
+    refused = [finding for finding in validate(written, check_meshes=False)
+               if finding.code in REFUSED]
+    root = written.root
+    if floating and root.name != WORLD and _welded_mass(written, root.name) < MINIMUM_MASS:
+        from urdfgenpy_ros.errors import Severity, SourceLocation
+        refused.append(ValidationError(
+            'I201', Severity.ERROR, f'link {root.name!r}',
+            root.source or SourceLocation(path=f"/robot/link[@name='{root.name}']"),
+            'the root link moves (a floating base) but has no mass, nor anything welded '
+            'to it', 'give it a mass and inertia (Inertial.from_geometry), or keep the base '
+            'fixed: MuJoCo refuses a massless moving body'))
+    if refused:
+        fix = '' if fuse_fixed else ' (or pass fuse_fixed / --fuse-fixed if they are fixed links)'
+        raise MjcfRefusedError(
+            f'robot {robot.name!r}: MuJoCo refuses the mass or inertia of '
+            f'{len(refused)} link(s): fix them (urdfgenpy check --fix){fix}; nothing written',
+            refused)
+
+
+def _welded_mass(robot: Robot, name: str) -> float:
+    """Return the mass of link ``name`` and of every link welded to it below."""
+    link = robot.get_link(name)
+    mass = link.inertial.mass if link.inertial is not None else 0.0
+    return mass + sum(_welded_mass(robot, joint.child) for joint in robot.child_joints(name)
+                      if joint.type.value == 'fixed')
+
+
+def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
+               fuse_fixed: bool = False, base: str | None = None,
+               actuators: str | None = None, kp: float | None = None,
+               kv: float | None = None, scene: bool = False,
+               overlay: str | PathLike[str] | None = None, meshdir: str = 'assets',
+               search_paths: Any = (), overwrite: bool = True) -> MjcfResult:
+    """
+    Return the MJCF of ``robot``; with ``path``, write it, its meshes and ``scene.xml``.
+
+    ``fuse_fixed`` merges fixed-joint children into their parents (the lumped inertia,
+    each merged link a ``<site>``); ``base`` is ``fixed`` (the default) or ``floating``
+    (a free joint) unless the root link is ``world``; ``actuators`` (position, velocity,
+    motor) puts that actuator on every joint instead of what ``<ros2_control>``
+    declares; ``kp``/``kv`` are the servo gains (MuJoCo's default 1 otherwise; ``kv``
+    also damps the position servos);
+    ``overlay`` is an MJCF file merged in by element name; ``meshdir`` the folder beside
+    ``path`` the meshes go to; without ``overwrite``, a file there with other content is
+    refused before anything is written.
+
+    :raises MjcfRefusedError: for a mass or tensor MuJoCo refuses, before writing.
+    :raises ModelError: for a bad option or a mesh that cannot be found or read.
+    """
+    if base not in (None, *BASES):
+        raise ModelError(f'base {base!r}: use fixed or floating')
+    if actuators not in (None, *ACTUATOR_TYPES):
+        raise ModelError(f"actuators {actuators!r}: use {', '.join(ACTUATOR_TYPES)}")
+    if len(robot.roots) != 1:
+        raise ModelError(f'robot {robot.name!r} has {len(robot.roots)} root links: MJCF '
+                         'needs one tree (urdfgenpy check says why)')
+    for joint in robot.joints:
+        for role in ('parent', 'child'):
+            if not robot.has_link(getattr(joint, role)):
+                raise ModelError(f'joint {joint.name!r}: {role} link {getattr(joint, role)!r}'
+                                 ' does not exist: define the link or fix the name')
+    written, sites, owners = fused(robot) if fuse_fixed else (robot, {}, {})
+    _refuse(robot, written, fuse_fixed, base == 'floating')
+    at_world = robot.root.name == WORLD
+    taken = 'fixed' if base is None else base
+    notes = [_base_note(at_world, base)]
+    meshes = MeshAssets(PackageResolver(search_paths), _source_folder(robot),
+                        meshdir if path is not None else None)
+    document = _skeleton(robot.name, notes[0], fuse_fixed,
+                         meshdir if path is not None else None)
+    asset = etree.SubElement(document, 'asset')
+    worldbody = etree.SubElement(document, 'worldbody')
+    declared = declared_friction(robot)
+    writer = BodyWriter(written, meshes, taken, sites)
+    writer.friction = ({link: value.text for link, value in declared.items()}, owners)
+    tree = writer.write(worldbody)
+    for element, attributes in meshes.elements():
+        etree.SubElement(asset, element, attributes)
+    for name, rgba in tree.materials.items():
+        etree.SubElement(asset, 'material', name=name, rgba=fmt_vec(rgba))
+    if not len(asset):
+        document.remove(asset)
+    carried = Carried(stand_ins=dict(tree.stand_ins), missing=dict(tree.missing),
+                      followers={j.name for j in robot.joints if j.mimic is not None},
+                      links={link.name for link in robot.links},
+                      mujoco_check=check_attributes, world_root=at_world,
+                      friction_links={link for link, value in declared.items()
+                                      if value.isotropic})
+    from urdfgenpy_ros.formats.urdf import write_urdf
+    urdf = etree.fromstring(write_urdf(robot).encode('utf-8'),
+                            etree.XMLParser(huge_tree=True, resolve_entities=False,
+                                            no_network=True))
+    apply_block(urdf.find('mujoco'), document)
+    if urdf.find('mujoco') is not None and importlib.util.find_spec('mujoco') is None:
+        notes.append("the URDF's <mujoco> block was copied unchecked: MuJoCo checks it "
+                     "when installed (pip install 'urdfgenpy_ros[engines]')")
+    carried.mimics = write_equalities(document, written)
+    chosen = declared_actuators(written, actuators)
+    gains = (kp if kp is not None else DEFAULT_KP, kv if kv is not None else DEFAULT_KV)
+    write_actuators(document, chosen, *gains, servo_damping=kv)
+    _note_gains(notes, chosen, kp, kv, gains)
+    reductions = gears(written)
+    for actuator in chosen:
+        if actuator.origin is not None:
+            carried.interfaces.add(actuator.origin)
+        if actuator.joint.name in reductions:
+            carried.transmissions.add(reductions[actuator.joint.name][1])
+    write_keyframe(document, tree, written)
+    carried.sensors = write_sensors(document, worldbody, written, carried.partly)
+    if overlay is not None:
+        merge_overlay(document, read_overlay(overlay))
+    file = robot.source.file if robot.source is not None else None
+    findings = find_losses(robot, urdf, file, carried)
+    from urdfgenpy_ros.validation.xacro_source import in_source
+    findings = in_source(findings, robot)
+    etree.indent(document, space='  ')
+    text = etree.tostring(document, encoding='unicode') + '\n'
+    result = MjcfResult(text, findings, notes)
+    if path is not None:
+        result.files = _write(Path(path), text, meshes, meshdir, scene, robot.name,
+                              overwrite)
+    return result
+
+
+def _base_note(at_world: bool, base: str | None) -> str:
+    """Return the note saying which base the model has, and why."""
+    if at_world:
+        return ("base: the root link is 'world': its joints attach the robot to the world"
+                + (f' (base={base!r} ignored)' if base else ''))
+    if base is None:
+        return ("base: fixed (the default; base='floating' / --base floating gives the root "
+                'a free joint)')
+    return f'base: {base}'
+
+
+def _skeleton(name: str, base: str, fuse_fixed: bool, meshdir: str | None) -> Any:
+    """Return the ``<mujoco>`` root with its header comment, compiler and defaults."""
+    document = etree.Element('mujoco', model=name)
+    document.append(etree.Comment(
+        f' Written by urdfgenpy_ros from robot {name!r}. '
+        f"{base.replace(' / --base floating', '')}. Fixed links "
+        f'{"fused into their parents (each a site)" if fuse_fixed else "kept as bodies"}. '
+        .replace('--', '- -')))
+    compiler = etree.SubElement(document, 'compiler', angle='radian', autolimits='true',
+                                inertiafromgeom='false')
+    if meshdir:
+        compiler.set('meshdir', meshdir)
+    defaults = etree.SubElement(document, 'default')
+    visual = etree.SubElement(defaults, 'default', {'class': 'visual'})
+    etree.SubElement(visual, 'geom', contype='0', conaffinity='0', group='2')
+    collision = etree.SubElement(defaults, 'default', {'class': 'collision'})
+    etree.SubElement(collision, 'geom', group='3')
+    # inertia comes from the URDF: a mesh's own volume (open surfaces have none) is unused
+    etree.SubElement(defaults, 'mesh', inertia='shell')
+    return document
+
+
+def _note_gains(notes: list[str], chosen: list[Any], kp: float | None, kv: float | None,
+                gains: tuple[float, float]) -> None:
+    kinds = {actuator.kind for actuator in chosen}
+    for kind, given, value, option in (('position', kp, gains[0], 'kp'),
+                                       ('velocity', kv, gains[1], 'kv')):
+        if kind in kinds:
+            said = ('given' if given is not None
+                    else f"MuJoCo's default: set {option}= / --{option}")
+            notes.append(f'{kind} actuators: {option}={fmt(value)} ({said})')
+
+
+def _write(path: Path, text: str, meshes: MeshAssets, meshdir: str, scene: bool,
+           name: str, overwrite: bool) -> list[Path]:
+    """
+    Write the model, its meshes and, with ``scene``, ``scene.xml``; return the files.
+
+    Everything is made in memory first (a mesh that fails writes nothing); without
+    ``overwrite``, a file that exists with other content is refused before any is written.
+    """
+    from urdfgenpy_ros.formats._xml import xml_bytes
+    folder = path.parent / meshdir
+    planned = {folder / file: data for file, data in meshes.contents().items()}
+    planned[path] = xml_bytes(text)
+    if scene:
+        from urdfgenpy_ros.formats.mjcf.scene import scene_text
+        target = path.parent / 'scene.xml'
+        if target.resolve() == path.resolve():
+            raise ModelError(f'{path}: the scene is written to scene.xml beside the model: '
+                             'name the model otherwise')
+        planned[target] = xml_bytes(scene_text(path.name, name))
+    if not overwrite:
+        for file, data in planned.items():
+            if file.exists() and file.read_bytes() != data:
+                raise ModelError(f'{file} exists: pass --force (overwrite=True) to replace '
+                                 'it, or write the model to another folder')
+    for file, data in planned.items():
+        file.parent.mkdir(parents=True, exist_ok=True)
+        file.write_bytes(data)
+    return list(planned)

@@ -1,0 +1,178 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+
+"""
+Actuators from what the robot declares.
+
+Each ``<ros2_control>`` ``<joint>`` command interface becomes an actuator on that joint:
+``position`` a position servo, ``velocity`` a velocity servo, ``effort`` a motor. The
+control range is the interface's ``min``/``max`` parameters, else the joint's limits
+(position: lower/upper, velocity: +-velocity, effort: +-effort). A ``<transmission>`` on
+the joint gives the ``gear`` (its ``mechanicalReduction``); MuJoCo's control is then in
+actuator units, so a servo's range is multiplied by it. The gains MuJoCo needs and URDF
+does not hold (``kp``, ``kv``) come from the options. Mimic followers are never actuated.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, TYPE_CHECKING
+
+from lxml import etree
+
+from urdfgenpy_ros.floats import fmt, fmt_vec
+from urdfgenpy_ros.joint import Joint, JointType
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
+
+KINDS = {'position': 'position', 'velocity': 'velocity', 'effort': 'motor'}
+"""ros2_control command interface -> MJCF actuator."""
+ACTUATOR_TYPES = ('position', 'velocity', 'motor')
+_ONE_DOF = (JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC)
+
+
+@dataclass
+class Actuator:
+    """One actuator to write: kind, joint, control range, gear and where it came from."""
+
+    kind: str  # position, velocity, motor
+    joint: Joint
+    ctrlrange: tuple[float, float] | None
+    gear: float
+    origin: tuple[int, int] | None  # (ros2_control block, element number), None: option
+    line: int | None = None  # the command interface's line, when it was read
+
+
+def _number(element: Any, name: str) -> float | None:
+    for param in element.findall('param'):
+        if param.get('name') == name:
+            try:
+                return float((param.text or '').strip())
+            except ValueError:
+                return None
+    return None
+
+
+def blocks(robot: Robot, tag: str) -> list[Any]:
+    """Return the elements of the robot's ``tag`` blocks, in order."""
+    return [block.element for block in robot.extensions if block.tag == tag]
+
+
+def gears(robot: Robot) -> dict[str, tuple[float, int]]:
+    """Return each joint's mechanical reduction and the number of the transmission."""
+    found: dict[str, tuple[float, int]] = {}
+    for number, element in enumerate(blocks(robot, 'transmission')):
+        joints = [node.get('name') for node in element.findall('joint')]
+        reductions = [node.findtext('mechanicalReduction') for node in element.iter()
+                      if node.findtext('mechanicalReduction') is not None]
+        value = 1.0
+        if reductions:
+            try:
+                value = float((reductions[0] or '1').strip())
+            except ValueError:
+                value = 1.0
+        for name in joints:
+            if name:
+                found[name] = (value, number)
+    return found
+
+
+def _range(kind: str, joint: Joint, element: Any) -> tuple[float, float] | None:
+    low = _number(element, 'min') if element is not None else None
+    high = _number(element, 'max') if element is not None else None
+    if low is not None and high is not None and low < high:
+        return low, high
+    limit = joint.limit
+    if limit is None:
+        return None
+    if kind == 'position':
+        if joint.type is JointType.CONTINUOUS or not limit.lower < limit.upper:
+            return None
+        return limit.lower, limit.upper
+    value = limit.velocity if kind == 'velocity' else limit.effort
+    return (-value, value) if value > 0.0 else None
+
+
+def declared_actuators(robot: Robot, kind: str | None) -> list[Actuator]:
+    """
+    Return the actuators: from ``<ros2_control>``, or ``kind`` on every joint when given.
+
+    ``kind`` (position, velocity, motor) replaces what ``<ros2_control>`` declares.
+    """
+    reductions = gears(robot)
+    followers = {joint.name for joint in robot.joints if joint.mimic is not None}
+    found: list[Actuator] = []
+
+    def add(name: str, what: str, element: Any, origin: tuple[int, int] | None) -> None:
+        if not robot.has_joint(name) or name in followers:
+            return
+        joint = robot.get_joint(name)
+        if joint.type not in _ONE_DOF:
+            return
+        gear = reductions.get(name, (1.0, None))[0]
+        span = _range(what if what != 'motor' else 'effort', joint, element)
+        if span is not None and what != 'motor':
+            low, high = span[0] * gear, span[1] * gear
+            span = (min(low, high), max(low, high))
+        found.append(Actuator(what, joint, span, gear, origin,
+                              getattr(element, 'sourceline', None)))
+
+    if kind is not None:
+        for joint in robot.joints:
+            add(joint.name, kind, None, None)
+        return found
+    for number, block in enumerate(blocks(robot, 'ros2_control')):
+        elements = list(block.iter())
+        for index, interface in enumerate(elements):
+            parent = interface.getparent()
+            if interface.tag != 'command_interface' or parent is None \
+                    or parent.tag != 'joint':
+                continue
+            what = KINDS.get(interface.get('name', ''))
+            if what is not None:
+                add(parent.get('name', ''), what, interface, (number, index))
+    return found
+
+
+def write_actuators(parent: Any, actuators: list[Actuator], kp: float, kv: float,
+                    servo_damping: float | None = None) -> None:
+    """
+    Add an ``<actuator>`` section holding ``actuators`` to ``parent``.
+
+    ``servo_damping`` is a position servo's ``kv`` (none: MuJoCo's, zero).
+    """
+    if not actuators:
+        return
+    section = etree.SubElement(parent, 'actuator')
+    taken: set[str] = set()
+    for actuator in actuators:
+        name = f'{actuator.joint.name}_{actuator.kind}'
+        number = 2
+        while name in taken:
+            name, number = f'{actuator.joint.name}_{actuator.kind}_{number}', number + 1
+        taken.add(name)
+        attributes = {'name': name, 'joint': actuator.joint.name}
+        if actuator.gear != 1.0:
+            attributes['gear'] = fmt(actuator.gear)
+        if actuator.ctrlrange is not None:
+            attributes['ctrlrange'] = fmt_vec(actuator.ctrlrange)
+        if actuator.kind == 'position':
+            attributes['kp'] = fmt(kp)
+            if servo_damping is not None:
+                attributes['kv'] = fmt(servo_damping)
+        elif actuator.kind == 'velocity':
+            attributes['kv'] = fmt(kv)
+        etree.SubElement(section, actuator.kind, attributes)

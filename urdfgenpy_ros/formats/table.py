@@ -1,0 +1,193 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+The formats urdfgenpy reads and writes, declared as data: one row per format.
+
+A row names the format, the file suffixes it owns, its reader and writer (None when it
+has none) and the keyword options its writer takes. Every front end (the library's
+``load``/``save``, the CLI, the node, assembly files, the scaffold, the viewer) finds a
+format here, so a suffix nobody declares is refused in one line everywhere, and adding a
+format is one module plus one row.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass
+from os import PathLike
+from pathlib import Path
+from typing import Any, TYPE_CHECKING
+
+from urdfgenpy_ros.errors import ModelError
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
+
+PathArg = str | PathLike[str]
+Reader = Callable[[Path, Mapping[str, str], Iterable[PathArg]], 'Robot']
+Writer = Callable[..., str]
+
+
+@dataclass(frozen=True)
+class Format:
+    """One format: its name, suffixes, reader, writer and the writer's options."""
+
+    name: str
+    suffixes: tuple[str, ...]
+    description: str
+    reader: Reader | None
+    writer: Writer | None
+    options: tuple[str, ...] = ()
+    not_read: str = ''  # why it cannot be read, and what to do instead
+
+    def matches(self, path: PathArg) -> bool:
+        """Return whether the file name ``path`` ends in one of this format's suffixes."""
+        return Path(path).name.lower().endswith(self.suffixes)
+
+
+def _read_urdf(path: Path, mappings: Mapping[str, str], search_paths: Iterable[PathArg]
+               ) -> Robot:
+    from urdfgenpy_ros.formats.detect import xacro_evidence_in
+    from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
+    data = path.read_bytes()
+    evidence = xacro_evidence_in(data, str(path))
+    if evidence is None:
+        return read_urdf_bytes(data, str(path))
+    from urdfgenpy_ros.errors import ReadWarning
+    robot = _read_xacro(path, mappings, search_paths)
+    given = ' '.join(f'{name}:={value}' for name, value in mappings.items())
+    robot.read_warnings.insert(0, ReadWarning(evidence.location, 'X101', (
+        f'the file is Xacro ({evidence.what}): expanded with xacro '
+        f'({"arguments " + given if given else "no arguments"}); plain URDF tools cannot '
+        'read it, so name it .urdf.xacro')))
+    return robot
+
+
+def _read_xacro(path: Path, mappings: Mapping[str, str], search_paths: Iterable[PathArg]
+                ) -> Robot:
+    from urdfgenpy_ros.formats.xacro_read import read_xacro
+    return read_xacro(path, dict(mappings), search_paths=list(search_paths))
+
+
+def _read_assembly(path: Path, mappings: Mapping[str, str],
+                   search_paths: Iterable[PathArg]) -> Robot:
+    from urdfgenpy_ros.assembly_file import read_assembly
+    return read_assembly(path, list(search_paths))
+
+
+def _read_table(path: Path, mappings: Mapping[str, str], search_paths: Iterable[PathArg]
+                ) -> Robot:
+    from urdfgenpy_ros.assembly_file import is_assembly
+    if is_assembly(path):  # a YAML file with a top-level parts:
+        return _read_assembly(path, mappings, search_paths)
+    from urdfgenpy_ros.dh import DHTable
+    return DHTable.from_file(path).to_robot(path.name.split('.')[0])
+
+
+def _write_urdf(robot: Robot, path: PathArg, version: str | None = None) -> str:
+    from urdfgenpy_ros.formats.urdf import write_urdf
+    if version is not None:
+        import warnings
+        from urdfgenpy_ros.formats.urdf_downgrade import as_version
+        robot, changes = as_version(robot, version)
+        for change in changes:
+            warnings.warn(str(change), stacklevel=3)
+    return write_urdf(robot, path)
+
+
+def _write_xacro(robot: Robot, path: PathArg, macro: bool = False) -> str:
+    from urdfgenpy_ros.formats import xacro
+    return xacro.write_macro_xacro(robot, path) if macro else xacro.write_xacro(robot, path)
+
+
+def _write_sdf(robot: Robot, path: PathArg, **options: Any) -> str:
+    from urdfgenpy_ros.formats.sdf import write_sdf
+    return write_sdf(robot, path, **options)
+
+
+def _write_mjcf(robot: Robot, path: PathArg, **options: Any) -> str:
+    import warnings
+    from urdfgenpy_ros.formats.mjcf import write_mjcf
+    result = write_mjcf(robot, path, **options)
+    for finding in result.findings:
+        warnings.warn(str(finding), stacklevel=3)
+    return result.text
+
+
+FORMATS: tuple[Format, ...] = (
+    Format('xacro', ('.urdf.xacro', '.xacro'), 'Xacro', _read_xacro, _write_xacro,
+           ('macro',)),
+    Format('urdf', ('.urdf',), 'URDF', _read_urdf, _write_urdf, ('version',)),
+    Format('sdf', ('.sdf',), 'SDF 1.9', None, _write_sdf, ('lump_fixed',),
+           not_read='reading SDF is not supported (convert from URDF or Xacro)'),
+    Format('mjcf', ('.xml', '.mjcf'), 'MuJoCo MJCF', None, _write_mjcf,
+           ('fuse_fixed', 'base', 'actuators', 'kp', 'kv', 'scene', 'overlay', 'meshdir',
+            'search_paths', 'overwrite'),
+           not_read='reading MJCF is not supported: urdfgenpy writes it (a URDF or Xacro '
+                    'file named .xml: rename it .urdf or .urdf.xacro)'),
+    Format('assembly', ('.assembly.yaml', '.assembly.yml'), 'assembly file',
+           _read_assembly, None),
+    Format('dh', ('.yaml', '.yml', '.csv'), 'DH table', _read_table, None),
+)
+"""Every format, most specific suffix first (``.urdf.xacro`` before ``.urdf``)."""
+
+
+def _known(role: str) -> str:
+    rows = [row for row in FORMATS if (row.reader if role == 'read' else row.writer)]
+    if role == 'read':  # the descriptions first, then the other rows
+        rest = [f"{row.description}s ({', '.join(row.suffixes)})" for row in rows
+                if row.name not in ('urdf', 'xacro')]
+        return '.urdf, .xacro and .urdf.xacro files, ' + ' and '.join(rest)
+    return ', '.join(f"{' '.join(row.suffixes)} ({row.description})" for row in rows)
+
+
+def find_format(path: PathArg) -> Format | None:
+    """Return the row whose suffix ``path`` ends in, or None."""
+    return next((row for row in FORMATS if row.matches(path)), None)
+
+
+def readable_suffixes() -> tuple[str, ...]:
+    """Return every suffix some format reads."""
+    return tuple(suffix for row in FORMATS if row.reader for suffix in row.suffixes)
+
+
+def reader_for(path: PathArg) -> Format:
+    """
+    Return the format that reads ``path``.
+
+    :raises ModelError: one line naming the file, the suffix and what is read instead.
+    """
+    row = find_format(path)
+    if row is None:
+        raise ModelError(f'{path}: unknown suffix {Path(path).suffix.lower()!r} (urdfgenpy '
+                         f'reads {_known("read")})')
+    if row.reader is None:
+        raise ModelError(f'{path}: {row.not_read}')
+    return row
+
+
+def writer_for(path: PathArg) -> Format:
+    """
+    Return the format that writes ``path``.
+
+    :raises ModelError: one line naming the file, the suffix and what is written instead.
+    """
+    row = find_format(path)
+    if row is None or row.writer is None:
+        what = ('unknown suffix' if row is None
+                else f'{row.description} is read, not written: suffix')
+        raise ModelError(f'{path}: {what} {Path(path).suffix.lower()!r} (urdfgenpy writes '
+                         f'{_known("write")})')
+    return row
