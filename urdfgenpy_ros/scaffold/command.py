@@ -18,11 +18,13 @@ from __future__ import annotations
 
 import argparse
 from collections.abc import Sequence
+import copy
 from pathlib import Path
 import sys
 
 from urdfgenpy_ros.model_source import load_model
 from urdfgenpy_ros.report import EXIT_KNOWN_ERROR, KNOWN_ERRORS, one_line
+from urdfgenpy_ros.scaffold.preflight import preflight
 from urdfgenpy_ros.scaffold.render import create_package
 from urdfgenpy_ros.scaffold.spec import BUILD_TYPES, PackageSpec
 
@@ -46,6 +48,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--package-path', action='append', default=[],
                         help='a folder holding ROS packages (repeatable)')
     parser.add_argument('--force', action='store_true', help='overwrite existing files')
+    parser.add_argument('--fix', action='store_true',
+                        help="repair the robot's errors that urdfgenpy check --fix can, "
+                             'in the package (the source is not touched)')
+    parser.add_argument('--allow-errors', action='store_true',
+                        help='scaffold a robot that has errors as it is (its colcon test '
+                             'will report them)')
 
 
 def run(args: argparse.Namespace) -> int:
@@ -57,10 +65,16 @@ def run(args: argparse.Namespace) -> int:
         robot, _ = load_model(args.source, args.xacro_args, args.package_path)
         for note in robot.read_warnings:  # e.g. X101: a .urdf file expanded as Xacro
             print(note, file=sys.stderr)
+        if args.fix:
+            robot = copy.deepcopy(robot)
+        for line in preflight(robot, repair=args.fix, allow_errors=args.allow_errors):
+            print(line, file=sys.stderr)
         written, warnings = create_package(
             spec, robot, force=args.force, source=args.source or 'the built-in example',
             search_paths=args.package_path)
     except KNOWN_ERRORS as error:
+        for line in getattr(error, 'lines', ()):  # the findings behind a refusal
+            print(line, file=sys.stderr)
         print(f'error: {one_line(error)}', file=sys.stderr)
         return EXIT_KNOWN_ERROR
     for warning in warnings:
