@@ -16,7 +16,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 import difflib
 from os import PathLike
 from pathlib import Path
@@ -356,6 +356,10 @@ class Robot:
         """Return whether ``element`` is this robot's link (or joint) of that name."""
         held = self._links if kind == 'link' else self._joints
         return held.get(name) is element
+
+    def _map_materials(self, change: Callable[[Material], Material]) -> None:
+        """Replace each robot-level material by ``change(material)`` (same name, same place)."""
+        self._materials = {name: change(material) for name, material in self._materials.items()}
 
     def _reindex(self) -> None:
         """Key links and joints by their names again, after they were renamed in place."""
