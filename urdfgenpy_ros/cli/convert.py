@@ -29,6 +29,7 @@ from urdfgenpy_ros.cli._options import input_options, read_robot
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.formats.sdf_inertia import refused_inertias
+from urdfgenpy_ros.formats.sdf_mass import mass_only_notes
 from urdfgenpy_ros.formats.urdf_downgrade import as_version, VERSIONS
 from urdfgenpy_ros.lumping import lump_fixed_joints
 from urdfgenpy_ros.resources import rebase_meshes
@@ -76,6 +77,8 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
         robot = lump_fixed_joints(robot)  # what to_sdf(lump_fixed=True) writes
     if kind == 'sdf':
         _refuse_invalid_inertia(robot, target)
+        for note in mass_only_notes(robot):  # kept as libsdformat keeps it
+            click.echo(note, err=True)
     rebase_meshes(robot, source.parent, target.parent)  # relative meshes still found
     robot.save(target)
     click.echo(f'wrote {target}: {len(robot.links)} links, {len(robot.joints)} joints')

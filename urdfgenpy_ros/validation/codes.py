@@ -69,6 +69,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'I206': (W, 'link without inertial (or massless) above moving links'),
     'I207': (W, 'moving link without inertial (fine for RViz, not for simulation)'),
     'I208': (W, 'a point mass (zero tensor) on a link that does not move'),
+    'I209': (W, 'massless root (and links fixed to it): libsdformat keeps no link'),
     # references and values
     'R301': (W, 'material not defined'),
     'R302': (E, 'collision mesh file not found'),
