@@ -77,7 +77,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'R304': (E, 'non-positive size or zero scale'),
     'R305': (E, 'not a finite number'),
     'R306': (W, 'visual mesh file not found'),
-    'R307': (W, 'non-positive size or zero scale on a visual (it draws nothing)'),
+    'R307': (W, 'zero size or zero scale on a visual (it draws nothing)'),
     'R308': (W, 'relative path written as a file:// URI (not portable)'),
     # URDF versions (validation/versions.py, urdf_versions.py)
     'V701': (E, 'URDF version the target ROS cannot read'),
