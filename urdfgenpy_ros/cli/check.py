@@ -28,6 +28,7 @@ from urdfgenpy_ros.assembly_file import is_assembly
 from urdfgenpy_ros.cli._options import input_options, parse_mappings
 from urdfgenpy_ros.cli.check_reports import FileReport, json_report, junit_report
 from urdfgenpy_ros.cli.check_reports import sarif_report
+from urdfgenpy_ros.cli.inputs import description_files
 from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.formats import DH_SUFFIXES, load
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
@@ -128,7 +129,7 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
     if dry_run and not repair:
         raise click.UsageError('--dry-run previews --fix: give both')
     mappings = parse_mappings(tuple(item for item in inputs if ':=' in item))
-    files = [Path(item) for item in inputs if ':=' not in item]
+    files = description_files([item for item in inputs if ':=' not in item])
     options = _Options(not no_meshes, package_paths, engines, ignored, repair, dry_run,
                        limit_defaults, target)
     text = output == 'text'
@@ -160,7 +161,7 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
     suppressed = sum(len(report.suppressed) for report in reports)
     fixed = sum(len(report.repairs) for report in reports)
     refused = sum(report.refused is not None for report in reports)
-    if text and (len(files) > 1 or every or unreadable or suppressed or fixed):
+    if text:
         extra = (f', {suppressed} suppressed' if suppressed else '') + (
             f', {fixed} {done}' if fixed else '') + (
             f', {refused} not fixable by --fix' if refused else '')

@@ -32,6 +32,7 @@ from urdfgenpy_ros.formats.sdf_inertia import refused_inertias
 from urdfgenpy_ros.formats.sdf_mass import mass_only_notes
 from urdfgenpy_ros.formats.urdf_downgrade import as_version, VERSIONS
 from urdfgenpy_ros.lumping import lump_fixed_joints
+from urdfgenpy_ros.report import counted
 from urdfgenpy_ros.resources import rebase_meshes
 from urdfgenpy_ros.robot import Robot
 
@@ -81,7 +82,8 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
             click.echo(note, err=True)
     rebase_meshes(robot, source.parent, target.parent)  # relative meshes still found
     robot.save(target)
-    click.echo(f'wrote {target}: {len(robot.links)} links, {len(robot.joints)} joints')
+    click.echo(f"wrote {target}: {counted(len(robot.links), 'link')}, "
+               f"{counted(len(robot.joints), 'joint')}")
 
 
 def _refuse_invalid_inertia(robot: Robot, target: Path) -> None:

@@ -22,6 +22,7 @@ from pathlib import Path
 
 from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
 from urdfgenpy_ros.joint import Joint, JointType
+from urdfgenpy_ros.report import counted
 from urdfgenpy_ros.robot import Robot
 
 FORMATS = ('svg', 'png', 'pdf', 'dot')
@@ -60,8 +61,8 @@ def to_dot(robot: Robot):  # -> graphviz.Digraph
     except ImportError:
         raise MissingDependencyError('graphviz', 'graph', 'urdfgenpy graph') from None
     dot = graphviz.Digraph(robot.name, graph_attr={
-        'rankdir': 'TB', 'label': f'{robot.name}: {len(robot.links)} links, '
-                                  f'{len(robot.joints)} joints',
+        'rankdir': 'TB', 'label': f"{robot.name}: {counted(len(robot.links), 'link')}, "
+                                  f"{counted(len(robot.joints), 'joint')}",
         'labelloc': 't', 'fontname': 'Helvetica', 'nodesep': '0.3', 'ranksep': '0.45'},
         node_attr={'shape': 'box', 'style': 'rounded,filled', 'fillcolor': '#e8eef7',
                    'color': '#34568b', 'fontname': 'Helvetica', 'fontsize': '12'},
