@@ -28,6 +28,7 @@ from typing import Any
 from urdfgenpy_ros.errors import (
     MissingDependencyError, ParseError, ReadWarning, SourceLocation)
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
+from urdfgenpy_ros.formats.xacro_args import unknown_arguments
 from urdfgenpy_ros.resources import PackageResolver
 from urdfgenpy_ros.robot import Robot
 
@@ -175,8 +176,9 @@ def read_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = N
         library = _macros_only(path, text)
         if library is not None:
             raise library
-    robot.read_warnings[:0] = said
     robot.included_files = [str(Path(path).resolve()), *included]
+    said += unknown_arguments(robot.included_files, mappings or {}, str(path))
+    robot.read_warnings[:0] = said
     return robot
 
 

@@ -38,6 +38,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'X003': (E, 'Xacro file of macros only read as a robot'),
     'X101': (W, 'Xacro in a .urdf file, expanded with xacro'),
     'X102': (W, 'xacro warned while expanding the file'),
+    'X103': (W, 'Xacro argument given that no file declares (xacro ignores it)'),
     # structure
     'S001': (E, 'no root link'),
     'S002': (E, 'more than one root link'),
