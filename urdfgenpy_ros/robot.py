@@ -390,8 +390,11 @@ class Robot:
         from urdfgenpy_ros.formats.detect import refuse_xacro
         from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
         data = Path(path).read_bytes()
-        refuse_xacro(data, str(path))  # one line naming Robot.from_xacro (X002)
-        return read_urdf_bytes(data, str(path))
+        weak = refuse_xacro(data, str(path))  # one line naming Robot.from_xacro (X002)
+        robot = read_urdf_bytes(data, str(path))
+        if weak is not None:  # only a $(...) in a mesh filename: urdfdom reads it too
+            robot.read_warnings.insert(0, weak)
+        return robot
 
     @classmethod
     def from_urdf_string(cls, xml: str | bytes, file: str | None = None) -> Robot:

@@ -75,6 +75,8 @@ def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
         evidence = xacro_evidence_in(data, str(path))
         if evidence is None:
             return read_urdf_bytes(data, str(path))
+        if evidence.weak:  # only a $(...) in a mesh filename: read as urdfdom does, X104
+            return Robot.from_urdf(path)
         robot = Robot.from_xacro(path, dict(mappings or {}), search_paths=list(search_paths))
         robot.read_warnings.insert(0, _read_as_xacro(evidence, mappings))
         return robot

@@ -39,6 +39,8 @@ CODES: dict[str, tuple[Severity, str]] = {
     'X101': (W, 'Xacro in a .urdf file, expanded with xacro'),
     'X102': (W, 'xacro warned while expanding the file'),
     'X103': (W, 'Xacro argument given that no file declares (xacro ignores it)'),
+    'X104': (W, "a .urdf file's mesh filename uses $(...): read as URDF, needs xacro to "
+                'resolve'),
     # structure
     'S001': (E, 'no root link'),
     'S002': (E, 'more than one root link'),
