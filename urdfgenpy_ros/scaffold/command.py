@@ -22,7 +22,7 @@ import copy
 from pathlib import Path
 import sys
 
-from urdfgenpy_ros.model_source import load_model
+from urdfgenpy_ros.model_source import INIT_WORDS, load_model
 from urdfgenpy_ros.report import EXIT_KNOWN_ERROR, KNOWN_ERRORS, one_line
 from urdfgenpy_ros.scaffold.preflight import preflight
 from urdfgenpy_ros.scaffold.render import create_package
@@ -62,7 +62,7 @@ def run(args: argparse.Namespace) -> int:
         spec = PackageSpec(args.package_name, args.build_type, args.destination_directory,
                            args.maintainer_name, args.maintainer_email, args.license,
                            args.description, list(args.dependencies))
-        robot, _ = load_model(args.source, args.xacro_args, args.package_path)
+        robot, _ = load_model(args.source, args.xacro_args, args.package_path, INIT_WORDS)
         for note in robot.read_warnings:  # e.g. X101: a .urdf file expanded as Xacro
             print(note, file=sys.stderr)
         if args.fix:
