@@ -229,7 +229,11 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
         report.findings, report.suppressed = read_suppressions(
             fixed, options.ignored).split(_findings(fixed, options))
     except KNOWN_ERRORS as error:
-        report.error = one_line(error)
+        if getattr(error, 'code', None) == 'X003':  # a macro library: checked where included
+            report.notes.append(f'{path}: note: skipped, it holds Xacro macros only (the '
+                                f'files that include it are checked): {error}')
+        else:
+            report.error = one_line(error)
         report.findings, report.suppressed, report.repairs = [], [], []
     return report
 
