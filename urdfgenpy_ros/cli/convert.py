@@ -35,6 +35,7 @@ from urdfgenpy_ros.lumping import lump_fixed_joints
 from urdfgenpy_ros.report import counted
 from urdfgenpy_ros.resources import rebase_meshes
 from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.validation.fix_output import DEFAULT_RADIUS, fix_for_output
 
 
 @click.command()
@@ -49,10 +50,17 @@ from urdfgenpy_ros.robot import Robot
               help='URDF output: write what this URDF version holds (1.0 is what ROS 2 '
                    'Jazzy reads: quaternions become rpy, a capsule a cylinder and two '
                    'spheres; each change is printed).')
+@click.option('--fix', 'repair', is_flag=True,
+              help="Apply check --fix's repairs to the model written (the source is not "
+                   'touched); each is printed.')
+@click.option('--fix-radius', type=click.FloatRange(min=0.0, min_open=True),
+              default=DEFAULT_RADIUS, show_default=True,
+              help='With --fix: radius (m) of the solid sphere whose tensor a link with no '
+                   'shape to take one from gets.')
 @input_options
 def convert(source: Path, target: Path, arguments: tuple[str, ...],
             package_paths: tuple[Path, ...], force: bool, lump_fixed: bool,
-            urdf_version: str | None) -> None:
+            urdf_version: str | None, repair: bool, fix_radius: float) -> None:
     """
     Convert SOURCE to TARGET; the suffixes choose the formats.
 
@@ -70,6 +78,9 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     if target.exists() and not force:
         raise UrdfgenpyError(f'{target} exists: pass --force to overwrite it')
     robot = read_robot(source, arguments, package_paths)
+    if repair:
+        for line in fix_for_output(robot, fix_radius):
+            click.echo(line, err=True)
     if urdf_version is not None:
         robot, changes = as_version(robot, urdf_version)
         for change in changes:
@@ -91,8 +102,8 @@ def _refuse_invalid_inertia(robot: Robot, target: Path) -> None:
     refused = refused_inertias(robot)
     for finding, parent in refused:
         fix = (f"pass --lump-fixed (it merges the link into {parent!r}, as libsdformat's "
-               'conversion does) or fix the tensor (urdfgenpy check --fix)'
-               if parent is not None else 'fix the tensor (urdfgenpy check --fix)')
+               'conversion does) or --fix (a tensor from its shape)'
+               if parent is not None else 'pass --fix (a tensor from its shape)')
         click.echo(f'{finding.location}: error {finding.code} {finding.element}: '
                    f'{finding.message}, which libsdformat refuses: {fix}', err=True)
     if refused:
@@ -100,4 +111,4 @@ def _refuse_invalid_inertia(robot: Robot, target: Path) -> None:
         raise UrdfgenpyError(
             f'{target} not written: libsdformat would refuse the inertia of '
             f'{len(refused)} link(s) (above): '
-            + ('pass --lump-fixed' if lumpable else 'fix them and convert again'))
+            + ('pass --lump-fixed' if lumpable else 'pass --fix, or fix them and convert again'))
