@@ -71,3 +71,16 @@ def test_init_from_a_module_in_the_current_folder(tmp_path: Path) -> None:
                             text=True, timeout=120, env=env)
     assert result.returncode == 0, result.stderr
     assert (tmp_path / 'cwd_bot_description' / 'urdf' / 'cwd_bot.urdf.xacro').is_file()
+
+
+def test_init_refuses_a_package_path_that_does_not_exist_as_check_does(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from click.testing import CliRunner
+    from urdfgenpy_ros.cli import main
+    missing = str(tmp_path / 'nowhere')
+    checked = CliRunner().invoke(main, ['check', '--package-path', missing, str(tmp_path)])
+    assert checked.exit_code == 2 and 'does not exist' in checked.stderr
+    assert init(['r_description', '--package-path', missing, '--destination-directory',
+                 str(tmp_path)]) == 2
+    assert f'--package-path {missing}: no such folder' in capsys.readouterr().err
+    assert not (tmp_path / 'r_description').exists()

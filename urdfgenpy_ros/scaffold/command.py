@@ -22,6 +22,7 @@ import copy
 from pathlib import Path
 import sys
 
+from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.model_source import INIT_WORDS, load_model
 from urdfgenpy_ros.report import EXIT_KNOWN_ERROR, KNOWN_ERRORS, one_line
 from urdfgenpy_ros.scaffold.preflight import preflight
@@ -62,6 +63,10 @@ def run(args: argparse.Namespace) -> int:
         spec = PackageSpec(args.package_name, args.build_type, args.destination_directory,
                            args.maintainer_name, args.maintainer_email, args.license,
                            args.description, list(args.dependencies))
+        for folder in args.package_path:  # as urdfgenpy check refuses it
+            if not Path(folder).is_dir():
+                raise UrdfgenpyError(f'--package-path {folder}: no such folder (give a folder '
+                                     'holding ROS packages)')
         robot, _ = load_model(args.source, args.xacro_args, args.package_path, INIT_WORDS)
         for note in robot.read_warnings:  # e.g. X101: a .urdf file expanded as Xacro
             print(note, file=sys.stderr)
