@@ -231,7 +231,8 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
     except KNOWN_ERRORS as error:
         if getattr(error, 'code', None) == 'X003':  # a macro library: checked where included
             report.notes.append(f'{path}: note: skipped, it holds Xacro macros only (the '
-                                f'files that include it are checked): {error}')
+                                f'files that include it are checked): X003 '
+                                f"{getattr(error, 'message', error)}")
         else:
             report.error = one_line(error)
         report.findings, report.suppressed, report.repairs = [], [], []

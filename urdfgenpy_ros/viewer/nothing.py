@@ -24,11 +24,12 @@ def nothing_to_draw(robot: Robot, collision: bool, problems: list[str]) -> str:
     kind = 'collision' if collision else 'visual'
     other = 'visual' if collision else 'collision'
     has_other = any(link.visuals if collision else link.collisions for link in robot.links)
-    switch = (f', or draw its {other} geometry ({"without " if collision else ""}'
-              f'--collision)' if has_other else '')
+    option = f'{"without " if collision else ""}--collision'
+    switch = f', or draw its {other} geometry ({option})' if has_other else ''
     if problems:
         more = f' (and {len(problems) - 1} more)' if len(problems) > 1 else ''
         return (f'robot {robot.name!r}: none of its {kind} geometry can be drawn: '
                 f'{problems[0]}{more}: give the folder holding its packages (--package-path)'
                 f'{switch}')
-    return f'robot {robot.name!r} has no {kind} geometry to draw{switch}'
+    return f'robot {robot.name!r} has no {kind} geometry to draw' + (
+        f' (draw its {other} geometry: {option})' if has_other else '')
