@@ -93,3 +93,13 @@ def test_convert_fix_to_urdf_gives_a_clean_robot(source: Path, tmp_path: Path) -
     assert result.exit_code == 0, result.output
     assert check_urdf(target).returncode == 0
     assert [f.code for f in Robot.from_urdf(target).validate() if f.severity == 'error'] == []
+
+
+def test_check_fix_on_xacro_points_to_convert_fix(source: Path, tmp_path: Path) -> None:
+    result = CliRunner().invoke(main, ['check', '--fix', str(source)])
+    assert result.exit_code == 2
+    (note,) = [line for line in result.stdout.splitlines() if 'not fixed' in line]
+    assert f'urdfgenpy convert {source} OUT.urdf --fix' in note
+    target = tmp_path / 'OUT.urdf'
+    follow = CliRunner().invoke(main, ['convert', str(source), str(target), '--fix'])
+    assert follow.exit_code == 0 and check_urdf(target).returncode == 0

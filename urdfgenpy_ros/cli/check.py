@@ -252,7 +252,8 @@ def _not_rewritable(path: Path, robot: Robot, count: int) -> str | None:
             warning.code == 'X101' for warning in robot.read_warnings):
         return (f'{path}: not fixed: it is Xacro, and writing the expanded robot back would '
                 f'lose its macros and properties: repair the {count} finding(s) above by '
-                'hand (their lines say how)')
+                'hand (their lines say how), or write a repaired copy with urdfgenpy convert '
+                f'{path} OUT.urdf --fix (or OUT.sdf)')
     return None
 
 
