@@ -95,3 +95,24 @@ def test_allow_errors_scaffolds_it_as_it_is_and_says_so(
     codes = [f.code for f in Robot.from_urdf_string(expanded).validate(check_meshes=False)
              if f.severity == 'error']
     assert codes == ['I203']  # what the package's colcon test will find, init said first
+
+
+def test_fix_gives_a_link_without_shapes_a_stated_sphere(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """create_2's cliff sensor links: a bad tensor and no shape to take one from."""
+    path = tmp_path / 'vacuum.urdf'
+    path.write_text(BASE.replace('</robot>', """  <link name="cliff_sensor_link">
+    <inertial><mass value="0.01"/>
+      <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="1"/></inertial>
+  </link>
+  <joint name="cliff_joint" type="fixed"><parent link="base_link"/>
+    <child link="cliff_sensor_link"/></joint>
+</robot>"""))
+    assert _init(path, tmp_path, '--fix') == 0
+    err = capsys.readouterr().err
+    assert "fixed I203 link 'cliff_sensor_link'" in err and 'solid sphere of radius 0.05 m' in err
+    package = tmp_path / 'vacuum_description'
+    with environment(ament_index(tmp_path / 'index', {'vacuum_description': package})):
+        robot = Robot.from_urdf_string(xacro_expand(package / 'urdf' / 'vacuum.urdf.xacro'))
+    sensor = robot.get_link('cliff_sensor_link').inertial
+    assert (sensor.ixx, sensor.iyy, sensor.izz) == pytest.approx([2 / 5 * 0.01 * 0.05 ** 2] * 3)

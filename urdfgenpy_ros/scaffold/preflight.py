@@ -25,7 +25,7 @@ from __future__ import annotations
 
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.robot import Robot
-from urdfgenpy_ros.validation.fix import fix
+from urdfgenpy_ros.validation.fix_output import fix_for_output
 
 
 def preflight(robot: Robot, *, repair: bool = False, allow_errors: bool = False) -> list[str]:
@@ -38,8 +38,9 @@ def preflight(robot: Robot, *, repair: bool = False, allow_errors: bool = False)
     """
     errors = _errors(robot)
     lines = []
-    if errors and repair:
-        lines += [str(done) for done in fix(robot, errors)]
+    if errors and repair:  # as convert --fix: a link without shapes gets a sphere's tensor
+        lines += [line.replace('--fix-radius sets the size', 'urdfgenpy convert --fix-radius '
+                               'sets another size') for line in fix_for_output(robot)]
         errors = _errors(robot)
     lines += [str(error) for error in errors]
     if errors and not allow_errors:
