@@ -48,6 +48,8 @@ ROBOT = """<?xml version="1.0"?>
       <geometry><mesh filename="package://bot_parts/meshes/chassis.stl"/></geometry>
       <material name="decal"/>
     </visual>
+    <visual><geometry><mesh filename="package://bot_parts/meshes/wheel.obj"/></geometry>
+    </visual>
     <collision><geometry><box size="0.3 0.2 0.1"/></geometry></collision>
     <inertial><mass value="2"/>
       <inertia ixx="0.0083" ixy="0" ixz="0" iyy="0.0167" iyz="0" izz="0.0217"/></inertial>
@@ -85,6 +87,14 @@ def workspace(tmp_path: Path) -> Path:
     (source / 'bot_parts' / 'urdf' / 'materials.xacro').write_text(MATERIALS)
     trimesh.creation.box((0.3, 0.2, 0.1)).export(source / 'bot_parts' / 'meshes' / 'chassis.stl')
     (source / 'bot_parts' / 'meshes' / 'decal.png').write_bytes(b'\x89PNG\r\n\x1a\n fake')
+    # an OBJ whose material's image lies in a folder beside it
+    meshes = source / 'bot_parts' / 'meshes'
+    (meshes / 'textures').mkdir()
+    require_module('PIL.Image').new('RGB', (4, 4), (200, 30, 30)).save(
+        meshes / 'textures' / 'paint.png')
+    (meshes / 'wheel.mtl').write_text('newmtl paint\nKd 1 1 1\nmap_Kd textures/paint.png\n')
+    (meshes / 'wheel.obj').write_text('mtllib wheel.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n'
+                                      'vt 0 0\nvt 1 0\nvt 0 1\nusemtl paint\nf 1/1 2/2 3/3\n')
     return source
 
 
@@ -104,9 +114,12 @@ def test_every_named_file_is_in_the_package_and_no_machine_path(
         workspace / 'bot_parts' / 'meshes' / 'chassis.stl').read_bytes()
     assert (package / 'meshes' / 'decal.png').is_file()
     for path in package.rglob('*'):
-        if path.is_file() and path.suffix not in ('.png', '.stl'):
+        if path.is_file() and path.suffix not in ('.png', '.stl', '.obj', '.mtl'):
             text = path.read_text()
             assert str(tmp_path) not in text and '/tmp' not in text, path
+    trimesh = require_module('trimesh')  # the copied OBJ finds its material and image
+    wheel = trimesh.load(package / 'meshes' / 'wheel.obj', force='mesh')
+    assert wheel.visual.material.image.size == (4, 4)
     gazebo = (package / 'urdf' / 'bot.gazebo.xacro').read_text()
     assert '$(find gen_description)/config/my_controllers.yaml' in gazebo
 

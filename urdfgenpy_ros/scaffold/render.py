@@ -35,6 +35,7 @@ from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.scaffold.assets import copy_referenced_files, with_find
+from urdfgenpy_ros.scaffold.mesh_files import companions
 from urdfgenpy_ros.scaffold.sensors_read import sensors_of
 from urdfgenpy_ros.scaffold.spec import PackageSpec
 from urdfgenpy_ros.scaffold.templates import template_root
@@ -79,7 +80,10 @@ def _meshes(spec: PackageSpec, robot: Robot, search_paths: list[str],
                 if note is not None:
                     warnings.append(note)
                 try:
-                    data = resolver.resolve(mesh.filename, base).read_bytes()
+                    found = resolver.resolve(mesh.filename, base)
+                    data = found.read_bytes()
+                    beside = {name: path.read_bytes()
+                              for name, path in companions(found, data).items()}
                 except (ResourceError, OSError) as error:
                     warnings.append(f'mesh {mesh.filename!r} not copied: {error}')
                     renamed[mesh.filename] = mesh.filename
@@ -88,6 +92,10 @@ def _meshes(spec: PackageSpec, robot: Robot, search_paths: list[str],
                 if name in files and files[name] != data:
                     name = f'{hashlib.sha1(data).hexdigest()[:8]}_{name}'
                 files[name] = data
+                for relative, content in beside.items():  # textures, materials: along
+                    if files.setdefault(relative, content) != content:
+                        warnings.append(f'{relative} of mesh {mesh.filename!r} not copied: '
+                                        'another mesh has a different file of that name')
                 renamed[mesh.filename] = f'package://{spec.name}/meshes/{name}'
             item.geometry = Mesh(renamed[mesh.filename], mesh.scale)
     return {f'meshes/{name}': data for name, data in files.items()}
