@@ -50,7 +50,7 @@ def test_a_csv_without_limit_columns_converts_with_the_tables_kinematics(
     rng = random.Random(28)
     for _ in range(5):
         q = [rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(0, 0.1)]
-        model.update_cfg({joint: value for joint, value in zip(model.actuated_joint_names, q)})
+        model.update_cfg(dict(zip(model.actuated_joint_names, q)))
         want = numpy.array(table.link_frames(q)[-1])
         got = model.get_transform(f'link_{len(q)}', model.base_link)
         assert got == pytest.approx(want, abs=1e-9)
