@@ -114,7 +114,7 @@ setup(
     entry_points={
         'console_scripts': [
             'urdfgenpy = urdfgenpy_ros.cli:main',
-            'publisher = urdfgenpy_ros.publisher.node:console_main',
+            'publisher = urdfgenpy_ros.publisher.entry:console_main',
         ],
         'ros2pkg.verb': [
             'scaffold = urdfgenpy_ros.scaffold.verb:ScaffoldVerb',

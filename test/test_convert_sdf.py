@@ -101,7 +101,7 @@ def test_convert_says_so_when_lumping_cannot_help(sdformat_refused, tmp_path: Pa
     Robot.from_urdf(source).to_sdf(tmp_path / 'direct.sdf', lump_fixed=True)
     _, refused = sdformat_refused(tmp_path / 'direct.sdf')
     assert _named(result.stderr) == refused == {'camera'}
-    assert 'fix the tensor (urdfgenpy check --fix)' in result.stderr
+    assert 'pass --fix (a tensor from its shape)' in result.stderr
     assert result.stderr.splitlines()[-1].endswith('fix them and convert again')
 
 

@@ -55,15 +55,16 @@ EXPECTED = {
     'tiny_moment.urdf': {('I202', 'error')},
     'barely_impossible_disc.urdf': {('I203', 'error')},
     'no_links.urdf': {('S001', 'error')},
-    # urdfdom drops the inertial; MuJoCo refuses the model (read, kept, reported).
-    'inertial_without_inertia.urdf': {('P106', 'warning'), ('I207', 'warning')},
+    # urdfdom drops the inertial; MuJoCo refuses the model (read, kept, reported);
+    # libsdformat keeps its mass (test_sdf_massless.py), so no I207 says Gazebo drops it.
+    'inertial_without_inertia.urdf': {('P106', 'warning')},
     # urdfdom ignores a visual's own material whose colour is not 4 numbers; MuJoCo
-    # refuses the model.
-    'five_number_colour.urdf': {('P107', 'warning')},
+    # refuses the model. No link has mass: libsdformat keeps none (I209).
+    'five_number_colour.urdf': {('P107', 'warning'), ('I209', 'warning')},
     # urdfdom drops a visual whose own material has no name; MuJoCo reads it.
-    'unnamed_visual_material.urdf': {('P107', 'warning')},
-    'urdfdom_sensor.urdf': set(),
-    'moving_sensor_without_inertial.urdf': {('I207', 'warning')},
+    'unnamed_visual_material.urdf': {('P107', 'warning'), ('I209', 'warning')},
+    'urdfdom_sensor.urdf': {('I209', 'warning')},
+    'moving_sensor_without_inertial.urdf': {('I207', 'warning'), ('I209', 'warning')},
     # A massless wheel whose fixed child carries the mass, and a massless mount carrying a
     # plate: both engines merge the mass in, nothing is dropped.
     'wheel_mass_in_fixed_child.urdf': set(),
@@ -160,7 +161,8 @@ def test_what_urdfdom_ignores_is_kept_until_replaced(name: str, tag: str) -> Non
 
 
 def test_a_sensor_gazebo_would_drop_is_named() -> None:
-    (finding,) = Robot.from_urdf(PROBLEMS / 'moving_sensor_without_inertial.urdf').validate()
+    found = Robot.from_urdf(PROBLEMS / 'moving_sensor_without_inertial.urdf').validate()
+    (finding,) = [finding for finding in found if finding.code == 'I207']
     assert "its sensor(s) 'cam'" in finding.hint
 
 

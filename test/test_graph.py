@@ -20,10 +20,11 @@ from __future__ import annotations
 from pathlib import Path
 
 from click.testing import CliRunner
-from helpers import load_yourdfpy, require_tool
+from helpers import load_yourdfpy, require_module, require_tool
 from lxml import etree
 import pytest
 
+from urdfgenpy_ros import Joint, Link
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.robot import Robot
 
@@ -90,3 +91,16 @@ def test_unknown_format_is_one_line_exit_2(ptu: Robot, tmp_path: Path) -> None:
     result = CliRunner().invoke(main, ['graph', str(urdf), '-o', str(tmp_path / 'x.gif')])
     assert result.exit_code == 2
     assert result.stderr.count('\n') == 1 and "unknown diagram format 'gif'" in result.stderr
+
+
+def test_a_wide_flat_tree_is_drawn_left_to_right(tmp_path: Path) -> None:
+    """A base link with forty frames on it: a readable picture, not a strip of boxes."""
+    pillow = require_module('PIL.Image')
+    robot = Robot('base').add_link(Link('base_link'))
+    for number in range(40):
+        robot.add_link(Link(f'sensor_{number}_link'))
+        robot.add_joint(Joint(f'sensor_{number}_joint', 'fixed', 'base_link',
+                              f'sensor_{number}_link'))
+    _, png = _draw(robot, tmp_path, 'tree.png')
+    width, height = pillow.open(png).size
+    assert max(width, height) / min(width, height) < 3, (width, height)

@@ -188,7 +188,8 @@ def test_relative_file_uris_resolve_beside_the_file_with_a_warning() -> None:
     trimesh = pytest.importorskip('trimesh')
     assert trimesh.load(str(found)).is_watertight  # a real mesh, read by another tool
     result = CliRunner().invoke(cli, ['check', str(RELATIVE)])
-    lines = result.stdout.strip().splitlines()
+    # (its one link has no mass: I209 says libsdformat keeps no link of it)
+    lines = [line for line in result.stdout.strip().splitlines() if ' I209 ' not in line]
     assert result.exit_code == 0, result.output
     assert len(lines) == 1 and 'warning R308' in lines[0] and 'not portable' in lines[0]
     assert lines[0].startswith(f'{RELATIVE}:7:9: ')

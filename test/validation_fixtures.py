@@ -128,11 +128,12 @@ DEFECTS: dict[str, tuple[set[str], list[tuple[str, str]]]] = {
     'I205': ({'I205'}, [('<link name="base_link"/>', '<link name="base_link"><!--D-->'
                          '<inertial><mass value="2"/><inertia ixx="0.01" ixy="0" ixz="0" '
                          'iyy="0.01" iyz="0" izz="0.01"/></inertial></link>')]),
-    'I206': ({'I206'}, [('<link name="base_link"/>', '<link name="base_link"/>\n'
-                         '<link name="mount"/><!--D-->'),
-                        ('<parent link="base_link"/>', '<parent link="mount"/>'),
-                        (_END, '<joint name="fix" type="fixed"><parent link="base_link"/>'
-                               '<child link="mount"/></joint>\n' + _END)]),
+    'I206': ({'I206', 'I209'}, [('<link name="base_link"/>', '<link name="base_link"/>\n'
+                                 '<link name="mount"/><!--D-->'),
+                                ('<parent link="base_link"/>', '<parent link="mount"/>'),
+                                (_END, '<joint name="fix" type="fixed">'
+                                       '<parent link="base_link"/>'
+                                       '<child link="mount"/></joint>\n' + _END)]),
     'I207': ({'I207'}, [('<link name="hand">', '<link name="hand"/><!--D--><unused>'),
                         ('</collision>\n  </link>\n  <joint name="shoulder"',
                          '</collision>\n  </unused>\n  <joint name="shoulder"')]),

@@ -33,6 +33,7 @@ from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.joint import Joint, JointMimic
 from urdfgenpy_ros.material import Material
+from urdfgenpy_ros.owned_names import set_name_only
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -87,11 +88,11 @@ def rename(robot: Robot, links: dict[str, str] | None = None,
 def _rename(robot: Robot, renaming: _Renaming) -> None:
     """Apply ``renaming`` to ``robot`` in place, every reference included."""
     for link in robot.links:
-        link.name = renaming.links.get(link.name, link.name)
+        set_name_only(link, renaming.links.get(link.name, link.name))
         for sensor in link.sensors:
             _rename_sensor(sensor, renaming)
     for joint in robot.joints:
-        joint.name = renaming.joints.get(joint.name, joint.name)
+        set_name_only(joint, renaming.joints.get(joint.name, joint.name))
         joint.parent = renaming.links.get(joint.parent, joint.parent)
         joint.child = renaming.links.get(joint.child, joint.child)
         mimic = joint.mimic

@@ -25,10 +25,12 @@ from urdfgenpy_ros import checks
 from urdfgenpy_ros.checks import Vec3
 from urdfgenpy_ros.errors import ModelError, SourceLocation
 from urdfgenpy_ros.geometry import IDENTITY, Origin
+from urdfgenpy_ros.owned_names import own_names
 from urdfgenpy_ros.preserved import Preserved
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.extensions import Extension
+    from urdfgenpy_ros.robot import Robot
     from urdfgenpy_ros.sensors import Sensor
 
 
@@ -202,6 +204,7 @@ class Joint:
     sensors: list[Sensor] = field(default_factory=list)
     source: SourceLocation | None = _hidden()
     extras: Preserved | None = _hidden()
+    _robot: Robot | None = field(default=None, init=False, compare=False, repr=False)
 
     if TYPE_CHECKING:
         # The generated __init__ accepts a type name too ('revolute'); say so to checkers.
@@ -274,3 +277,4 @@ class _TypeField:
 
 
 Joint.type = _TypeField(Joint.__dict__['type'])  # type: ignore[assignment,misc]
+own_names(Joint, 'joint')

@@ -24,10 +24,12 @@ from urdfgenpy_ros.errors import ModelTypeError, SourceLocation
 from urdfgenpy_ros.geometry import Geometry, IDENTITY, Origin
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.material import Material
+from urdfgenpy_ros.owned_names import own_names
 from urdfgenpy_ros.preserved import Preserved
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.extensions import Extension
+    from urdfgenpy_ros.robot import Robot
     from urdfgenpy_ros.sensors import Sensor
 
 
@@ -78,6 +80,7 @@ class Link:
     sensors: list[Sensor] = field(default_factory=list)
     source: SourceLocation | None = field(default=None, compare=False, repr=False)
     extras: Preserved | None = field(default=None, compare=False, repr=False)
+    _robot: Robot | None = field(default=None, init=False, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         """Check the name."""
@@ -127,3 +130,6 @@ class Link:
     def collision(self) -> Collision | None:
         """Return the first collision, or None."""
         return self.collisions[0] if self.collisions else None
+
+
+own_names(Link, 'link')

@@ -33,6 +33,16 @@ from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.inertial import Inertial
 
 
+class ScaleWarning(UserWarning):
+    """A mesh larger than 10 m: likely in millimetres (``name`` and ``extent`` in m)."""
+
+    def __init__(self, name: str, extent: float) -> None:
+        super().__init__(f'{name} spans {extent:g} m: if it is in millimetres, pass '
+                         'scale=(0.001, 0.001, 0.001)')
+        self.name = name
+        self.extent = extent
+
+
 def _numpy() -> Any:
     try:
         import numpy
@@ -134,8 +144,7 @@ def inertial_from_mesh(filename: str | PathLike[str], density: float | None = No
     extent = float((triangles.reshape(-1, 3).max(axis=0) -
                     triangles.reshape(-1, 3).min(axis=0)).max())
     if extent > 10.0:
-        warnings.warn(f'{name} spans {extent:g} m: if it is in millimetres, pass '
-                      'scale=(0.001, 0.001, 0.001)', stacklevel=2)
+        warnings.warn(ScaleWarning(name, extent), stacklevel=2)
     if mass is None:
         mass = float(density) * volume  # type: ignore[arg-type]
     tensor = tensor * (mass / volume)

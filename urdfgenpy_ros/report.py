@@ -35,6 +35,11 @@ EXIT_KNOWN_ERROR = 2
 KNOWN_ERRORS = (UrdfgenpyError, OSError)
 
 
+def counted(count: int, noun: str) -> str:
+    """Return ``1 joint`` or ``2 joints``: a count with its noun in the right number."""
+    return f'{count} {noun}' if count == 1 else f'{count} {noun}s'
+
+
 def one_line(error: BaseException) -> str:
     """Return the line a user sees for a known error."""
     if isinstance(error, OSError) and error.filename is not None:

@@ -16,7 +16,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 import difflib
 from os import PathLike
 from pathlib import Path
@@ -84,6 +84,7 @@ class Robot:
             raise ModelError(f'robot {self.name!r}: link {link.name!r} already exists '
                              '(link names must be unique: rename one)')
         self._links[link.name] = link
+        link._robot = self
         return self
 
     def add_joint(self, joint: Joint) -> Robot:
@@ -106,6 +107,7 @@ class Robot:
                 raise ModelError(f'joint {joint.name!r}: parent and child are both '
                                  f'{joint.child!r} (a joint connects two different links)')
         self._joints[joint.name] = joint
+        joint._robot = self
         return self
 
     def add_material(self, material: Material) -> Robot:
@@ -271,6 +273,7 @@ class Robot:
         """Remove a joint and return it; its child link becomes a root."""
         joint = self.get_joint(name)
         del self._joints[name]
+        joint._robot = None
         return joint
 
     def remove_link(self, name: str, *, subtree: bool = False) -> list[Link]:
@@ -290,8 +293,10 @@ class Robot:
         for joint in list(self._joints.values()):
             if joint.child in doomed or joint.parent in doomed:
                 del self._joints[joint.name]
+                joint._robot = None
         for node in below:
             del self._links[node.name]
+            node._robot = None
         return below
 
     def remove_material(self, name: str) -> Material:
@@ -347,6 +352,15 @@ class Robot:
                 if material is not None and material.name in names:
                     visual.material = new.get(id(material)) or renamed(material)
 
+    def _holds(self, kind: str, name: str, element: object) -> bool:
+        """Return whether ``element`` is this robot's link (or joint) of that name."""
+        held = self._links if kind == 'link' else self._joints
+        return held.get(name) is element
+
+    def _map_materials(self, change: Callable[[Material], Material]) -> None:
+        """Replace each robot-level material by ``change(material)`` (same name, same place)."""
+        self._materials = {name: change(material) for name, material in self._materials.items()}
+
     def _reindex(self) -> None:
         """Key links and joints by their names again, after they were renamed in place."""
         self._links = {link.name: link for link in self._links.values()}
@@ -376,8 +390,11 @@ class Robot:
         from urdfgenpy_ros.formats.detect import refuse_xacro
         from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
         data = Path(path).read_bytes()
-        refuse_xacro(data, str(path))  # one line naming Robot.from_xacro (X002)
-        return read_urdf_bytes(data, str(path))
+        weak = refuse_xacro(data, str(path))  # one line naming Robot.from_xacro (X002)
+        robot = read_urdf_bytes(data, str(path))
+        if weak is not None:  # only a $(...) in a mesh filename: urdfdom reads it too
+            robot.read_warnings.insert(0, weak)
+        return robot
 
     @classmethod
     def from_urdf_string(cls, xml: str | bytes, file: str | None = None) -> Robot:

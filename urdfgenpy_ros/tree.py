@@ -22,6 +22,8 @@ from pathlib import Path
 import sys
 from typing import TextIO, TYPE_CHECKING
 
+from urdfgenpy_ros.report import counted
+
 if TYPE_CHECKING:
     from urdfgenpy_ros.joint import Joint
     from urdfgenpy_ros.link import Link
@@ -61,7 +63,7 @@ def tree_string(robot: Robot, colour: bool = False) -> str:
     for joint in robot.joints:
         children.setdefault(joint.parent, []).append(joint)
     lines = [paint('robot', f'robot {robot.name}') +
-             f': {len(robot.links)} links, {len(robot.joints)} joints']
+             f": {counted(len(robot.links), 'link')}, {counted(len(robot.joints), 'joint')}"]
     seen: set[str] = set()
 
     def draw(link_name: str, prefix: str) -> None:

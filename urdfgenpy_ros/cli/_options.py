@@ -32,7 +32,10 @@ def parse_mappings(arguments: tuple[str, ...]) -> dict[str, str]:
     for argument in arguments:
         name, separator, value = argument.partition(':=')
         if not separator or not name:
-            raise click.BadParameter(f'{argument!r} is not name:=value', param_hint='ARGS')
+            plain, equals, given = argument.partition('=')
+            spelt = f' (write {plain}:={given})' if equals and plain else ''
+            raise click.BadParameter(f'{argument!r} is not name:=value{spelt}',
+                                     param_hint='ARGS')
         mappings[name] = value
     return mappings
 

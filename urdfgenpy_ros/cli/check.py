@@ -28,6 +28,7 @@ from urdfgenpy_ros.assembly_file import is_assembly
 from urdfgenpy_ros.cli._options import input_options, parse_mappings
 from urdfgenpy_ros.cli.check_reports import FileReport, json_report, junit_report
 from urdfgenpy_ros.cli.check_reports import sarif_report
+from urdfgenpy_ros.cli.inputs import description_files
 from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.formats import DH_SUFFIXES, load
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
@@ -171,7 +172,7 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
         raise click.UsageError('--payload, --statics-margin and --mjcf go with --statics: '
                                'give it')
     mappings = parse_mappings(tuple(item for item in inputs if ':=' in item))
-    files = [Path(item) for item in inputs if ':=' not in item]
+    files = description_files([item for item in inputs if ':=' not in item])
     options = _Options(not no_meshes, package_paths, engines, ignored, repair, dry_run,
                        limit_defaults, target, statics, payload,
                        1.0 if statics_margin is None else statics_margin, mjcf)
@@ -204,7 +205,7 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
     suppressed = sum(len(report.suppressed) for report in reports)
     fixed = sum(len(report.repairs) for report in reports)
     refused = sum(report.refused is not None for report in reports)
-    if text and (len(files) > 1 or every or unreadable or suppressed or fixed):
+    if text:
         extra = (f', {suppressed} suppressed' if suppressed else '') + (
             f', {fixed} {done}' if fixed else '') + (
             f', {refused} not fixable by --fix' if refused else '')
@@ -274,7 +275,12 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
         report.findings, report.suppressed = read_suppressions(
             fixed, options.ignored).split(_findings(fixed, options))
     except KNOWN_ERRORS as error:
-        report.error = one_line(error)
+        if getattr(error, 'code', None) == 'X003':  # a macro library: checked where included
+            report.notes.append(f'{path}: note: skipped, it holds Xacro macros only (the '
+                                f'files that include it are checked): X003 '
+                                f"{getattr(error, 'message', error)}")
+        else:
+            report.error = one_line(error)
         report.findings, report.suppressed, report.repairs = [], [], []
     return report
 
@@ -292,7 +298,8 @@ def _not_rewritable(path: Path, robot: Robot, count: int) -> str | None:
             warning.code == 'X101' for warning in robot.read_warnings):
         return (f'{path}: not fixed: it is Xacro, and writing the expanded robot back would '
                 f'lose its macros and properties: repair the {count} finding(s) above by '
-                'hand (their lines say how)')
+                'hand (their lines say how), or write a repaired copy with urdfgenpy convert '
+                f'{path} OUT.urdf --fix (or OUT.sdf)')
     return None
 
 

@@ -30,10 +30,13 @@ from urdfgenpy_ros.cli.convert_mjcf import mjcf_options, MjcfOptions, write_mjcf
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.formats.sdf_inertia import refused_inertias
+from urdfgenpy_ros.formats.sdf_mass import mass_only_notes
 from urdfgenpy_ros.formats.urdf_downgrade import as_version, VERSIONS
 from urdfgenpy_ros.lumping import lump_fixed_joints
+from urdfgenpy_ros.report import counted
 from urdfgenpy_ros.resources import rebase_meshes
 from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.validation.fix_output import DEFAULT_RADIUS, fix_for_output
 
 
 @click.command()
@@ -54,12 +57,20 @@ from urdfgenpy_ros.robot import Robot
 @click.option('--drop-frames', is_flag=True, help='With --merge-fixed: remove merged links.')
 @click.option('--keep', 'keep', multiple=True, metavar='LINK',
               help='With --merge-fixed: never merge this link (repeatable).')
+@click.option('--fix', 'repair', is_flag=True,
+              help="Apply check --fix's repairs to the model written (the source is not "
+                   'touched); each is printed.')
+@click.option('--fix-radius', type=click.FloatRange(min=0.0, min_open=True),
+              default=DEFAULT_RADIUS, show_default=True,
+              help='With --fix: radius (m) of the solid sphere whose tensor a link with no '
+                   'shape to take one from gets.')
 @mjcf_options
 @input_options
 def convert(source: Path, target: Path, arguments: tuple[str, ...],
             package_paths: tuple[Path, ...], force: bool, lump_fixed: bool,
             urdf_version: str | None, mjcf: MjcfOptions, merge_fixed: bool = False,
-            drop_frames: bool = False, keep: tuple[str, ...] = ()) -> None:
+            drop_frames: bool = False, keep: tuple[str, ...] = (), repair: bool = False,
+            fix_radius: float = DEFAULT_RADIUS) -> None:
     """
     Convert SOURCE to TARGET; the suffixes choose the formats.
 
@@ -86,6 +97,9 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     if target.exists() and not force:
         raise UrdfgenpyError(f'{target} exists: pass --force to overwrite it')
     robot = read_robot(source, arguments, package_paths)
+    if repair:
+        for line in fix_for_output(robot, fix_radius):
+            click.echo(line, err=True)
     if urdf_version is not None:
         robot, changes = as_version(robot, urdf_version)
         for change in changes:
@@ -96,11 +110,14 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
         robot = lump_fixed_joints(robot)  # what to_sdf(lump_fixed=True) writes
     if kind == 'sdf':
         _refuse_invalid_inertia(robot, target)
+        for note in mass_only_notes(robot):  # kept as libsdformat keeps it
+            click.echo(note, err=True)
     if kind == 'mjcf':  # meshes are resolved from the source and copied beside the target
         raise SystemExit(write_mjcf_file(robot, target, mjcf, package_paths, force))
     rebase_meshes(robot, source.parent, target.parent)  # relative meshes still found
     robot.save(target)
-    click.echo(f'wrote {target}: {len(robot.links)} links, {len(robot.joints)} joints')
+    click.echo(f"wrote {target}: {counted(len(robot.links), 'link')}, "
+               f"{counted(len(robot.joints), 'joint')}")
 
 
 def _refuse_invalid_inertia(robot: Robot, target: Path) -> None:
@@ -108,8 +125,8 @@ def _refuse_invalid_inertia(robot: Robot, target: Path) -> None:
     refused = refused_inertias(robot)
     for finding, parent in refused:
         fix = (f"pass --lump-fixed (it merges the link into {parent!r}, as libsdformat's "
-               'conversion does) or fix the tensor (urdfgenpy check --fix)'
-               if parent is not None else 'fix the tensor (urdfgenpy check --fix)')
+               'conversion does) or --fix (a tensor from its shape)'
+               if parent is not None else 'pass --fix (a tensor from its shape)')
         click.echo(f'{finding.location}: error {finding.code} {finding.element}: '
                    f'{finding.message}, which libsdformat refuses: {fix}', err=True)
     if refused:
@@ -117,4 +134,4 @@ def _refuse_invalid_inertia(robot: Robot, target: Path) -> None:
         raise UrdfgenpyError(
             f'{target} not written: libsdformat would refuse the inertia of '
             f'{len(refused)} link(s) (above): '
-            + ('pass --lump-fixed' if lumpable else 'fix them and convert again'))
+            + ('pass --lump-fixed' if lumpable else 'pass --fix, or fix them and convert again'))

@@ -17,6 +17,7 @@
 from __future__ import annotations
 
 from pathlib import Path
+import warnings
 
 import click
 
@@ -24,6 +25,7 @@ from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats.urdf import UrdfWriter
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.link import Link
+from urdfgenpy_ros.mesh_inertia import ScaleWarning
 from urdfgenpy_ros.robot import Robot
 
 
@@ -61,7 +63,14 @@ def inertia(arguments: tuple[str, ...], mass: float | None, density: float | Non
         mesh = Path(arguments[0])
         if not mesh.is_file():
             raise click.BadParameter(f'{mesh} is not a file', param_hint='MESH')
-        inertial = Inertial.from_mesh(str(mesh), density=density, mass=mass,
-                                      scale=(scale, scale, scale))
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter('always')
+            inertial = Inertial.from_mesh(str(mesh), density=density, mass=mass,
+                                          scale=(scale, scale, scale))
+        for warning in caught:  # one line each, in this command's words
+            note = warning.message
+            click.echo(f'warning: {note.name} spans {note.extent:g} m: if it is in '
+                       'millimetres, pass --scale 0.001' if isinstance(note, ScaleWarning)
+                       else f'warning: {note}', err=True)
     link = Link('part').set_inertial(inertial)
     click.echo(UrdfWriter(Robot('part')).write_inertial(inertial, '', link))

@@ -58,6 +58,11 @@ def render(path: Path, arguments: tuple[str, ...], output: Path, joints: tuple[s
         raise click.BadParameter(f'{size!r} is not WxH, e.g. 800x600',
                                  param_hint='--size') from None
     values = dict(_joint_value(text) for text in joints)
+    for text in arguments:  # "-j a=1 b=2": the second value lands among the Xacro arguments
+        if '=' in text and ':=' not in text:
+            raise click.BadParameter(f'{text!r}: give each joint its own --joints (-j {text}); '
+                                     'Xacro arguments are written name:=value',
+                                     param_hint='--joints')
     robot = read_robot(path, arguments, package_paths)
     picture = draw(robot, values, view, (width, height), collision, package_paths)
     for problem in picture.problems:

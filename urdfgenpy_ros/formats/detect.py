@@ -34,7 +34,7 @@ from pathlib import Path
 import re
 from typing import Any, NamedTuple
 
-from urdfgenpy_ros.errors import ParseError, SourceLocation
+from urdfgenpy_ros.errors import ParseError, ReadWarning, SourceLocation
 
 XACRO_NAMESPACES = frozenset((
     'http://www.ros.org/wiki/xacro', 'http://ros.org/wiki/xacro', 'http://wiki.ros.org/xacro',
@@ -49,10 +49,17 @@ _BINDING = re.compile(rb'xmlns(?::([^\s=]+))?\s*=\s*(?:"([^"]*)"|\'([^\']*)\')')
 
 
 class XacroEvidence(NamedTuple):
-    """What makes a file Xacro: where, and a few words saying what (``uses ${...}``)."""
+    """
+    What makes a file Xacro: where, and a few words saying what (``uses ${...}``).
+
+    ``weak``: the only sign is a ``$(...)`` in a mesh's or texture's filename, in a file
+    that does not declare the xacro namespace. urdfdom reads such a file (the filename
+    just does not resolve), so readers warn instead of refusing it.
+    """
 
     location: SourceLocation
     what: str
+    weak: bool = False
 
 
 def xacro_evidence(path: str | PathLike[str]) -> XacroEvidence | None:
@@ -83,6 +90,7 @@ def xacro_evidence_in(data: bytes, file: str | None = None) -> XacroEvidence | N
         return None
     lines = data.split(b'\n')
     declared = any(uri in XACRO_NAMESPACES for uri in _bindings(_uncommented(data)).values())
+    weak = None
     for element in root.iter(etree.Element):  # in document order
         found = _sign(element, declared)
         if found is not None:
@@ -92,8 +100,19 @@ def xacro_evidence_in(data: bytes, file: str | None = None) -> XacroEvidence | N
             if line is not None and 0 < line <= len(lines):
                 index = lines[line - 1].decode('utf-8', 'replace').find(token)
                 column = index + 1 if index >= 0 else None
-            return XacroEvidence(SourceLocation(file, line, column), what)
-    return None
+            evidence = XacroEvidence(SourceLocation(file, line, column), what,
+                                     _is_weak(element, token, declared))
+            if not evidence.weak:
+                return evidence
+            weak = weak or evidence
+    return weak
+
+
+def _is_weak(element: Any, attribute: str, declared: bool) -> bool:
+    """Return whether the sign is only a ``$(...)`` in a mesh's or texture's filename."""
+    value = element.get(attribute) if attribute == 'filename' else None
+    return (not declared and value is not None and _local(element.tag) in ('mesh', 'texture')
+            and '${' not in value)
 
 
 def _may_be_xacro(data: bytes) -> bool:
@@ -173,15 +192,27 @@ def is_xacro(path: str | PathLike[str]) -> bool:
     return xacro_evidence(path) is not None
 
 
-def refuse_xacro(data: bytes, file: str) -> None:
+def weak_evidence_warning(evidence: XacroEvidence) -> ReadWarning:
+    """Return the warning (X104) of a URDF read as it is though a filename needs xacro."""
+    return ReadWarning(evidence.location, 'X104', (
+        f'{evidence.what}: read as URDF, as urdfdom reads it, but the filename resolves '
+        'only once xacro expands it (Robot.from_xacro, or name the file .urdf.xacro)'))
+
+
+def refuse_xacro(data: bytes, file: str) -> ReadWarning | None:
     """
     Raise ParseError (X002) when the document ``data`` (of ``file``) is Xacro.
+
+    Weak evidence (see :class:`XacroEvidence`) is returned as a warning instead.
 
     :raises ParseError: one line: where, what makes it Xacro, what to call instead
         (``Robot.from_xacro``).
     """
     evidence = xacro_evidence_in(data, file)
+    if evidence is not None and evidence.weak:
+        return weak_evidence_warning(evidence)
     if evidence is not None:
         raise ParseError(f'this file is Xacro ({evidence.what}): read it with '
                          'Robot.from_xacro(path, mappings), not Robot.from_urdf',
                          evidence.location, 'X002')
+    return None

@@ -33,6 +33,7 @@ from lxml import etree
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import write_text
+from urdfgenpy_ros.formats.sdf_mass import mass_only
 from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Geometry, Mesh, Origin, Sphere
 from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.link import Link, Visual
@@ -166,6 +167,8 @@ def _link(model: Any, link: Link, robot: Robot, pose: tuple[Origin, str] | None)
         tensor = etree.SubElement(block, 'inertia')
         for name in ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz'):
             _text(tensor, name, fmt(getattr(inertial, name)))
+    else:
+        _mass_only(element, link)
     taken: set[str] = set()
     for kind, items in (('collision', link.collisions), ('visual', link.visuals)):
         for item in items:
@@ -182,6 +185,19 @@ def _link(model: Any, link: Link, robot: Robot, pose: tuple[Origin, str] | None)
             if isinstance(child.tag, str) and child.tag == 'sensor':
                 element.append(copy.deepcopy(child))
     return element
+
+
+def _mass_only(element: Any, link: Link) -> None:
+    """Write a mass-only ``<inertial>`` as libsdformat's conversion does: a zero tensor."""
+    found = mass_only(link)
+    if found is None:
+        return
+    block = etree.SubElement(element, 'inertial')
+    _pose(block, found.origin)
+    _text(block, 'mass', fmt(found.mass))
+    tensor = etree.SubElement(block, 'inertia')
+    for name in ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz'):
+        _text(tensor, name, '0')
 
 
 def _fixed_to_world(robot: Robot) -> bool:

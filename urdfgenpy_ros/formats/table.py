@@ -65,6 +65,9 @@ def _read_urdf(path: Path, mappings: Mapping[str, str], search_paths: Iterable[P
     evidence = xacro_evidence_in(data, str(path))
     if evidence is None:
         return read_urdf_bytes(data, str(path))
+    if evidence.weak:  # only a $(...) in a mesh filename: read as urdfdom does, X104
+        from urdfgenpy_ros.robot import Robot
+        return Robot.from_urdf(path)
     from urdfgenpy_ros.errors import ReadWarning
     robot = _read_xacro(path, mappings, search_paths)
     given = ' '.join(f'{name}:={value}' for name, value in mappings.items())

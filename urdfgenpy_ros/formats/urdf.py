@@ -44,6 +44,7 @@ from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.preserved import Layout
 from urdfgenpy_ros.urdf_versions import needed_version, version_text
+from urdfgenpy_ros.value_kinds import wrong_kind
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -102,20 +103,22 @@ class UrdfWriter(ElementWriter):
             raise self._unwritable(error) from error
 
     def _unwritable(self, error: Exception) -> ModelError:
-        """Return the one-line error of a model that cannot be written, found item by item."""
+        """
+        Return the one-line error naming a value set on the model that is not of its kind.
+
+        When every value is of its kind, the error is a bug of ours: it is raised again,
+        with its traceback.
+        """
         robot = self.robot
         items: list[Link | Joint] = [*robot.links, *robot.joints]
         for item in items:
-            try:
-                self.object_text(item, self.unit)
-            except UrdfgenpyError:
-                raise
-            except _UNWRITABLE as found:
+            found = wrong_kind(item)
+            if found is not None:
                 kind = 'link' if isinstance(item, Link) else 'joint'
                 return ModelError(f'{kind} {item.name!r}: cannot be written, a value set in it '
-                                  f'is not of its kind ({found}): e.g. inertial.mass = 1.5, '
+                                  f'is not of its kind: {found}: e.g. inertial.mass = 1.5, '
                                   'joint.origin = Origin((0, 0, 0.1))')
-        return ModelError(f'robot {robot.name!r}: cannot be written ({error})')
+        raise error
 
     def _document(self) -> str:
         extras = self.robot.extras

@@ -19,6 +19,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager, redirect_stderr
 import io
+import os
 from os import PathLike
 from pathlib import Path
 import re
@@ -28,6 +29,7 @@ from typing import Any
 from urdfgenpy_ros.errors import (
     MissingDependencyError, ParseError, ReadWarning, SourceLocation)
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
+from urdfgenpy_ros.formats.xacro_args import unknown_arguments
 from urdfgenpy_ros.resources import PackageResolver
 from urdfgenpy_ros.robot import Robot
 
@@ -108,6 +110,7 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
     where = SourceLocation(str(path))
     printed = io.StringIO()
     context = ''
+    stack: list[str] = []
     try:
         with _LOCK, redirect_stderr(printed), _fresh_state(xacro) as includes, \
                 _finding_with(resolver):
@@ -115,6 +118,7 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
                 document = xacro.process_file(str(path), mappings=dict(mappings or {}))
             except Exception:  # noqa: B902 - where it was, before the stacks are reset
                 context = _macro_context(xacro)
+                stack = [str(name) for name in getattr(xacro, 'filestack', None) or []]
                 raise
             names = list(dict.fromkeys(includes))
     except Exception as error:  # noqa: B902 - xacro raises many types; all are one line
@@ -130,12 +134,32 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
         said = _xacro_warnings(printed.getvalue())
         if said:
             message += f' (xacro warned: {"; ".join(said)})'
-        raise ParseError(f'xacro: {message}', where, 'X001') from None
+        raise ParseError(f'xacro: {message}', _error_place(where, stack, message),
+                         'X001') from None
     if warnings is not None:
         warnings += [ReadWarning(where, 'X102', f'xacro: {line}')
                      for line in _xacro_warnings(printed.getvalue())]
     included = [str(Path(name).resolve()) for name in names]
     return document.toprettyxml(indent='  '), included
+
+
+_XML_AT = re.compile(r'line (\d+), column (\d+)')
+
+
+def _error_place(top: SourceLocation, stack: list[str], message: str) -> SourceLocation:
+    """
+    Return where xacro's error is: the file it was reading (an include, say).
+
+    An XML error also gets its line and column (xacro gives expat's column, from 0).
+    """
+    file = top.file
+    if stack and top.file is not None and Path(stack[-1]).resolve() != Path(top.file).resolve():
+        relative = os.path.relpath(stack[-1])
+        file = stack[-1] if relative.startswith('..') else relative
+    found = _XML_AT.search(message)
+    if found is None:
+        return SourceLocation(file)
+    return SourceLocation(file, int(found.group(1)), int(found.group(2)) + 1)
 
 
 def _macro_context(xacro: Any) -> str:
@@ -170,13 +194,16 @@ def read_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = N
     try:
         robot = read_urdf_bytes(text.encode('utf-8'), f'{path} (expanded)')
     except ParseError as error:
-        raise _macros_only(path, text) or error from None
+        from urdfgenpy_ros.validation.xacro_source import error_in_source
+        raise _macros_only(path, text) or error_in_source(
+            error, text, [str(Path(path).resolve()), *included], str(path)) from None
     if not robot.links:  # a macro library with a robot name (franka's fr3.xacro)
         library = _macros_only(path, text)
         if library is not None:
             raise library
-    robot.read_warnings[:0] = said
     robot.included_files = [str(Path(path).resolve()), *included]
+    said += unknown_arguments(robot.included_files, mappings or {}, str(path))
+    robot.read_warnings[:0] = said
     return robot
 
 

@@ -14,6 +14,6 @@
 
 """Run the publisher node: ``python -m urdfgenpy_ros.publisher``."""
 
-from urdfgenpy_ros.publisher.node import console_main
+from urdfgenpy_ros.publisher.entry import console_main
 
 console_main()

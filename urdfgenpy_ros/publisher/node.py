@@ -42,6 +42,7 @@ from urdfgenpy_ros.errors import Severity, UrdfgenpyError
 from urdfgenpy_ros.model_source import load_model
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
+from urdfgenpy_ros.validation.consumers import is_physics_only, physics_warning
 from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions
 
 if TYPE_CHECKING:  # imported when needed: sensor_msgs brings numpy, not needed to start
@@ -81,6 +82,8 @@ _PARAMETERS: dict[str, tuple[Any, int | None, str]] = {
     'publish_description': (True, ParameterType.PARAMETER_BOOL,
                             'false: leave robot_description to robot_state_publisher'),
     'watch': (False, ParameterType.PARAMETER_BOOL, 'reload when the model files change'),
+    'strict': (False, ParameterType.PARAMETER_BOOL,
+               'refuse on every error, physics-only ones (mass, inertia) too'),
     'publish_tf': (False, ParameterType.PARAMETER_BOOL,
                    '/tf for movable joints, /tf_static for fixed ones (needs tf2_msgs)'),
     'frame_prefix': ('', ParameterType.PARAMETER_STRING, 'prefix of every TF frame id'),
@@ -194,10 +197,14 @@ class PublisherNode(Node):
                                target=self.values['target'])
         # the file's own suppression comments, as `urdfgenpy check` reads them, and 'ignore'
         findings, silenced = read_suppressions(robot, self.ignored).split(found)
-        errors = [finding for finding in findings if finding.severity is Severity.ERROR]
+        strict = self.values['strict']
+        errors = [finding for finding in findings if finding.severity is Severity.ERROR
+                  and (strict or not is_physics_only(finding))]
         for finding in findings:
-            if finding.severity is Severity.ERROR:
+            if finding in errors:
                 self.get_logger().error(str(finding))
+            elif finding.severity is Severity.ERROR:
+                self.get_logger().warning(physics_warning(finding))
             else:
                 self.get_logger().warning(str(finding))
         if silenced:

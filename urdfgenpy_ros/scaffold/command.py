@@ -18,11 +18,14 @@ from __future__ import annotations
 
 import argparse
 from collections.abc import Sequence
+import copy
 from pathlib import Path
 import sys
 
-from urdfgenpy_ros.model_source import load_model
+from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.model_source import INIT_WORDS, load_model
 from urdfgenpy_ros.report import EXIT_KNOWN_ERROR, KNOWN_ERRORS, one_line
+from urdfgenpy_ros.scaffold.preflight import preflight
 from urdfgenpy_ros.scaffold.render import create_package
 from urdfgenpy_ros.scaffold.spec import BUILD_TYPES, PackageSpec
 
@@ -46,6 +49,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--package-path', action='append', default=[],
                         help='a folder holding ROS packages (repeatable)')
     parser.add_argument('--force', action='store_true', help='overwrite existing files')
+    parser.add_argument('--fix', action='store_true',
+                        help="repair the robot's errors that urdfgenpy check --fix can, "
+                             'in the package (the source is not touched)')
+    parser.add_argument('--allow-errors', action='store_true',
+                        help='scaffold a robot that has errors as it is (its colcon test '
+                             'will report them)')
 
 
 def run(args: argparse.Namespace) -> int:
@@ -54,13 +63,23 @@ def run(args: argparse.Namespace) -> int:
         spec = PackageSpec(args.package_name, args.build_type, args.destination_directory,
                            args.maintainer_name, args.maintainer_email, args.license,
                            args.description, list(args.dependencies))
-        robot, _ = load_model(args.source, args.xacro_args, args.package_path)
+        for folder in args.package_path:  # as urdfgenpy check refuses it
+            if not Path(folder).is_dir():
+                raise UrdfgenpyError(f'--package-path {folder}: no such folder (give a folder '
+                                     'holding ROS packages)')
+        robot, _ = load_model(args.source, args.xacro_args, args.package_path, INIT_WORDS)
         for note in robot.read_warnings:  # e.g. X101: a .urdf file expanded as Xacro
             print(note, file=sys.stderr)
+        if args.fix:
+            robot = copy.deepcopy(robot)
+        for line in preflight(robot, repair=args.fix, allow_errors=args.allow_errors):
+            print(line, file=sys.stderr)
         written, warnings = create_package(
             spec, robot, force=args.force, source=args.source or 'the built-in example',
             search_paths=args.package_path)
     except KNOWN_ERRORS as error:
+        for line in getattr(error, 'lines', ()):  # the findings behind a refusal
+            print(line, file=sys.stderr)
         print(f'error: {one_line(error)}', file=sys.stderr)
         return EXIT_KNOWN_ERROR
     for warning in warnings:

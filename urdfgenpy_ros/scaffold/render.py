@@ -19,6 +19,7 @@ from __future__ import annotations
 import copy
 import datetime
 import hashlib
+import os
 from pathlib import Path
 import shutil
 
@@ -33,6 +34,8 @@ from urdfgenpy_ros.link import Shape
 from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
 from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.scaffold.assets import copy_referenced_files, with_find
+from urdfgenpy_ros.scaffold.mesh_files import companions
 from urdfgenpy_ros.scaffold.sensors_read import sensors_of
 from urdfgenpy_ros.scaffold.spec import PackageSpec
 from urdfgenpy_ros.scaffold.templates import template_root
@@ -77,7 +80,10 @@ def _meshes(spec: PackageSpec, robot: Robot, search_paths: list[str],
                 if note is not None:
                     warnings.append(note)
                 try:
-                    data = resolver.resolve(mesh.filename, base).read_bytes()
+                    found = resolver.resolve(mesh.filename, base)
+                    data = found.read_bytes()
+                    beside = {name: path.read_bytes()
+                              for name, path in companions(found, data).items()}
                 except (ResourceError, OSError) as error:
                     warnings.append(f'mesh {mesh.filename!r} not copied: {error}')
                     renamed[mesh.filename] = mesh.filename
@@ -86,6 +92,10 @@ def _meshes(spec: PackageSpec, robot: Robot, search_paths: list[str],
                 if name in files and files[name] != data:
                     name = f'{hashlib.sha1(data).hexdigest()[:8]}_{name}'
                 files[name] = data
+                for relative, content in beside.items():  # textures, materials: along
+                    if files.setdefault(relative, content) != content:
+                        warnings.append(f'{relative} of mesh {mesh.filename!r} not copied: '
+                                        'another mesh has a different file of that name')
                 renamed[mesh.filename] = f'package://{spec.name}/meshes/{name}'
             item.geometry = Mesh(renamed[mesh.filename], mesh.scale)
     return {f'meshes/{name}': data for name, data in files.items()}
@@ -154,17 +164,21 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
     from urdfgenpy_ros.viewer.pictures import package_pictures
     pictures, warnings = package_pictures(robot, search_paths or ())  # before URIs change
     robot = copy.deepcopy(robot)
+    root = templates or template_root()
     files = _meshes(spec, robot, list(search_paths or ()), warnings)
+    files.update(copy_referenced_files(spec.name, robot, list(search_paths or ()),
+                                       _template_outputs(root, spec.build_type)))
     files.update(pictures)
     urdf_files, includes, xacro_file = _urdf_files(spec, robot)
-    files.update(urdf_files)
+    files.update({path: with_find(data.decode(), spec.name).encode()
+                  for path, data in urdf_files.items()})
     sensors = sensors_of(robot)  # built, or read back from <gazebo> blocks
     context = {
         'name': spec.name, 'robot_name': robot.name, 'root_link': robot.root.name,
         'macro_name': macro_name(robot),
         'build_type': spec.build_type, 'maintainer_name': spec.maintainer_name,
         'maintainer_email': spec.maintainer_email, 'license': spec.license,
-        'description': spec.description, 'source': source, 'xacro_file': xacro_file,
+        'description': spec.description, 'source': _shown(source), 'xacro_file': xacro_file,
         'pictures': sorted(pictures),
         'includes': includes, 'mesh_count': sum(p.startswith('meshes/') for p in files),
         'year': datetime.date.today().year,
@@ -178,7 +192,6 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
                            'gz_type': _BRIDGE_TYPES[sensor.kind][1]}
                           for sensor in sensors if sensor.kind in _BRIDGE_TYPES],
     }
-    root = templates or template_root()
     environment = jinja2.Environment(loader=jinja2.FileSystemLoader(str(root)),
                                      undefined=jinja2.StrictUndefined,
                                      keep_trailing_newline=True, autoescape=False)
@@ -190,6 +203,17 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
             files[relative] = template.render(context).encode()
     files.setdefault('meshes/.gitkeep', b'')
     return files, warnings
+
+
+def _template_outputs(root: Path, build_type: str) -> set[str]:
+    """Return the package paths the templates write (copied files must not take them)."""
+    return {path.relative_to(root / folder).as_posix()[:-len('.jinja')]
+            for folder in ('common', build_type) for path in (root / folder).rglob('*.jinja')}
+
+
+def _shown(source: str) -> str:
+    """Return how the README names the source: a file by its name, not this machine's path."""
+    return Path(source).name if Path(source).is_absolute() or os.sep in source else source
 
 
 def create_package(spec: PackageSpec, robot: Robot, *, force: bool = False,

@@ -38,6 +38,9 @@ CODES: dict[str, tuple[Severity, str]] = {
     'X003': (E, 'Xacro file of macros only read as a robot'),
     'X101': (W, 'Xacro in a .urdf file, expanded with xacro'),
     'X102': (W, 'xacro warned while expanding the file'),
+    'X103': (W, 'Xacro argument given that no file declares (xacro ignores it)'),
+    'X104': (W, "a .urdf file's mesh filename uses $(...): read as URDF, needs xacro to "
+                'resolve'),
     # structure
     'S001': (E, 'no root link'),
     'S002': (E, 'more than one root link'),
@@ -69,6 +72,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'I206': (W, 'link without inertial (or massless) above moving links'),
     'I207': (W, 'moving link without inertial (fine for RViz, not for simulation)'),
     'I208': (W, 'a point mass (zero tensor) on a link that does not move'),
+    'I209': (W, 'massless root (and links fixed to it): libsdformat keeps no link'),
     # references and values
     'R301': (W, 'material not defined'),
     'R302': (E, 'collision mesh file not found'),
@@ -76,7 +80,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'R304': (E, 'non-positive size or zero scale'),
     'R305': (E, 'not a finite number'),
     'R306': (W, 'visual mesh file not found'),
-    'R307': (W, 'non-positive size or zero scale on a visual (it draws nothing)'),
+    'R307': (W, 'zero size or zero scale on a visual (it draws nothing)'),
     'R308': (W, 'relative path written as a file:// URI (not portable)'),
     # URDF versions (validation/versions.py, urdf_versions.py)
     'V701': (E, 'URDF version the target ROS cannot read'),

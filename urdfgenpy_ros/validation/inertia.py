@@ -23,10 +23,12 @@ from urdfgenpy_ros.inertial import (
     box_tensor, capsule_tensor, cylinder_tensor, Inertial, sphere_tensor)
 from urdfgenpy_ros.joint import JointType
 from urdfgenpy_ros.link import Link, Shape
+from urdfgenpy_ros.lumping import lumps, WORLD
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.transforms import symmetric_eigenvalues
 from urdfgenpy_ros.validation.findings import Findings, link_path
-from urdfgenpy_ros.validation.preflight import sdformat_conversion, SDFORMAT_ZERO_MASS
+from urdfgenpy_ros.validation.preflight import (
+    SdfConversion, sdformat_conversion, SDFORMAT_ZERO_MASS)
 
 # MuJoCo's mjMINVAL (include/mujoco/mjtype.h): a moving body needs a mass of at least this
 # (user_model.cc, CheckBodyMassInertia), as do its moments when all six are zero.
@@ -45,7 +47,9 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
     parent_joint = {joint.child: joint for joint in robot.joints}
     roots = {link.name for link in robot.roots}
     below, moving_below = _subtrees(robot)
-    lumped_mass = sdformat_conversion(robot).mass
+    conversion = sdformat_conversion(robot)
+    lumped_mass = conversion.mass
+    _check_kept_root(robot, conversion, findings)
     for link in robot.links:
         joint = parent_joint.get(link.name)
         inertial = link.inertial
@@ -91,6 +95,31 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
             continue
         if _check_tensor(inertial, element, where, findings, moves):
             _check_plausible(link, inertial, element, where, findings)
+
+
+def _check_kept_root(robot: Robot, conversion: SdfConversion, findings: Findings) -> None:
+    """
+    Add I209 for a massless root SDFormat's conversion leaves out with the whole robot.
+
+    Said where nothing else says it: every link massless, or the root and the links fixed
+    to it all massless. (A bare massless root above moving links, KDL's convention, is
+    left to ``--engines gazebo``'s G602.)
+    """
+    massless = all(conversion.mass.get(link.name, 0.0) < SDFORMAT_ZERO_MASS
+                   for link in robot.links)
+    for root in robot.roots:
+        if root.name == WORLD or root.name not in conversion.cut:
+            continue
+        fixed = [joint for joint in robot.child_joints(root) if lumps(joint)]
+        if not (fixed or massless):
+            continue
+        what = 'no link of the robot has mass' if massless else \
+            'the root has no mass, nor do the links fixed to it'
+        findings.add('I209', root, f'link {root.name!r}', link_path(root.name), what,
+                     "Gazebo's URDF conversion (libsdformat) leaves the root out with every "
+                     'link below it and refuses the robot ("A model must have at least one '
+                     'link"): give the root, or a link fixed to it, a mass and inertia (for '
+                     'KDL, a massless base_footprint fixed to a base_link with mass)', 'link')
 
 
 def _sensor_names(link: Link) -> list[str]:

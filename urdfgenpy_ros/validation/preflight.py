@@ -32,6 +32,7 @@ from os import PathLike
 from pathlib import Path
 
 from urdfgenpy_ros.errors import ValidationError
+from urdfgenpy_ros.formats.sdf_mass import mass_only
 from urdfgenpy_ros.joint import Joint
 from urdfgenpy_ros.lumping import lumps, WORLD
 from urdfgenpy_ros.robot import Robot
@@ -73,7 +74,9 @@ def sdformat_conversion(robot: Robot) -> SdfConversion:
     for root in robot.roots:
         order = list(robot.walk(root))
         for joint, link in reversed(order):  # children first: their mass is lumped upwards
-            own = link.inertial.mass if link.inertial is not None else 0.0
+            alone = mass_only(link)  # <mass> without <inertia>: libsdformat keeps the mass
+            own = link.inertial.mass if link.inertial is not None else (
+                alone.mass if alone is not None else 0.0)
             mass[link.name] = mass.get(link.name, 0.0) + own
             if joint is not None and lumps(joint):
                 mass[joint.parent] = mass.get(joint.parent, 0.0) + mass[link.name]

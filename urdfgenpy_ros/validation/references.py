@@ -85,15 +85,24 @@ def _inline_materials(robot: Robot) -> dict[str, str]:
 
 def _check_geometry(geometry: Any, element: str, where: str, findings: Findings,
                     code: str) -> None:
-    """Report a zero or negative size: an error on a collision, a warning on a visual."""
+    """
+    Report a zero or negative size: an error on a collision, a warning on a visual.
+
+    A negative size is an error on a visual too: MuJoCo refuses it when it keeps visuals
+    and RViz draws the shape inside out; a zero one only draws nothing.
+    """
     sizes = {Box: ('length', 'width', 'height'), Cylinder: ('radius', 'length'),
              Sphere: ('radius',), Capsule: ('radius', 'length')}.get(type(geometry), ())
     for name in sizes:
         value = getattr(geometry, name)
         if math.isfinite(value) and value <= 0.0:
-            findings.add(code, geometry, element, f'{where}/geometry',
-                         f'{type(geometry).__name__.lower()} {name} is {value:g}',
+            negative = value < 0.0 and code == 'R307'
+            findings.add('R304' if negative else code, geometry, element, f'{where}/geometry',
+                         f'{type(geometry).__name__.lower()} {name} is {value:g}'
+                         + (' on a visual' if negative else ''),
                          'sizes are positive lengths in metres' + (
+                             ' (MuJoCo refuses a negative one when it keeps visuals, and RViz '
+                             'draws the shape inside out)' if negative else
                              '' if code == 'R304' else ' (a zero-size visual draws nothing; '
                              'remove it if it is a placeholder)'))
     if isinstance(geometry, Mesh) and geometry.scale is not None and 0.0 in geometry.scale:

@@ -37,7 +37,7 @@ from typing import NamedTuple
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import SourceLocation, ValidationError
+from urdfgenpy_ros.errors import ParseError, SourceLocation, ValidationError
 from urdfgenpy_ros.robot import Robot
 
 EXPANDED = ' (expanded)'
@@ -78,6 +78,41 @@ def _moved(finding: ValidationError, files: tuple[str, ...]) -> ValidationError:
         location = SourceLocation(shown, line, column, where.path)
     return ValidationError(finding.code, finding.severity, finding.element, location,
                            finding.message, finding.hint)
+
+
+def error_in_source(error: ParseError, expanded: str, files: list[str],
+                    source: str) -> ParseError:
+    """
+    Return ``error``, found in the expansion of ``source``, placed at its source tag.
+
+    The failing element's top-level owner (``<joint name="k">``) is looked up as findings
+    are; when no single literal tag makes it, the error names ``FILE (expanded)`` and the
+    element path, without a line.
+    """
+    where = error.location
+    if where is None or where.line is None or not (where.file or '').endswith(EXPANDED):
+        return error
+    root = etree.fromstring(expanded.encode('utf-8'), etree.XMLParser(
+        recover=True, resolve_entities=False, huge_tree=True))
+    owner = None
+    for element in root.iter(etree.Element) if root is not None else ():
+        if element.sourceline == where.line:
+            owner = next((node for node in (element, *element.iterancestors())
+                          if node.getparent() is root and node.get('name') is not None), None)
+            break
+    if owner is None:
+        return error
+    kind, name = etree.QName(owner).localname, owner.get('name')
+    main = str(Path(source).resolve())
+    xml = tuple(file for file in files if not file.lower().endswith(_NOT_XML))
+    found = _tag(xml or (main,), main, kind, name)
+    path = f"/robot/{kind}[@name='{name}']"
+    if found is None:
+        location = SourceLocation(where.file, None, None, path)
+    else:
+        file, line, column = found
+        location = SourceLocation(source if file == main else _shown(file), line, column, path)
+    return ParseError(error.message, location, error.code)
 
 
 def _shown(file: str) -> str:

@@ -22,6 +22,7 @@ from pathlib import Path
 
 from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
 from urdfgenpy_ros.joint import Joint, JointType
+from urdfgenpy_ros.report import counted
 from urdfgenpy_ros.robot import Robot
 
 FORMATS = ('svg', 'png', 'pdf', 'dot')
@@ -46,6 +47,26 @@ def joint_label(joint: Joint) -> str:
     return '\n'.join(lines)
 
 
+def _stagger(robot: Robot) -> int:
+    """
+    Return how many ranks to stagger the leaves of a wide rank over (1: no need).
+
+    A mobile base with forty sensor frames on its base link is one rank forty boxes wide:
+    drawn as it is, a strip thousands of pixels wide. Such a tree is drawn left to right
+    and Graphviz's ``unflatten`` staggers the leaves over about as many ranks as the
+    square root of the width.
+    """
+    depth: dict[str, int] = {}
+    for root in robot.roots:
+        for joint, link in robot.walk(root):
+            depth[link.name] = depth[joint.parent] + 1 if joint is not None else 0
+    ranks: dict[int, int] = {}
+    for level in depth.values():
+        ranks[level] = ranks.get(level, 0) + 1
+    widest = max(ranks.values(), default=1)
+    return max(1, round(widest ** 0.5)) if widest > 8 else 1
+
+
 def to_dot(robot: Robot):  # -> graphviz.Digraph
     """
     Return the robot's tree as a ``graphviz.Digraph``.
@@ -59,9 +80,11 @@ def to_dot(robot: Robot):  # -> graphviz.Digraph
         import graphviz
     except ImportError:
         raise MissingDependencyError('graphviz', 'graph', 'urdfgenpy graph') from None
+    direction = 'LR' if _stagger(robot) > 1 else 'TB'
     dot = graphviz.Digraph(robot.name, graph_attr={
-        'rankdir': 'TB', 'label': f'{robot.name}: {len(robot.links)} links, '
-                                  f'{len(robot.joints)} joints',
+        'rankdir': direction,
+        'label': f"{robot.name}: {counted(len(robot.links), 'link')}, "
+                 f"{counted(len(robot.joints), 'joint')}",
         'labelloc': 't', 'fontname': 'Helvetica', 'nodesep': '0.3', 'ranksep': '0.45'},
         node_attr={'shape': 'box', 'style': 'rounded,filled', 'fillcolor': '#e8eef7',
                    'color': '#34568b', 'fontname': 'Helvetica', 'fontsize': '12'},
@@ -107,7 +130,10 @@ def diagram(robot: Robot, file_format: str = 'svg') -> bytes:
     if file_format == 'dot':
         return dot.source.encode()
     import graphviz
+    stagger = _stagger(robot)
     try:
+        if stagger > 1:  # a wide flat rank: leaves over several ranks (Graphviz's unflatten)
+            return dot.unflatten(stagger=stagger).pipe(format=file_format)
         return dot.pipe(format=file_format)
     except graphviz.ExecutableNotFound:
         raise UrdfgenpyError("drawing the tree needs Graphviz's 'dot' program: apt install "

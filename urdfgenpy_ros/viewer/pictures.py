@@ -39,9 +39,11 @@ def package_pictures(robot: Robot, search_paths: Iterable[str | PathLike[str]] =
     notes: list[str] = []
     try:
         from urdfgenpy_ros.viewer.render import picture_png, render
-        pictures[ROBOT_PICTURE] = picture_png(render(robot, {}, 'iso', (640, 480),
-                                                     search_paths=search_paths))
-    except MissingDependencyError:
+        picture = render(robot, {}, 'iso', (640, 480), search_paths=search_paths)
+        pictures[ROBOT_PICTURE] = picture_png(picture)
+        notes += [f'{ROBOT_PICTURE} leaves out what cannot be drawn: {problem}'
+                  for problem in picture.problems]
+    except MissingDependencyError:  # the README says how to draw it
         pass
     except (UrdfgenpyError, OSError) as error:
         notes.append(f'no {ROBOT_PICTURE} in the README: {error}')

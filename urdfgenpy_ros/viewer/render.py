@@ -31,6 +31,7 @@ from typing import Any
 
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.viewer.nothing import nothing_to_draw
 from urdfgenpy_ros.viewer.scene import (
     joint_positions, link_matrices, MeshCache, Part, require, robot_parts)
 
@@ -190,8 +191,7 @@ def render(robot: Robot, values: Mapping[str, float] | None = None, view: str = 
     cache = MeshCache(robot, search_paths)
     parts = robot_parts(robot, 'collision' if collision else 'visual', cache)
     if not parts:
-        kind = 'collision' if collision else 'visual'
-        raise UrdfgenpyError(f'robot {robot.name!r} has no {kind} geometry to draw')
+        raise UrdfgenpyError(nothing_to_draw(robot, collision, cache.problems))
     width, height = size
     renderer = vtkRenderer()
     renderer.SetBackground(*BACKGROUND)

@@ -1,0 +1,86 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""Each front end's messages name its own options: init's, the node's parameters."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+import subprocess
+import sys
+
+from helpers import REPO
+import pytest
+
+from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.model_source import load_model
+from urdfgenpy_ros.scaffold.command import main as init
+
+XACRO = """<?xml version="1.0"?>
+<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <link name="base_link"><visual><geometry>
+    <mesh filename="$(find no_such_description)/meshes/base.stl"/></geometry></visual></link>
+</robot>
+"""
+
+
+@pytest.mark.parametrize('options, said', [
+    (['--from', 'missing.urdf'], '--from: missing.urdf does not exist'),
+    (['--from', 'robot.urdf.xacro', '--xacro-args', 'oops'], "--xacro-args: 'oops'"),
+    (['--from', 'robot.urdf.xacro'], 'search_paths / --package-path'),
+])
+def test_init_names_its_own_options(options: list[str], said: str, tmp_path: Path,
+                                    monkeypatch: pytest.MonkeyPatch,
+                                    capsys: pytest.CaptureFixture[str]) -> None:
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / 'robot.urdf.xacro').write_text(XACRO)
+    assert init(['r_description', *options]) == 2
+    err = capsys.readouterr().err
+    assert said in err and 'parameter' not in err
+
+
+def test_the_node_names_its_parameter_for_package_folders(tmp_path: Path) -> None:
+    (tmp_path / 'robot.urdf.xacro').write_text(XACRO)
+    with pytest.raises(UrdfgenpyError) as raised:
+        load_model(str(tmp_path / 'robot.urdf.xacro'))
+    assert "parameter 'package_paths'" in str(raised.value)
+    assert '--package-path' not in str(raised.value)
+
+
+def test_init_from_a_module_in_the_current_folder(tmp_path: Path) -> None:
+    """The console script's own folder is on its path, not the user's: still found."""
+    (tmp_path / 'cwd_bot_maker.py').write_text(
+        'from urdfgenpy_ros import Link, Robot\n\n\n'
+        'def build():\n    return Robot("cwd_bot").add_link(Link("base_link"))\n')
+    script = Path(sys.executable).with_name('urdfgenpy')
+    env = dict(os.environ, PYTHONPATH=str(REPO))
+    result = subprocess.run([str(script), 'init', 'cwd_bot_description', '--from',
+                             'cwd_bot_maker:build'], cwd=tmp_path, capture_output=True,
+                            text=True, timeout=120, env=env)
+    assert result.returncode == 0, result.stderr
+    assert (tmp_path / 'cwd_bot_description' / 'urdf' / 'cwd_bot.urdf.xacro').is_file()
+
+
+def test_init_refuses_a_package_path_that_does_not_exist_as_check_does(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from click.testing import CliRunner
+    from urdfgenpy_ros.cli import main
+    missing = str(tmp_path / 'nowhere')
+    checked = CliRunner().invoke(main, ['check', '--package-path', missing, str(tmp_path)])
+    assert checked.exit_code == 2 and 'does not exist' in checked.stderr
+    assert init(['r_description', '--package-path', missing, '--destination-directory',
+                 str(tmp_path)]) == 2
+    assert f'--package-path {missing}: no such folder' in capsys.readouterr().err
+    assert not (tmp_path / 'r_description').exists()

@@ -1,0 +1,96 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Masses as libsdformat's URDF conversion sees them, judged by libsdformat itself.
+
+A ``<mass>`` without ``<inertia>`` is kept with a zero tensor (not SDF's default 1 kg), and
+a root that the conversion leaves out with everything below it is a finding (I209).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from click.testing import CliRunner
+import pytest
+import test_sdf
+
+from urdfgenpy_ros import Robot
+from urdfgenpy_ros.cli import main
+
+check_sdf = test_sdf.check_sdf  # the session fixture running libsdformat's checker
+TENSOR = '<inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/>'
+CAMERA = f"""<?xml version="1.0"?>
+<robot name="cam">
+  <link name="base_link"><inertial><mass value="1"/>{TENSOR}</inertial></link>
+  <link name="camera">
+    <inertial><origin xyz="0.01 0 0.02"/><mass value="0.072"/></inertial>
+    <visual><geometry><box size="0.02 0.09 0.025"/></geometry></visual>
+  </link>
+  <joint name="cam_joint" type="revolute"><parent link="base_link"/><child link="camera"/>
+    <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+</robot>
+"""
+
+
+def test_a_mass_without_inertia_keeps_its_mass_in_sdf(check_sdf, tmp_path: Path) -> None:
+    source = tmp_path / 'cam.urdf'
+    source.write_text(CAMERA)
+    code, _, theirs, _, _ = check_sdf(source)  # libsdformat's own URDF conversion
+    assert code == 0 and theirs['camera'][0] == pytest.approx(0.072)
+    result = CliRunner().invoke(main, ['convert', str(source), str(tmp_path / 'cam.sdf')])
+    assert result.exit_code == 0, result.output
+    notes = [line for line in result.stderr.splitlines() if ': note: ' in line]
+    assert len(notes) == 1 and "link 'camera'" in notes[0] and '0.072 kg' in notes[0]
+    assert notes[0].startswith(f'{source}:5:')
+    code, _, ours, _, _ = check_sdf(tmp_path / 'cam.sdf')
+    assert code == 0
+    assert ours['camera'] == pytest.approx(theirs['camera'])  # mass, centre, moments
+
+
+def _robot(links: dict[str, bool], joints: list[tuple[str, str, str]]) -> str:
+    body = ''.join(f'<link name="{name}">'
+                   + (f'<inertial><mass value="1"/>{TENSOR}</inertial>' if heavy else '')
+                   + '<visual><geometry><box size="0.1 0.1 0.1"/></geometry></visual></link>'
+                   for name, heavy in links.items())
+    for parent, child, kind in joints:
+        extra = '<axis xyz="0 0 1"/>' if kind != 'fixed' else ''
+        body += (f'<joint name="{child}_joint" type="{kind}"><parent link="{parent}"/>'
+                 f'<child link="{child}"/>{extra}</joint>')
+    return f'<?xml version="1.0"?><robot name="r">{body}</robot>'
+
+
+@pytest.mark.parametrize('links, joints', [
+    ({'base_link': False, 'arm': False}, [('base_link', 'arm', 'continuous')]),
+    ({'base_footprint': False, 'base_link': False, 'wheel': True},
+     [('base_footprint', 'base_link', 'fixed'), ('base_link', 'wheel', 'continuous')]),
+    ({'base_link': False}, []),
+    ({'base_footprint': False, 'base_link': True, 'wheel': True},  # kept: lumped mass
+     [('base_footprint', 'base_link', 'fixed'), ('base_link', 'wheel', 'continuous')]),
+    ({'base_link': True, 'arm': False}, [('base_link', 'arm', 'continuous')]),
+], ids=['all-massless', 'massless-root-and-fixed-child', 'one-massless-link',
+        'massless-root-with-mass-fixed-below', 'massive-root'])
+def test_a_root_libsdformat_leaves_out_is_a_finding(
+        check_sdf, tmp_path: Path, links: dict[str, bool],
+        joints: list[tuple[str, str, str]]) -> None:
+    path = tmp_path / 'r.urdf'
+    path.write_text(_robot(links, joints))
+    code, _, _, _, errors = check_sdf(path)
+    refused = 'A model must have at least one link' in errors
+    assert refused == (code != 0), errors
+    found = [f for f in Robot.from_urdf(path).validate() if f.code == 'I209']
+    assert bool(found) == refused
+    if found:
+        assert found[0].element == f"link '{next(iter(links))}'"

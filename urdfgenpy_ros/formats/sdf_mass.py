@@ -1,0 +1,87 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+A link's ``<inertial>`` with a ``<mass>`` and no ``<inertia>``, as SDF output writes it.
+
+urdfdom drops such an inertial (the reader does too, with P106, and keeps it as written);
+libsdformat's own URDF conversion keeps the mass and its origin with a zero tensor, so a
+0.072 kg camera stays 0.072 kg in Gazebo instead of SDF's default of 1 kg. SDF output does
+what that conversion does.
+"""
+
+from __future__ import annotations
+
+from typing import Any, NamedTuple, TYPE_CHECKING
+
+from urdfgenpy_ros.errors import SourceLocation
+from urdfgenpy_ros.geometry import Origin
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.link import Link
+    from urdfgenpy_ros.robot import Robot
+
+
+class MassOnly(NamedTuple):
+    """The mass and origin of an ``<inertial>`` without ``<inertia>``, and where it is."""
+
+    mass: float
+    origin: Origin
+    location: SourceLocation
+
+
+def mass_only(link: Link) -> MassOnly | None:
+    """Return the mass-only inertial the link was read with (and has no inertial), or None."""
+    extras = link.extras
+    if link.inertial is not None or extras is None:
+        return None
+    node: Any = extras.node
+    for child in node.iterchildren('inertial'):
+        if next(child.iterchildren('inertia'), None) is not None:
+            return None
+        mass = next(child.iterchildren('mass'), None)
+        try:
+            value = float(mass.get('value')) if mass is not None else None
+            origin = next(child.iterchildren('origin'), None)
+            pose = Origin() if origin is None else Origin(
+                xyz=_numbers(origin.get('xyz')), rpy=_numbers(origin.get('rpy')))
+        except (TypeError, ValueError):
+            return None
+        if value is None or not value > 0.0:
+            return None
+        file = link.source.file if link.source is not None else None
+        return MassOnly(value, pose, SourceLocation(file, child.sourceline, 1))
+    return None
+
+
+def mass_only_notes(robot: Robot) -> list[str]:
+    """Return one line per link whose mass-only inertial SDF output keeps."""
+    notes = []
+    for link in robot.links:
+        found = mass_only(link)
+        if found is not None:
+            notes.append(f'{found.location}: note: link {link.name!r}: <inertial> without '
+                         f'<inertia>: the SDF keeps its mass {found.mass:g} kg with a zero '
+                         "tensor, as libsdformat's URDF conversion does (add <inertia> to "
+                         'give it one)')
+    return notes
+
+
+def _numbers(text: str | None) -> tuple[float, float, float]:
+    if text is None:
+        return (0.0, 0.0, 0.0)
+    values = tuple(float(part) for part in text.split())
+    if len(values) != 3:
+        raise ValueError(text)
+    return values
