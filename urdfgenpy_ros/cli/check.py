@@ -128,7 +128,9 @@ def _margin(ctx: click.Context, param: click.Parameter, value: float | None
 @click.option('--engines', callback=_engines, metavar='mujoco,gazebo',
               help='Also report what these engines change or drop when they load the file.')
 @click.option('--fix', 'repair', is_flag=True,
-              help='Repair what has one right answer, changing only the repaired lines.')
+              help='Repair what has one right answer, changing only the repaired lines '
+                   '(J102-J104, J106, I202, I203, and I205 by adding a base_footprint root); '
+                   '--ignore CODE keeps a repair out, e.g. --ignore I205.')
 @click.option('--dry-run', is_flag=True, help='With --fix: print the diff, write nothing.')
 @click.option('--limit-default', 'limit_defaults', multiple=True, callback=_limit_defaults,
               metavar='NAME=VALUE',
