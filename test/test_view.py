@@ -63,7 +63,8 @@ def _assert_robot_drawn_in_the_middle(browser) -> None:
 
 
 def _settled(browser, blank: bool = False):
-    """Return the canvas once two shots in a row agree (the first paint is done).
+    """
+    Return the canvas once two shots in a row agree (the first paint is done).
 
     ``blank``: an empty white view counts (the robot hidden; the grid is off at first).
     """
