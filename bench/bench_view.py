@@ -181,6 +181,7 @@ def _painted(browser, timeout: float = 120.0) -> None:
 def bench_view(robot: Robot, urdf: Path, repeat: int) -> list[str]:
     """Time the first paint of our page and of viser's ViserUrdf, in one browser."""
     browser = _browser()
+    browser.driver.set_script_timeout(180)
     from browser import free_port  # noqa: I100 - the test folder, put on the path above
     import viser
     from viser.extras import ViserUrdf

@@ -401,8 +401,10 @@ class RobotViewer:
                     result[path] = -1
             return result
 
+        first = stamps()  # taken now: an edit made while the thread starts is not missed
+
         def loop() -> None:
-            last = stamps()
+            last = first
             while not self._stop.wait(interval):
                 now = stamps()
                 if now != last:
