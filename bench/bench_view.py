@@ -29,7 +29,7 @@ and a box collision. Timed, each ``--repeat`` times, reported as median and 90th
   ``ViserUrdf`` (yourdfpy) on the same URDF, in the same browser.
 - ``reload``: from writing the file to the page showing the change (polled in the page).
 
-    python bench/bench_view.py [--repeat 5] [--pyrender /path/to/python]
+    python bench/bench_view.py [--repeat 5] [--pyrender /path/to/python] [--view-only]
 """
 
 from __future__ import annotations
@@ -181,6 +181,7 @@ def _painted(browser, timeout: float = 120.0) -> None:
 def bench_view(robot: Robot, urdf: Path, repeat: int) -> list[str]:
     """Time the first paint of our page and of viser's ViserUrdf, in one browser."""
     browser = _browser()
+    browser.driver.set_script_timeout(180)
     from browser import free_port  # noqa: I100 - the test folder, put on the path above
     import viser
     from viser.extras import ViserUrdf
@@ -233,13 +234,15 @@ def main() -> None:
     """Run the benchmark and print a Markdown table."""
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument('--repeat', type=int, default=5)
+    parser.add_argument('--view-only', action='store_true', help='skip the render rows')
     parser.add_argument('--pyrender', help='a Python that has pyrender (for the peer)')
     options = parser.parse_args()
     with tempfile.TemporaryDirectory() as folder:
         robot = mesh_robot(Path(folder))
         urdf = Path(folder) / 'mesh_humanoid.urdf'
         robot.to_urdf(urdf)
-        rows = bench_render(robot, urdf, options.repeat, options.pyrender)
+        rows = [] if options.view_only else bench_render(robot, urdf, options.repeat,
+                                                         options.pyrender)
         rows += bench_view(robot, urdf, options.repeat)
     print('| what | tool | median (ms) | p90 (ms) |\n|---|---|---:|---:|')
     print('\n'.join(rows))

@@ -105,7 +105,8 @@ class RobotViewer:
         self._gui: list[Any] = []
         self._sliders: dict[str, Any] = {}
         self._frames: dict[str, Any] = {}
-        self._layers: dict[str, list[Any]] = {'visual': [], 'collision': [], 'inertia': []}
+        self._layers: dict[str, list[Any]] = {'visual': [], 'collision': [], 'inertia': [],
+                                              'grid': []}
         self._highlight: list[Any] = []
         self.robot = load()
         self.findings: list[ValidationError] = []
@@ -136,7 +137,7 @@ class RobotViewer:
             for handle in self._gui:
                 handle.remove()
             self._gui, self._sliders, self._frames = [], {}, {}
-            self._layers = {'visual': [], 'collision': [], 'inertia': []}
+            self._layers = {'visual': [], 'collision': [], 'inertia': [], 'grid': []}
             self._highlight = []
             self.robot, self.selected = robot, None
             if self._validate:
@@ -158,7 +159,7 @@ class RobotViewer:
         self._frame_camera(shown)
 
     def _frame_camera(self, parts: list[Part]) -> None:
-        """Point the initial camera at the posed robot and lay a grid under it."""
+        """Point the initial camera at the posed robot; note where a grid would lie."""
         import numpy
         matrices = link_matrices(self.robot, self.positions)
         corners = [numpy.asarray(part.mesh.bounds) @ matrices[part.link][:3, :3].T
@@ -170,11 +171,16 @@ class RobotViewer:
         camera.look_at = tuple(float(v) for v in centre)
         camera.position = tuple(float(v) for v in centre + size * numpy.array(
             [1.0, -0.9, 0.6]))
-        cell = 10.0 ** math.floor(math.log10(size))
-        self.server.scene.add_grid('/grid', width=20 * cell, height=20 * cell,
-                                   cell_size=cell / 10.0, section_size=cell,
-                                   position=(float(centre[0]), float(centre[1]),
-                                             float(low[2])))
+        self._ground = (float(centre[0]), float(centre[1]), float(low[2]),
+                        10.0 ** math.floor(math.log10(size)))
+
+    def _add_grid(self) -> None:
+        """Lay a grid under the robot, on request (bench/RESULTS.md: it slows first paint)."""
+        # A software-rendered browser spends most of each frame on the grid's shader.
+        x, y, z, cell = self._ground
+        self._layers['grid'].append(self.server.scene.add_grid(
+            '/grid', width=20 * cell, height=20 * cell, cell_size=cell / 10.0,
+            section_size=cell, position=(x, y, z)))
 
     @staticmethod
     def _extent(parts: list[Part]) -> float:
@@ -243,7 +249,8 @@ class RobotViewer:
             for label, layer, initial in (('Visual', 'visual', True),
                                           ('Collision', 'collision', False),
                                           ('Frames', 'frames', False),
-                                          ('Inertia (CoM, box)', 'inertia', False)):
+                                          ('Inertia (CoM, box)', 'inertia', False),
+                                          ('Ground grid', 'grid', False)):
                 box = gui.add_checkbox(label, initial_value=initial)
                 box.on_update(lambda event, layer=layer: self._show(layer,
                                                                     event.target.value))
@@ -278,6 +285,8 @@ class RobotViewer:
                 self._built.add(layer)
                 if layer == 'inertia':
                     self._add_inertia(self.robot)
+                elif layer == 'grid':
+                    self._add_grid()
                 else:
                     for part in robot_parts(self.robot, layer, self._cache):
                         self._add_part(part, True)
@@ -392,8 +401,10 @@ class RobotViewer:
                     result[path] = -1
             return result
 
+        first = stamps()  # taken now: an edit made while the thread starts is not missed
+
         def loop() -> None:
-            last = stamps()
+            last = first
             while not self._stop.wait(interval):
                 now = stamps()
                 if now != last:
