@@ -96,7 +96,7 @@ def test_a_missing_package_names_only_the_cli_option(tmp_path: Path) -> None:
 
 @pytest.mark.parametrize('suffix', ['.xacro', '.urdf'])
 def test_a_materials_only_file_is_skipped_at_its_source_line(tmp_path: Path,
-                                                              suffix: str) -> None:
+                                                             suffix: str) -> None:
     path = tmp_path / f'rover.materials{suffix}'
     path.write_text(MATERIALS)
     line = next(number for number, text in enumerate(MATERIALS.splitlines(), start=1)

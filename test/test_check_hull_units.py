@@ -43,8 +43,8 @@ ROBOT = """<?xml version="1.0"?>
 """
 
 
-def test_m504_says_the_hull_volume_in_cubic_metres_of_the_scaled_mesh(tmp_path: Path
-                                                                       ) -> None:
+def test_m504_gives_the_hull_volume_in_cubic_metres_of_the_scaled_mesh(
+        tmp_path: Path) -> None:
     mujoco = require_module('mujoco')
     trimesh = require_module('trimesh')
     _write_l_shape(tmp_path / 'metres.obj')

@@ -75,8 +75,8 @@ def _mujoco() -> None:
 
 
 def _diffbot(folder: Path, block: str = '') -> Path:
-    wheels = ''.join(WHEEL.format(side=side, y=y) for side, y in (('left', 0.12),
-                                                                   ('right', -0.12)))
+    sides = (('left', 0.12), ('right', -0.12))
+    wheels = ''.join(WHEEL.format(side=side, y=y) for side, y in sides)
     path = folder / 'diffbot.urdf'
     path.write_text(DIFFBOT.format(wheels=wheels).replace('</robot>', block + '</robot>'))
     return path

@@ -85,7 +85,8 @@ def render(path: Path, arguments: tuple[str, ...], output: Path, joints: tuple[s
                                      'Xacro arguments are written name:=value',
                                      param_hint='--joints')
     robot = read_robot(path, arguments, package_paths)
-    picture = draw(robot, _inside_limits(robot, values), view, (width, height), collision, package_paths)
+    picture = draw(robot, _inside_limits(robot, values), view, (width, height), collision,
+                   package_paths)
     for problem in picture.problems:
         click.echo(f'warning: {problem} (not drawn)', err=True)
     click.echo(save_picture(picture, output))
