@@ -119,3 +119,27 @@ def test_the_users_integrator_is_kept(tmp_path: Path) -> None:
     assert result.exit_code == 0, result.output
     model = mujoco.MjModel.from_xml_path(str(tmp_path / 'diffbot.xml'))
     assert model.opt.integrator == mujoco.mjtIntegrator.mjINT_RK4
+
+
+def test_a_floating_mesh_below_its_origin_starts_on_the_floor(tmp_path: Path) -> None:
+    import mujoco
+    trimesh = require_module('trimesh')
+    trimesh.creation.box((0.2, 0.2, 0.2)).export(tmp_path / 'cube.stl')
+    (tmp_path / 'block.urdf').write_text(
+        '<robot name="block"><link name="base_link"><collision><origin xyz="0 0 -0.3"/>'
+        '<geometry><mesh filename="cube.stl" scale="2 2 2"/></geometry></collision>'
+        '<inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0"'
+        ' izz="0.01"/></inertial></link></robot>')
+    result = CliRunner().invoke(main, ['convert', str(tmp_path / 'block.urdf'),
+                                       str(tmp_path / 'out' / 'block.xml'), '--base',
+                                       'floating', '--scene'])
+    assert result.exit_code == 0, result.output
+    model = mujoco.MjModel.from_xml_path(str(tmp_path / 'out' / 'scene.xml'))
+    data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, 0)
+    mujoco.mj_forward(model, data)
+    assert all(data.contact[index].dist >= -1e-6 for index in range(data.ncon))
+    start = data.qpos[2]
+    while data.time < 0.5:
+        mujoco.mj_step(model, data)
+    assert abs(data.qpos[2] - start) < 1e-3  # it rests: neither falls nor is pushed up

@@ -31,7 +31,7 @@ from typing import Any
 
 from lxml import etree
 
-from urdfgenpy_ros.floats import fmt, fmt_vec
+from urdfgenpy_ros.floats import fmt_vec
 
 INTEGRATOR = 'implicitfast'
 
@@ -104,9 +104,7 @@ def rest_on_floor(document: Any, root: str, files: dict[str, bytes],
         return ('floating base left at the origin: MuJoCo places it on the floor when '
                 "installed (pip install 'urdfgenpy_ros[engines]')")
     import mujoco
-    assets = dict(files)
-    if meshdir:
-        assets.update({f'{meshdir}/{name}': data for name, data in files.items()})
+    assets = {f'{meshdir}/{name}' if meshdir else name: data for name, data in files.items()}
     try:
         model = mujoco.MjModel.from_xml_string(
             etree.tostring(copy.deepcopy(document), encoding='unicode'), assets)
@@ -130,5 +128,5 @@ def rest_on_floor(document: Any, root: str, files: dict[str, bytes],
             values = [float(value) for value in qpos.split()]
             values[2] += rise
             key.set('qpos', fmt_vec(values))
-    return f'floating base raised to z={fmt(position[2])}: its lowest collision geom ' \
+    return f'floating base raised to z={position[2]:.6g}: its lowest collision geom ' \
         'rests on the floor (z=0)'
