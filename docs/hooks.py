@@ -24,6 +24,9 @@ A page asks for a part with an HTML comment on a line of its own:
 - ``<!-- generated: include FILE -->``: a file of the repository (``bench/RESULTS.md``,
   ``CHANGELOG.md``), its first heading dropped and the others one level down.
 
+Lines between a marker and ``<!-- end generated -->`` are what a reader of the page on
+GitHub sees instead (where the part is); the site replaces them with the part.
+
 Sphinx roles in docstrings (``:func:`name```) are shown as the code they name. Pages in
 ``docs/`` that ``nav`` does not list are added under "More" (new pages appear
 without editing mkdocs.yml; move them where they belong when you like).
@@ -37,7 +40,9 @@ import re
 from typing import Any
 
 REPO = Path(__file__).resolve().parent.parent
-MARKER = re.compile(r'^<!-- generated: (?P<what>[\w-]+)(?: (?P<argument>\S+))? -->$', re.M)
+MARKER = re.compile(r'^<!-- generated: (?P<what>[\w-]+)(?: (?P<argument>\S+))? -->$'
+                    r'(?:\n(?:(?!<!-- generated)(?!<!-- end generated -->).*\n)*'
+                    r'<!-- end generated -->$)?', re.M)
 
 FAMILIES = {
     'P': 'Reading', 'X': 'Xacro', 'S': 'Structure', 'J': 'Joints', 'I': 'Inertia',

@@ -95,6 +95,23 @@ def test_the_parameter_table_is_what_the_node_declares(site: Path) -> None:
     assert shown == spelt
 
 
+@pytest.mark.parametrize('page, instead', [
+    ('commands.md', 'urdfgenpy COMMAND --help'),
+    ('node.md', 'ros2 param list /urdfgenpy_publisher'),
+    ('validation.md', 'urdfgenpy_ros/validation/codes.py')])
+def test_a_generated_table_says_on_github_where_it_is(site: Path, page: str,
+                                                      instead: str) -> None:
+    """Python-Markdown shows the page as GitHub does (no hooks): comments are not text."""
+    markdown = require_module('markdown')
+    raw = (REPO / 'docs' / page).read_text(encoding='utf-8')
+    github = ' '.join(''.join(etree.fromstring(f'<div>{markdown.markdown(raw)}</div>',
+                                               etree.HTMLParser()).itertext()).split())
+    after = github.split('when the site is built', 1)
+    assert len(after) == 2 and instead in after[1][:300]
+    built = _text(site / page.removesuffix('.md') / 'index.html')
+    assert 'when the site is built' not in built and 'end generated' not in built
+
+
 def test_the_api_reference_documents_robot(site: Path) -> None:
     text = _text(site / 'api' / 'robot' / 'index.html')
     for name in ('from_urdf', 'from_xacro', 'validate', 'save', 'to_urdf', 'attach'):

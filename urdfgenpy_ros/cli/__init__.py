@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import click
 
+from urdfgenpy_ros.cli._options import in_cli_words
 from urdfgenpy_ros.cli.attach import attach
 from urdfgenpy_ros.cli.check import check
 from urdfgenpy_ros.cli.convert import convert
@@ -45,7 +46,7 @@ class _Group(click.Group):
 
 
 def _echo_error(line: str) -> None:
-    click.echo(line, err=True)
+    click.echo(in_cli_words(line), err=True)
 
 
 @click.group(cls=_Group, context_settings={'help_option_names': ['-h', '--help']})

@@ -25,7 +25,7 @@ import tempfile
 import click
 
 from urdfgenpy_ros.assembly_file import is_assembly
-from urdfgenpy_ros.cli._options import input_options, parse_mappings
+from urdfgenpy_ros.cli._options import in_cli_words, input_options, parse_mappings
 from urdfgenpy_ros.cli.check_reports import FileReport, json_report, junit_report
 from urdfgenpy_ros.cli.check_reports import sarif_report
 from urdfgenpy_ros.cli.inputs import description_files
@@ -175,6 +175,9 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
                                'give it')
     mappings = parse_mappings(tuple(item for item in inputs if ':=' in item))
     files = description_files([item for item in inputs if ':=' not in item])
+    # a checked folder (a colcon src/) resolves the packages under it, after -p's
+    package_paths += tuple(Path(item) for item in inputs
+                           if ':=' not in item and Path(item).is_dir())
     options = _Options(not no_meshes, package_paths, engines, ignored, repair, dry_run,
                        limit_defaults, target, statics, payload,
                        1.0 if statics_margin is None else statics_margin, mjcf)
@@ -219,7 +222,7 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
 
 def _line(finding: ValidationError) -> str:
     """Return the finding's line, led by its file also when it has no line number."""
-    text, where = str(finding), finding.location
+    text, where = in_cli_words(str(finding)), finding.location
     if where.line is None and where.file and where.path:  # made by a Xacro macro
         return f'{where.file}: {text.removeprefix(f"{where}: ")}'
     return text
@@ -277,12 +280,13 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
         report.findings, report.suppressed = read_suppressions(
             fixed, options.ignored).split(_findings(fixed, options))
     except KNOWN_ERRORS as error:
+        said = str(getattr(error, 'message', error))
         if getattr(error, 'code', None) == 'X003':  # a macro library: checked where included
-            report.notes.append(f'{path}: note: skipped, it holds Xacro macros only (the '
-                                f'files that include it are checked): X003 '
-                                f"{getattr(error, 'message', error)}")
+            what = 'materials' if said.startswith('defines materials') else 'Xacro macros'
+            report.notes.append(f'{path}: note: skipped, it holds {what} only (the '
+                                f'files that include it are checked): X003 {said}')
         else:
-            report.error = one_line(error)
+            report.error = in_cli_words(one_line(error))
         report.findings, report.suppressed, report.repairs = [], [], []
     return report
 

@@ -18,10 +18,14 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 
 def _joint_value(text: str) -> tuple[str, float]:
@@ -33,6 +37,23 @@ def _joint_value(text: str) -> tuple[str, float]:
     except ValueError:
         raise click.BadParameter(f'{text!r} is not name=value (radians or metres)',
                                  param_hint='--joints') from None
+
+
+def _inside_limits(robot: Robot, values: dict[str, float]) -> dict[str, float]:
+    """Return ``values`` clamped to the joints' limits, as the publisher does; say each."""
+    from urdfgenpy_ros.publisher.joint_states import JointStates
+    states = JointStates(robot)
+    inside = dict(values)
+    for name, value in values.items():
+        free = states.free.get(name)
+        if free is None or free.continuous:
+            continue
+        inside[name] = states.clamp(name, value)
+        if inside[name] != value:
+            click.echo(f'warning: joint {name!r}: {value:g} is outside its limits '
+                       f'[{free.lower:g}, {free.upper:g}]: drawn at {inside[name]:g} '
+                       '(clamped, as the publisher does)', err=True)
+    return inside
 
 
 @click.command()
@@ -64,7 +85,8 @@ def render(path: Path, arguments: tuple[str, ...], output: Path, joints: tuple[s
                                      'Xacro arguments are written name:=value',
                                      param_hint='--joints')
     robot = read_robot(path, arguments, package_paths)
-    picture = draw(robot, values, view, (width, height), collision, package_paths)
+    picture = draw(robot, _inside_limits(robot, values), view, (width, height), collision,
+                   package_paths)
     for problem in picture.problems:
         click.echo(f'warning: {problem} (not drawn)', err=True)
     click.echo(save_picture(picture, output))

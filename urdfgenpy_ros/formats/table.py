@@ -64,7 +64,12 @@ def _read_urdf(path: Path, mappings: Mapping[str, str], search_paths: Iterable[P
     data = path.read_bytes()
     evidence = xacro_evidence_in(data, str(path))
     if evidence is None:
-        return read_urdf_bytes(data, str(path))
+        from urdfgenpy_ros.errors import ParseError
+        try:
+            return read_urdf_bytes(data, str(path))
+        except ParseError as error:  # a file of materials only, included by robots
+            from urdfgenpy_ros.formats.xacro_read import no_robot_in
+            raise no_robot_in(path, data.decode('utf-8', 'replace')) or error from None
     if evidence.weak:  # only a $(...) in a mesh filename: read as urdfdom does, X104
         from urdfgenpy_ros.robot import Robot
         return Robot.from_urdf(path)

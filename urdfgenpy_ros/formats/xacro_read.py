@@ -195,10 +195,10 @@ def read_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = N
         robot = read_urdf_bytes(text.encode('utf-8'), f'{path} (expanded)')
     except ParseError as error:
         from urdfgenpy_ros.validation.xacro_source import error_in_source
-        raise _macros_only(path, text) or error_in_source(
+        raise no_robot_in(path, text) or error_in_source(
             error, text, [str(Path(path).resolve()), *included], str(path)) from None
     if not robot.links:  # a macro library with a robot name (franka's fr3.xacro)
-        library = _macros_only(path, text)
+        library = no_robot_in(path, text)
         if library is not None:
             raise library
     robot.included_files = [str(Path(path).resolve()), *included]
@@ -207,19 +207,28 @@ def read_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = N
     return robot
 
 
+_MATERIAL = re.compile(r'<material\s[^>]*?\bname\s*=\s*["\']([^"\']+)')
 _MACRO = re.compile(r'<xacro:macro\s[^>]*?\bname\s*=\s*["\']([^"\']+)')
 
 
-def _macros_only(path: str | PathLike[str], expanded: str) -> ParseError | None:
-    """Return the error of a file of macros read as a robot, or None if it is not one."""
+def no_robot_in(path: str | PathLike[str], expanded: str) -> ParseError | None:
+    """Return the error of a file of macros or materials read as a robot, or None."""
     try:
         source = Path(path).read_text('utf-8', 'replace')
     except OSError:
         return None
-    names = _MACRO.findall(source)
-    if not names or '<link' in expanded:
+    if '<link' in expanded:
         return None
+    names, line = _MACRO.findall(source), None
+    if names:
+        what, call = 'macros', f' and calls <xacro:{names[0]} .../>'
+    else:  # a file of materials only (diffbot.materials.xacro)
+        names, what, call = _MATERIAL.findall(expanded), 'materials', ''
+        if not names:
+            return None
+        line = next((number for number, text in enumerate(source.splitlines(), start=1)
+                     if '<material' in text), None)
     return ParseError(
-        f'defines macros ({", ".join(names[:3])}{", ..." if len(names) > 3 else ""}) and no '
-        f'robot: read a robot file that includes it and calls <xacro:{names[0]} .../>',
-        SourceLocation(str(path)), 'X003')
+        f'defines {what} ({", ".join(names[:3])}{", ..." if len(names) > 3 else ""}) and no '
+        f'robot: read a robot file that includes it{call}',
+        SourceLocation(str(path), line), 'X003')

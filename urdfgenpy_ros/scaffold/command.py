@@ -46,7 +46,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help='a .urdf, .xacro, DH table (.yaml/.csv) or module:function; '
                              'default: the built-in example robot')
     parser.add_argument('--xacro-args', nargs='*', default=[], metavar='NAME:=VALUE')
-    parser.add_argument('--package-path', action='append', default=[],
+    parser.add_argument('--package-path', '-p', action='append', default=[],
                         help='a folder holding ROS packages (repeatable)')
     parser.add_argument('--force', action='store_true', help='overwrite existing files')
     parser.add_argument('--fix', action='store_true',

@@ -56,7 +56,7 @@ class PackageSpec:
     maintainer_name: str = 'maintainer'
     maintainer_email: str = 'maintainer@example.com'
     license: str = 'Apache-2.0'  # noqa: A003 - ros2 pkg create's option name
-    description: str = ''
+    description: str = ''  # empty: 'Robot description of <robot name>'
     dependencies: list[str] = field(default_factory=list)
 
     def __post_init__(self) -> None:
@@ -66,8 +66,6 @@ class PackageSpec:
             raise UrdfgenpyError(f'build type {self.build_type!r}: use ament_cmake or '
                                  'ament_python')
         self.destination = Path(self.destination)
-        if not self.description:
-            self.description = f'Robot description of {self.name}'
 
     @property
     def root(self) -> Path:

@@ -172,12 +172,15 @@ def _as_written(robot: Robot, findings: Findings, search_paths: list[Any],
                      f'MuJoCo refuses {path.name} as it is written: {said}', hint, tag)
 
 
+_MeshUse = tuple[str, str, Path, float]  # link, element path, file, volume factor of scale
+
+
 def _compilable(robot: Robot, findings: Findings, search_paths: list[Any],
-                base: Path | None) -> tuple[Robot, list[tuple[str, str, Path]]]:
+                base: Path | None) -> tuple[Robot, list[_MeshUse]]:
     """Return a copy MuJoCo can load: absolute mesh paths, no visuals, no unreadable mesh."""
     compiled = copy.deepcopy(robot)
     resolver = PackageResolver(search_paths)
-    meshes: list[tuple[str, str, Path]] = []
+    meshes: list[_MeshUse] = []
     for link in compiled.links:
         link.visuals.clear()
         kept = []
@@ -202,7 +205,8 @@ def _compilable(robot: Robot, findings: Findings, search_paths: list[Any],
                                  'mesh')
                     continue
                 collision.geometry = dataclasses.replace(geometry, filename=str(path))
-                meshes.append((link.name, where, path))
+                scale = math.prod(abs(value) for value in geometry.scale or (1.0, 1.0, 1.0))
+                meshes.append((link.name, where, path, scale))
             kept.append(collision)
         link.collisions[:] = kept
     return compiled, meshes
@@ -295,23 +299,23 @@ def _ranges(robot: Robot, model: Any, mujoco: Any, findings: Findings) -> None:
                      message, PREFLIGHT_HINTS['M503'], 'limit')
 
 
-def _hulls(meshes: list[tuple[str, str, Path]], findings: Findings) -> None:
+def _hulls(meshes: list[_MeshUse], findings: Findings) -> None:
     """Report collision meshes that are not convex (M504); needs trimesh."""
     try:
         import trimesh
     except ImportError:
         return
     robot = findings.robot
-    for name, where, path in meshes:
+    for name, where, path, scale in meshes:
         try:
             mesh: Any = trimesh.load(str(path), force='mesh')
         except Exception:  # noqa: B902 - a mesh trimesh cannot read was read by MuJoCo
             continue
         if mesh.is_convex:
             continue
-        hull = mesh.convex_hull.volume
-        size = (f': its hull holds {hull:.4g} m^3, the mesh {abs(mesh.volume):.4g} m^3 '
-                '(in file units)' if mesh.is_watertight and math.isfinite(hull) else '')
+        hull = mesh.convex_hull.volume * scale  # the URDF's scale applied: m^3
+        size = (f': its hull holds {hull:.4g} m^3, the mesh {abs(mesh.volume) * scale:.4g} '
+                'm^3' if mesh.is_watertight and math.isfinite(hull) else '')
         findings.add('M504', robot.get_link(name), f'link {name!r}', where,
                      f'{path.name} is not convex; MuJoCo collides with its convex hull{size}',
                      PREFLIGHT_HINTS['M504'], 'mesh')

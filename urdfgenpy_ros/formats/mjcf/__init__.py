@@ -198,6 +198,9 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     carried.sensors = write_sensors(document, worldbody, written, carried.partly)
     if overlay is not None:
         merge_overlay(document, read_overlay(overlay))
+    _simulate(document, notes, {actuator.kind for actuator in chosen}, kv is not None,
+              (scene and path is not None and taken == 'floating' and not at_world)
+              and (robot.root.name, meshes, meshdir))
     file = robot.source.file if robot.source is not None else None
     findings = find_losses(robot, urdf, file, carried)
     from urdfgenpy_ros.validation.xacro_source import in_source
@@ -209,6 +212,20 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
         result.files = _write(Path(path), text, meshes, meshdir, scene, robot.name,
                               overwrite)
     return result
+
+
+def _simulate(document: Any, notes: list[str], kinds: set[str], servo_damping: bool,
+              placed: Any) -> None:
+    """Choose the integrator, place a floating base on the floor; say both in the header."""
+    from urdfgenpy_ros.formats.mjcf.placement import choose_integrator, rest_on_floor
+    said = [choose_integrator(document, kinds, servo_damping)]
+    if placed:
+        root, meshes, meshdir = placed
+        said.append(rest_on_floor(document, root, meshes.contents(), meshdir))
+    for note in filter(None, said):
+        notes.append(note)
+        comment = document[0]
+        comment.text = f"{comment.text}{note.replace('--', '- -')}. "
 
 
 def _base_note(at_world: bool, base: str | None) -> str:

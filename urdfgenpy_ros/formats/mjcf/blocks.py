@@ -69,14 +69,14 @@ def apply_block(block: Any | None, document: Any) -> None:
         target = document.find(child.tag)
         if target is None:
             target = etree.Element(child.tag)
-            _insert_section(document, target)
+            insert_section(document, target)
         refused = {name for name, _ in check_attributes(child)}
         for name, value in child.attrib.items():
             if name not in OURS and name not in refused:
                 target.set(name, value)
 
 
-def _insert_section(document: Any, section: Any) -> None:
+def insert_section(document: Any, section: Any) -> None:
     order = ('compiler', 'option', 'size', 'visual', 'default', 'asset', 'worldbody')
     rank = order.index(section.tag) if section.tag in order else len(order)
     for index, existing in enumerate(document):
@@ -112,7 +112,7 @@ def merge_overlay(document: Any, overlay: Any) -> None:
             continue
         target = document.find(section.tag)
         if target is None:
-            _insert_section(document, copy.deepcopy(section))
+            insert_section(document, copy.deepcopy(section))
             continue
         _merge(target, section)
 
