@@ -39,7 +39,8 @@ from urdfgenpy_ros.joint import JointType
 from urdfgenpy_ros.robot import Robot
 
 GRID_POINTS = 4096
-SEEDS = 6
+STARTS = 64
+PRUNE = 3
 SAMPLES = 17
 SWEEPS = 12
 
@@ -150,6 +151,40 @@ def _turning_points(torque: _Torque, seeds: numpy.ndarray, column: int,
     return numpy.stack(found, axis=1)
 
 
+def _kinds(model: ChainModel) -> tuple[set[int], set[int]]:
+    """
+    Return the columns whose torques are one sinusoid of them, and those linear in them.
+
+    A column that moves one link, turning at multiplier 1, changes every torque as
+    ``A cos q + B sin q + C`` (its rotation enters linearly); one that slides one link,
+    linearly. Columns shared by mimic joints mix several frequencies: they are sampled.
+    """
+    single: set[int] = set()
+    linear: set[int] = set()
+    for column in range(len(model.movable)):
+        links = numpy.flatnonzero(model.source == column)
+        if len(links) != 1:
+            continue
+        if model.motion[links[0]] == REVOLUTE and model.multiplier[links[0]] == 1.0:
+            single.add(column)
+        elif model.motion[links[0]] == PRISMATIC:
+            linear.add(column)
+    return single, linear
+
+
+def _starts(grid: numpy.ndarray, size: numpy.ndarray, bounds: numpy.ndarray,
+            columns: list[int], home: numpy.ndarray) -> numpy.ndarray:
+    """Return the zero pose, the best grid points and random points (the same each run)."""
+    count = min(STARTS, max(STARTS // 8, STARTS * 8 // len(columns)))  # fewer for many joints
+    rng = numpy.random.default_rng(len(columns))
+    scattered = numpy.repeat(home[None, :], count - count // 4, axis=0)
+    scattered[:, columns] = rng.uniform(bounds[columns, 0], bounds[columns, 1],
+                                        (len(scattered), len(columns)))
+    return numpy.concatenate([home[None, :],
+                              grid[numpy.argsort(-size, kind='stable')[:count // 4]],
+                              scattered])
+
+
 def worst_case(model: ChainModel, masses: MassModel, bounds: numpy.ndarray, column: int,
                gravity: numpy.ndarray) -> WorstCase:
     """Return the largest ``|torque|`` of movable joint ``column`` over ``bounds``."""
@@ -159,27 +194,40 @@ def worst_case(model: ChainModel, masses: MassModel, bounds: numpy.ndarray, colu
     grid = _grid(bounds, columns, base)
     size = numpy.abs(torque(grid))
     home = numpy.clip(numpy.zeros(len(bounds)), bounds[:, 0], bounds[:, 1])  # ties go to it
-    seeds = numpy.concatenate([home[None, :],
-                               grid[numpy.argsort(-size, kind='stable')[:SEEDS - 1]]])
+    seeds = _starts(grid, size, bounds, columns, home) if columns else home[None, :]
     best = numpy.abs(torque(seeds))
+    single, linear = _kinds(model)
     turning = {int(model.source[link])
                for link in numpy.flatnonzero(model.motion == REVOLUTE)}
-    for _ in range(SWEEPS):
-        before = best.copy()
+    active = numpy.arange(len(seeds))  # the seeds still climbing
+    for sweep in range(SWEEPS):
+        if sweep == PRUNE:  # keep the most promising climbs
+            order = numpy.argsort(-best, kind='stable')
+            kept = order[:max(4, len(order) // 4)]
+            seeds, best = seeds[kept], best[kept]
+            active = numpy.arange(len(seeds))
+        before = best[active].copy()
         for moved in columns:
             low, high = bounds[moved]
-            tries = numpy.linspace(low, high, SAMPLES)[None, :].repeat(len(seeds), axis=0)
+            climbing = seeds[active]
+            if moved in single or moved in linear:
+                tries = numpy.array([[low, high]]).repeat(len(active), axis=0)
+            else:
+                tries = numpy.linspace(low, high, SAMPLES)[None, :].repeat(len(active), axis=0)
             if moved in turning:
                 tries = numpy.concatenate(
-                    [tries, _turning_points(torque, seeds, moved, low, high)], axis=1)
-            trial = numpy.repeat(seeds, tries.shape[1], axis=0)
+                    [tries, _turning_points(torque, climbing, moved, low, high)], axis=1)
+            trial = numpy.repeat(climbing, tries.shape[1], axis=0)
             trial[:, moved] = tries.ravel()
-            values = numpy.abs(torque(trial)).reshape(len(seeds), -1)
+            values = numpy.abs(torque(trial)).reshape(len(active), -1)
             pick = values.argmax(axis=1)
-            better = values[numpy.arange(len(seeds)), pick] > best
-            seeds[better, moved] = tries[better, pick[better]]
-            best = numpy.maximum(best, values[numpy.arange(len(seeds)), pick])
-        if (best - before).max() <= 1e-12 * max(1.0, float(best.max())):
+            top = values[numpy.arange(len(active)), pick]
+            better = top > best[active]
+            seeds[active[better], moved] = tries[better, pick[better]]
+            best[active] = numpy.maximum(best[active], top)
+        moving = best[active] - before > 1e-12 * max(1.0, float(best.max()))
+        active = active[moving]
+        if not len(active):
             break
     winner = seeds[int(numpy.argmax(best >= best.max() * (1.0 - 1e-12)))]  # the first best
     value = float(torque(winner[None, :])[0])
