@@ -394,3 +394,27 @@ def test_seven_joint_xarm_against_pinocchio_and_scipy() -> None:
         for name, value in worst.pose.items():
             values[robot.movable_joints.index(name)] = value
         assert torque(values, column) == pytest.approx(worst.torque, abs=1e-9)
+
+
+def test_mjcf_efforts_count_the_actuator_gear(tmp_path: Path,
+                                              monkeypatch: pytest.MonkeyPatch) -> None:
+    """MuJoCo applies gear x force at the joint: 14 N at gear 2 is the 28 N m of the URDF."""
+    mujoco = require_module('mujoco')
+    monkeypatch.chdir(tmp_path)
+    robot = arm(TWO, efforts={'joint_1': 100.0, 'joint_2': 28.0})
+    path = _write(tmp_path, robot)
+    geared = MJCF.replace('forcerange="-50 50"', 'gear="2" forcerange="-14 14"').replace(
+        'actuatorfrcrange="-100 100"', '')
+    (tmp_path / 'arm.xml').write_text(geared)
+    model = mujoco.MjModel.from_xml_path(str(tmp_path / 'arm.xml'))
+    data = mujoco.MjData(model)
+    data.ctrl[0] = 14.0  # MuJoCo's own joint torque at the full force
+    mujoco.mj_forward(model, data)
+    assert data.qfrc_actuator[1] == pytest.approx(28.0)
+    result = CliRunner().invoke(main, ['check', '--statics', '--no-meshes', '--mjcf',
+                                       str(tmp_path / 'arm.xml'), str(path)])
+    assert ' T802 ' not in result.output, result.output
+    (tmp_path / 'arm.xml').write_text(geared.replace('-14 14', '-28 28'))
+    result = CliRunner().invoke(main, ['check', '--statics', '--no-meshes', '--mjcf',
+                                       str(tmp_path / 'arm.xml'), str(path)])
+    assert "56 in arm.xml actuator 'elbow_motor' forcerange x gear 2" in result.output
