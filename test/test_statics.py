@@ -223,7 +223,7 @@ def test_payload_option_and_ignore(tmp_path: Path) -> None:
     assert result.exit_code == 2 and 'MASS@LINK' in result.output
     result = CliRunner().invoke(main, ['check', '--statics', '--payload', '1@hand',
                                        '--no-meshes', str(path)])
-    assert "'hand' is not a link of the robot" in result.output
+    assert "'hand' is not a link of this robot" in result.output
 
 
 def test_wheels_and_vertical_axes_are_never_reported() -> None:
@@ -418,3 +418,17 @@ def test_mjcf_efforts_count_the_actuator_gear(tmp_path: Path,
     result = CliRunner().invoke(main, ['check', '--statics', '--no-meshes', '--mjcf',
                                        str(tmp_path / 'arm.xml'), str(path)])
     assert "56 in arm.xml actuator 'elbow_motor' forcerange x gear 2" in result.output
+
+
+def test_a_payload_link_one_of_several_files_lacks(tmp_path: Path) -> None:
+    """The file without the link is named, still checked otherwise, and not 'unreadable'."""
+    first = _write(tmp_path, arm(TWO, 'first'))
+    robot = Robot('short').add_link(_link('base_link', 1.0, (0.0, 0.0, 0.0)))
+    second = _write(tmp_path, robot)
+    result = CliRunner().invoke(main, ['check', '--statics', '--payload', '0.5@link_2',
+                                       '--no-meshes', str(first), str(second)])
+    assert result.exit_code == 2, result.output
+    assert (f"{second}: error: --payload: 'link_2' is not a link of this robot: its statics "
+            'were not checked') in result.output
+    assert f'{first}: error' not in result.output
+    assert '0 unreadable, 1 without the --payload link' in result.output
