@@ -398,7 +398,7 @@ def test_seven_joint_xarm_against_pinocchio_and_scipy() -> None:
 
 def test_mjcf_efforts_count_the_actuator_gear(tmp_path: Path,
                                               monkeypatch: pytest.MonkeyPatch) -> None:
-    """MuJoCo applies gear x force at the joint: 14 N at gear 2 is the 28 N m of the URDF."""
+    """An actuator gives gear x force at the joint: 14 N at gear 2 is the URDF's 28 N m."""
     mujoco = require_module('mujoco')
     monkeypatch.chdir(tmp_path)
     robot = arm(TWO, efforts={'joint_1': 100.0, 'joint_2': 28.0})

@@ -249,7 +249,7 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
         try:
             found = _findings(robot, options)
         except ModelError:
-            if options.payload is None or any(link.name == options.payload["link"]
+            if options.payload is None or any(link.name == options.payload['link']
                                               for link in robot.links):
                 raise
             report.payload = (f'{path}: error: --payload: {options.payload["link"]!r} is not '

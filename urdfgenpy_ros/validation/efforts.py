@@ -20,7 +20,8 @@ A joint's force limit can be written in three places of one URDF: the ``effort``
 ``<ros2_control>`` joint, and an ``<effort>`` in a ``<gazebo reference="JOINT">`` block
 (SDFormat's joint ``<limit>``, which Gazebo applies); and in an MJCF file made from it, the
 joint's ``actuatorfrcrange`` and the ``forcerange`` of actuators on the joint times their
-``gear`` (the torque MuJoCo applies at the joint), as MuJoCo compiles them. T802 lists them when they differ.
+``gear`` (the torque MuJoCo applies at the joint), as MuJoCo compiles them. T802 lists
+them when they differ.
 """
 
 from __future__ import annotations
