@@ -432,3 +432,28 @@ def test_a_payload_link_one_of_several_files_lacks(tmp_path: Path) -> None:
             'were not checked') in result.output
     assert f'{first}: error' not in result.output
     assert '0 unreadable, 1 without the --payload link' in result.output
+
+
+def test_of_equal_worst_cases_the_zero_pose_is_named() -> None:
+    """UR5 (limits of two turns): the shoulder is worst straight out at 0, not at -pi or 2pi."""
+    pin = require_module('pinocchio')
+    path = _example_robot('ur_description/urdf/ur5_robot.urdf')
+    robot = Robot.from_urdf(path)
+    model = pin.buildModelFromUrdf(str(path))
+    data = model.createData()
+    found = _search(robot)
+    for worst in found:
+        assert all(-math.pi < value <= math.pi + 1e-12 for value in worst.pose.values()), worst
+    lift = found[robot.movable_joints.index('shoulder_lift_joint')]
+    assert lift.pose['shoulder_lift_joint'] == 0.0 and lift.pose['elbow_joint'] == 0.0
+    q = pin.neutral(model)
+    for name, value in lift.pose.items():
+        q[model.joints[model.getJointId(name)].idx_q] = value
+    expected = pin.computeGeneralizedGravity(model, data, q)[
+        model.joints[model.getJointId('shoulder_lift_joint')].idx_v]
+    assert lift.torque == pytest.approx(expected, abs=1e-9)
+    # and no pose of the arm needs more (pinocchio, random poses)
+    samples = numpy.random.default_rng(1).uniform(-math.pi, math.pi, (300, model.nq))
+    column = model.joints[model.getJointId('shoulder_lift_joint')].idx_v
+    assert max(abs(pin.computeGeneralizedGravity(model, data, sample)[column])
+               for sample in samples) <= abs(lift.torque) + 1e-9

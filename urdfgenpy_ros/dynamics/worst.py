@@ -41,6 +41,7 @@ from urdfgenpy_ros.robot import Robot
 GRID_POINTS = 4096
 STARTS = 64
 PRUNE = 3
+TIE = 1e-9  # relative: torques this close are equal, the plainer pose is named
 SAMPLES = 17
 SWEEPS = 12
 
@@ -229,11 +230,41 @@ def worst_case(model: ChainModel, masses: MassModel, bounds: numpy.ndarray, colu
         active = active[moving]
         if not len(active):
             break
-    winner = seeds[int(numpy.argmax(best >= best.max() * (1.0 - 1e-12)))]  # the first best
+    winner = _plainest(torque, seeds, best, bounds, columns)
     value = float(torque(winner[None, :])[0])
     return WorstCase(model.movable[column], value,
                      {model.movable[moved]: float(winner[moved])
                       for moved in _mattering(torque, winner, bounds, columns, value)})
+
+
+def _wrapped(values: numpy.ndarray, bounds: numpy.ndarray) -> numpy.ndarray:
+    """Return ``values`` turned by whole turns into (-pi, pi] where the bounds allow it."""
+    turned = values - 2.0 * math.pi * numpy.round(values / (2.0 * math.pi))
+    inside = (turned >= bounds[:, 0]) & (turned <= bounds[:, 1])
+    return numpy.where(inside, turned, values)
+
+
+def _plainest(torque: _Torque, seeds: numpy.ndarray, best: numpy.ndarray,
+              bounds: numpy.ndarray, columns: list[int]) -> numpy.ndarray:
+    """
+    Return the plainest of the best poses: nearest the zero pose, angles in (-pi, pi].
+
+    Of poses within ``TIE`` of the best, the one of smallest angles wins; then each joint
+    is set to 0, or turned by whole turns, where that loses no more than ``TIE``.
+    """
+    floor = best.max() - max(TIE * best.max(), 1e-12)
+    tied = numpy.flatnonzero(best >= floor)
+    candidates = numpy.array([_wrapped(seed, bounds) for seed in seeds[tied]])
+    keep = numpy.abs(torque(candidates)) >= floor
+    candidates = numpy.where(keep[:, None], candidates, seeds[tied])
+    winner = candidates[int(numpy.argmin(numpy.abs(candidates[:, columns]).sum(axis=1)))]
+    for moved in columns:
+        if bounds[moved, 0] <= 0.0 <= bounds[moved, 1] and winner[moved] != 0.0:
+            trial = winner.copy()
+            trial[moved] = 0.0
+            if abs(float(torque(trial[None, :])[0])) >= floor:
+                winner = trial
+    return winner
 
 
 def _mattering(torque: _Torque, winner: numpy.ndarray, bounds: numpy.ndarray,
@@ -245,7 +276,7 @@ def _mattering(torque: _Torque, winner: numpy.ndarray, bounds: numpy.ndarray,
                                                                   bounds[moved, 1], 5)
     change = numpy.abs(torque(probes) - value).reshape(len(columns), 5).max(axis=1)
     return [moved for moved, amount in zip(columns, change)
-            if amount > 1e-9 * max(abs(value), 1e-9)]
+            if amount > max(1e-9 * abs(value), 1e-12)]
 
 
 def is_prismatic(model: ChainModel, column: int) -> bool:
