@@ -457,3 +457,29 @@ def test_of_equal_worst_cases_the_zero_pose_is_named() -> None:
     column = model.joints[model.getJointId('shoulder_lift_joint')].idx_v
     assert max(abs(pin.computeGeneralizedGravity(model, data, sample)[column])
                for sample in samples) <= abs(lift.torque) + 1e-9
+
+
+def test_zero_effort_is_j106_alone_and_held_bases_read_as_one_sentence() -> None:
+    robot = arm(TWO, efforts={'joint_1': 0.0})
+    codes = [finding.code for finding in robot.validate(statics=True, check_meshes=False)
+             if finding.element == "joint 'joint_1'"]
+    assert codes.count('J106') == 1 and 'T801' not in codes
+    robot = arm(TWO, efforts={'joint_1': 2.0})
+    robot.add_link(Link('world'))
+    robot.add_joint(Joint('float', 'floating', 'world', 'base_link'))
+    found = next(finding for finding in robot.validate(statics=True, check_meshes=False)
+                 if finding.code == 'T801')
+    assert ")  (" not in str(found) and ') (' not in str(found), str(found)
+    # a legged body without a floating joint: its root is held, and the finding says so
+    legged = Robot('dog').add_link(_link('body', 10.0, (0.0, 0.0, 0.0)))
+    for side, y in (('left', 0.1), ('right', -0.1)):
+        legged.add_link(_link(f'{side}_thigh', 1.0, (0.0, 0.0, -0.1)))
+        legged.add_joint(Joint(f'{side}_hip', 'revolute', 'body', f'{side}_thigh',
+                               origin=Origin((0.0, y, 0.0)), axis=(0, 1, 0),
+                               limit=JointLimit(-1, 1, effort=0.5, velocity=1)))
+    found = [finding for finding in legged.validate(statics=True, check_meshes=False)
+             if finding.code == 'T801']
+    assert len(found) == 2
+    assert all("the root link 'body' is held still" in finding.message for finding in found)
+    assert not any('held' in finding.message for finding in arm(TWO, efforts={
+        'joint_1': 2.0}).validate(statics=True, check_meshes=False))
