@@ -42,6 +42,8 @@ GRID_POINTS = 4096
 STARTS = 64
 PRUNE = 3
 TIE = 1e-9  # relative: torques this close are equal, the plainer pose is named
+LONG_POSE = 8
+SHORTER = 1e-3  # a pose of more joints gives this much up for joints at 0
 SAMPLES = 17
 SWEEPS = 12
 
@@ -264,6 +266,23 @@ def _plainest(torque: _Torque, seeds: numpy.ndarray, best: numpy.ndarray,
             trial[moved] = 0.0
             if abs(float(torque(trial[None, :])[0])) >= floor:
                 winner = trial
+    return _shortened(torque, winner, bounds, columns, best.max() * (1.0 - SHORTER))
+
+
+def _shortened(torque: _Torque, winner: numpy.ndarray, bounds: numpy.ndarray,
+               columns: list[int], floor: float) -> numpy.ndarray:
+    """Return ``winner`` with joints of least effect at 0, for a pose of many joints."""
+    moved = [column for column in columns
+             if winner[column] != 0.0 and bounds[column, 0] <= 0.0 <= bounds[column, 1]]
+    if len(moved) <= LONG_POSE:
+        return winner
+    trials = numpy.repeat(winner[None, :], len(moved), axis=0)
+    trials[numpy.arange(len(moved)), moved] = 0.0
+    for number in numpy.argsort(-numpy.abs(torque(trials)), kind='stable'):
+        trial = winner.copy()
+        trial[moved[number]] = 0.0
+        if abs(float(torque(trial[None, :])[0])) >= floor:
+            winner = trial
     return winner
 
 

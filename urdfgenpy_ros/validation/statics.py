@@ -32,7 +32,8 @@ import numpy
 
 from urdfgenpy_ros.dynamics import compiled
 from urdfgenpy_ros.dynamics.gravity import mass_model
-from urdfgenpy_ros.dynamics.worst import is_prismatic, ranges, worst_case, WorstCase
+from urdfgenpy_ros.dynamics.worst import is_prismatic, LONG_POSE, ranges, worst_case
+from urdfgenpy_ros.dynamics.worst import WorstCase
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.robot import Robot
@@ -102,7 +103,12 @@ def _subtree(robot: Robot, joint: Joint) -> list[Joint]:
 
 def _message(worst: WorstCase, unit: str, effort: float,
              payload: Mapping[str, object] | None, held: str) -> str:
-    pose = ', '.join(f'{name}={round(value, 4) + 0.0:g}' for name, value in worst.pose.items())
+    values = {name: round(value, 4) + 0.0 for name, value in worst.pose.items()}
+    shown = values if len(values) <= LONG_POSE else {
+        name: value for name, value in values.items() if value != 0.0}
+    pose = ', '.join(f'{name}={value:g}' for name, value in shown.items())
+    if len(shown) < len(values):
+        pose = f'{pose}, the other joints at 0'
     where = f'at {pose}' if pose else 'in every pose'
     carrying = (f' (with {payload["mass"]:g} kg at {payload["link"]!r})'
                 if payload is not None else '')
