@@ -257,3 +257,24 @@ def test_a_base_pose_moves_every_link_and_the_world_jacobian() -> None:
     assert abs(world[:3] - base[:3, :3] @ local[:3]).max() < 1e-14
     assert abs(robot.jacobian('link_d', q, 'local', base) - robot.jacobian(
         'link_d', q, 'local')).max() < 1e-14
+
+
+def test_a_mimic_of_a_missing_joint_moves_on_its_own_and_j107_says_why() -> None:
+    """As documented: it is a column of q (pinocchio without mimic moves it freely too)."""
+    pin = require_module('pinocchio')
+    robot = Robot('hand').add_link(_link('palm', 0.5, (0, 0, 0.05)))
+    robot.add_link(_link('finger', 0.1, (0.03, 0, 0)))
+    robot.add_joint(Joint('finger_joint', 'revolute', 'palm', 'finger', axis=(0, 1, 0),
+                          origin=Origin((0.05, 0, 0.1)),
+                          limit=JointLimit(-1, 1, effort=10, velocity=1),
+                          mimic=JointMimic('index_q1', 2.0)))
+    assert robot.movable_joints == ['finger_joint']
+    assert [finding.code for finding in robot.validate(check_meshes=False)
+            if finding.code.startswith('J10')] == ['J107']
+    free = Robot.from_urdf_string(robot.to_urdf())
+    free.get_joint('finger_joint').mimic = None
+    model = pin.buildModelFromXML(free.to_urdf())
+    data = model.createData()
+    expected = pin.computeGeneralizedGravity(model, data, numpy.array([0.4]))
+    assert robot.gravity_torques({'finger_joint': 0.4}) == pytest.approx(expected, abs=1e-12)
+    assert model.nq == 1
