@@ -16,13 +16,15 @@
 The worst gravity torque of a joint over the whole range of motion, and the pose.
 
 A joint's gravity torque depends only on the joints above it (they turn gravity in its
-frame) and below it (they move the mass it carries). The search starts from the best
-points of a grid over those joints and from the zero pose (which wins ties, so that an arm
-straight out is named so), then climbs one joint at a time. Along one turning
-joint the torque is ``A cos q + B sin q + C``: three evaluations give A, B and C, and the
-extremes inside the limits are among the turning points and the ends, so each step is
-exact (and the whole search, for a single joint). A dense set of samples along the joint
-joins them, for mimic joints whose torque has several frequencies.
+frame) and below it (they move the mass it carries). The search climbs one joint at a time
+from up to ``STARTS`` poses: the zero pose, the best points of a grid over those joints and
+random ones (fewer when dozens of joints matter); after ``PRUNE`` sweeps the best quarter
+climbs on. Along a joint that turns one link the torque is ``A cos q + B sin q + C``:
+three evaluations give A, B and C, and the extremes inside the limits are among the
+turning points and the ends, so each step is exact (and the whole search, for a single
+joint); along a slider it is linear (the ends). A joint shared by mimic joints has several
+frequencies: a dense set of samples along it joins the turning points. Of equal results
+the pose nearest zero is named, with angles in (-pi, pi].
 """
 
 from __future__ import annotations
