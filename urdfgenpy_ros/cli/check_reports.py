@@ -45,6 +45,8 @@ class FileReport:
     notes: list[str] = field(default_factory=list)
     refused: str | None = None
     """Why --fix left the file alone though it had repairs (Xacro, assembly, DH table)."""
+    payload: str | None = None
+    """Why --statics did not run: the --payload link is not one of this robot's."""
 
 
 def json_report(reports: list[FileReport]) -> str:

@@ -162,23 +162,26 @@ def positions(model: ChainModel, q: Any) -> tuple[numpy.ndarray, bool]:
     """
     Return ``q`` as an (N, dof) array, and whether it was a single configuration.
 
-    ``q`` is a mapping of joint names (missing joints: 0; mimic joints follow their
-    leaders, so their values are not used), an array over the movable joints, or an
-    (N, dof) array of configurations.
+    ``q`` is a mapping of joint names (missing joints: 0; a mimic joint, which follows its
+    leader, or a fixed one is a ModelError), an array over the movable joints, or an
+    (N, dof) array of configurations; values must be finite numbers.
     """
     dof = len(model.movable)
     if isinstance(q, Mapping):
         row = numpy.zeros(dof)
         columns = {name: number for number, name in enumerate(model.movable)}
         for name, value in q.items():
-            if name in columns:
-                row[columns[name]] = float(value)
-            elif name not in model.joints:
-                known = ', '.join(model.movable) or 'none'
-                raise ModelError(f'q names {name!r}, which is not a joint of the robot '
-                                 f'(movable joints: {known})')
+            if name not in columns:
+                raise ModelError(_not_a_column(model, name))
+            row[columns[name]] = _finite(value, name)
         return row[None, :], True
-    values = numpy.asarray(q if q is not None else numpy.zeros(dof), dtype=float)
+    try:
+        values = numpy.asarray(q if q is not None else numpy.zeros(dof), dtype=float)
+    except (TypeError, ValueError):
+        raise ModelError(f'q must be numbers (radians or metres), got {q!r}') from None
+    if not numpy.isfinite(values).all():
+        raise ModelError('q holds a value that is not a finite number (NaN or inf): give '
+                         'finite joint values')
     if values.ndim == 1 and values.shape[0] == dof:
         return values[None, :], True
     if values.ndim == 2 and values.shape[1] == dof:
@@ -186,3 +189,29 @@ def positions(model: ChainModel, q: Any) -> tuple[numpy.ndarray, bool]:
     raise ModelError(f'q has shape {values.shape}: give {dof} values in robot.movable_joints '
                      f'order ({", ".join(model.movable)}), an (N, {dof}) array, or a mapping '
                      'of joint names')
+
+
+def _finite(value: Any, name: str) -> float:
+    """Return ``value`` as a finite float, or a ModelError naming the joint."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        number = math.nan
+    if not math.isfinite(number):
+        raise ModelError(f'q[{name!r}] is {value!r}: give a finite number (radians or metres)')
+    return number
+
+
+def _not_a_column(model: ChainModel, name: str) -> str:
+    """Return why joint ``name`` of a q mapping is not one of its columns."""
+    known = ', '.join(model.movable) or 'none'
+    if name not in model.joints:
+        return (f'q names {name!r}, which is not a joint of the robot '
+                f'(movable joints: {known})')
+    link = model.joints.index(name)
+    if model.source[link] >= 0:
+        leader = model.movable[model.source[link]]
+        return (f'q names {name!r}, a mimic joint: it follows {leader!r}; give a value '
+                f'for {leader!r} instead')
+    return (f'q names {name!r}, a joint q does not move (fixed, floating or planar; '
+            f'movable joints: {known})')

@@ -16,13 +16,15 @@
 The worst gravity torque of a joint over the whole range of motion, and the pose.
 
 A joint's gravity torque depends only on the joints above it (they turn gravity in its
-frame) and below it (they move the mass it carries). The search starts from the best
-points of a grid over those joints and from the zero pose (which wins ties, so that an arm
-straight out is named so), then climbs one joint at a time. Along one turning
-joint the torque is ``A cos q + B sin q + C``: three evaluations give A, B and C, and the
-extremes inside the limits are among the turning points and the ends, so each step is
-exact (and the whole search, for a single joint). A dense set of samples along the joint
-joins them, for mimic joints whose torque has several frequencies.
+frame) and below it (they move the mass it carries). The search climbs one joint at a time
+from up to ``STARTS`` poses: the zero pose, the best points of a grid over those joints and
+random ones (fewer when dozens of joints matter); after ``PRUNE`` sweeps the best quarter
+climbs on. Along a joint that turns one link the torque is ``A cos q + B sin q + C``:
+three evaluations give A, B and C, and the extremes inside the limits are among the
+turning points and the ends, so each step is exact (and the whole search, for a single
+joint); along a slider it is linear (the ends). A joint shared by mimic joints has several
+frequencies: a dense set of samples along it joins the turning points. Of equal results
+the pose nearest zero is named, with angles in (-pi, pi].
 """
 
 from __future__ import annotations
@@ -39,7 +41,11 @@ from urdfgenpy_ros.joint import JointType
 from urdfgenpy_ros.robot import Robot
 
 GRID_POINTS = 4096
-SEEDS = 6
+STARTS = 64
+PRUNE = 3
+TIE = 1e-9  # relative: torques this close are equal, the plainer pose is named
+LONG_POSE = 8
+SHORTER = 1e-3  # a pose of more joints gives this much up for joints at 0
 SAMPLES = 17
 SWEEPS = 12
 
@@ -150,6 +156,40 @@ def _turning_points(torque: _Torque, seeds: numpy.ndarray, column: int,
     return numpy.stack(found, axis=1)
 
 
+def _kinds(model: ChainModel) -> tuple[set[int], set[int]]:
+    """
+    Return the columns whose torques are one sinusoid of them, and those linear in them.
+
+    A column that moves one link, turning at multiplier 1, changes every torque as
+    ``A cos q + B sin q + C`` (its rotation enters linearly); one that slides one link,
+    linearly. Columns shared by mimic joints mix several frequencies: they are sampled.
+    """
+    single: set[int] = set()
+    linear: set[int] = set()
+    for column in range(len(model.movable)):
+        links = numpy.flatnonzero(model.source == column)
+        if len(links) != 1:
+            continue
+        if model.motion[links[0]] == REVOLUTE and model.multiplier[links[0]] == 1.0:
+            single.add(column)
+        elif model.motion[links[0]] == PRISMATIC:
+            linear.add(column)
+    return single, linear
+
+
+def _starts(grid: numpy.ndarray, size: numpy.ndarray, bounds: numpy.ndarray,
+            columns: list[int], home: numpy.ndarray) -> numpy.ndarray:
+    """Return the zero pose, the best grid points and random points (the same each run)."""
+    count = min(STARTS, max(STARTS // 8, STARTS * 8 // len(columns)))  # fewer for many joints
+    rng = numpy.random.default_rng(len(columns))
+    scattered = numpy.repeat(home[None, :], count - count // 4, axis=0)
+    scattered[:, columns] = rng.uniform(bounds[columns, 0], bounds[columns, 1],
+                                        (len(scattered), len(columns)))
+    return numpy.concatenate([home[None, :],
+                              grid[numpy.argsort(-size, kind='stable')[:count // 4]],
+                              scattered])
+
+
 def worst_case(model: ChainModel, masses: MassModel, bounds: numpy.ndarray, column: int,
                gravity: numpy.ndarray) -> WorstCase:
     """Return the largest ``|torque|`` of movable joint ``column`` over ``bounds``."""
@@ -159,33 +199,93 @@ def worst_case(model: ChainModel, masses: MassModel, bounds: numpy.ndarray, colu
     grid = _grid(bounds, columns, base)
     size = numpy.abs(torque(grid))
     home = numpy.clip(numpy.zeros(len(bounds)), bounds[:, 0], bounds[:, 1])  # ties go to it
-    seeds = numpy.concatenate([home[None, :],
-                               grid[numpy.argsort(-size, kind='stable')[:SEEDS - 1]]])
+    seeds = _starts(grid, size, bounds, columns, home) if columns else home[None, :]
     best = numpy.abs(torque(seeds))
+    single, linear = _kinds(model)
     turning = {int(model.source[link])
                for link in numpy.flatnonzero(model.motion == REVOLUTE)}
-    for _ in range(SWEEPS):
-        before = best.copy()
+    active = numpy.arange(len(seeds))  # the seeds still climbing
+    for sweep in range(SWEEPS):
+        if sweep == PRUNE:  # keep the most promising climbs
+            order = numpy.argsort(-best, kind='stable')
+            kept = order[:max(4, len(order) // 4)]
+            seeds, best = seeds[kept], best[kept]
+            active = numpy.arange(len(seeds))
+        before = best[active].copy()
         for moved in columns:
             low, high = bounds[moved]
-            tries = numpy.linspace(low, high, SAMPLES)[None, :].repeat(len(seeds), axis=0)
+            climbing = seeds[active]
+            if moved in single or moved in linear:
+                tries = numpy.array([[low, high]]).repeat(len(active), axis=0)
+            else:
+                tries = numpy.linspace(low, high, SAMPLES)[None, :].repeat(len(active), axis=0)
             if moved in turning:
                 tries = numpy.concatenate(
-                    [tries, _turning_points(torque, seeds, moved, low, high)], axis=1)
-            trial = numpy.repeat(seeds, tries.shape[1], axis=0)
+                    [tries, _turning_points(torque, climbing, moved, low, high)], axis=1)
+            trial = numpy.repeat(climbing, tries.shape[1], axis=0)
             trial[:, moved] = tries.ravel()
-            values = numpy.abs(torque(trial)).reshape(len(seeds), -1)
+            values = numpy.abs(torque(trial)).reshape(len(active), -1)
             pick = values.argmax(axis=1)
-            better = values[numpy.arange(len(seeds)), pick] > best
-            seeds[better, moved] = tries[better, pick[better]]
-            best = numpy.maximum(best, values[numpy.arange(len(seeds)), pick])
-        if (best - before).max() <= 1e-12 * max(1.0, float(best.max())):
+            top = values[numpy.arange(len(active)), pick]
+            better = top > best[active]
+            seeds[active[better], moved] = tries[better, pick[better]]
+            best[active] = numpy.maximum(best[active], top)
+        moving = best[active] - before > 1e-12 * max(1.0, float(best.max()))
+        active = active[moving]
+        if not len(active):
             break
-    winner = seeds[int(numpy.argmax(best >= best.max() * (1.0 - 1e-12)))]  # the first best
+    winner = _plainest(torque, seeds, best, bounds, columns)
     value = float(torque(winner[None, :])[0])
     return WorstCase(model.movable[column], value,
                      {model.movable[moved]: float(winner[moved])
                       for moved in _mattering(torque, winner, bounds, columns, value)})
+
+
+def _wrapped(values: numpy.ndarray, bounds: numpy.ndarray) -> numpy.ndarray:
+    """Return ``values`` turned by whole turns into (-pi, pi] where the bounds allow it."""
+    turned = values - 2.0 * math.pi * numpy.round(values / (2.0 * math.pi))
+    inside = (turned >= bounds[:, 0]) & (turned <= bounds[:, 1])
+    return numpy.where(inside, turned, values)
+
+
+def _plainest(torque: _Torque, seeds: numpy.ndarray, best: numpy.ndarray,
+              bounds: numpy.ndarray, columns: list[int]) -> numpy.ndarray:
+    """
+    Return the plainest of the best poses: nearest the zero pose, angles in (-pi, pi].
+
+    Of poses within ``TIE`` of the best, the one of smallest angles wins; then each joint
+    is set to 0, or turned by whole turns, where that loses no more than ``TIE``.
+    """
+    floor = best.max() - max(TIE * best.max(), 1e-12)
+    tied = numpy.flatnonzero(best >= floor)
+    candidates = numpy.array([_wrapped(seed, bounds) for seed in seeds[tied]])
+    keep = numpy.abs(torque(candidates)) >= floor
+    candidates = numpy.where(keep[:, None], candidates, seeds[tied])
+    winner = candidates[int(numpy.argmin(numpy.abs(candidates[:, columns]).sum(axis=1)))]
+    for moved in columns:
+        if bounds[moved, 0] <= 0.0 <= bounds[moved, 1] and winner[moved] != 0.0:
+            trial = winner.copy()
+            trial[moved] = 0.0
+            if abs(float(torque(trial[None, :])[0])) >= floor:
+                winner = trial
+    return _shortened(torque, winner, bounds, columns, best.max() * (1.0 - SHORTER))
+
+
+def _shortened(torque: _Torque, winner: numpy.ndarray, bounds: numpy.ndarray,
+               columns: list[int], floor: float) -> numpy.ndarray:
+    """Return ``winner`` with joints of least effect at 0, for a pose of many joints."""
+    moved = [column for column in columns
+             if winner[column] != 0.0 and bounds[column, 0] <= 0.0 <= bounds[column, 1]]
+    if len(moved) <= LONG_POSE:
+        return winner
+    trials = numpy.repeat(winner[None, :], len(moved), axis=0)
+    trials[numpy.arange(len(moved)), moved] = 0.0
+    for number in numpy.argsort(-numpy.abs(torque(trials)), kind='stable'):
+        trial = winner.copy()
+        trial[moved[number]] = 0.0
+        if abs(float(torque(trial[None, :])[0])) >= floor:
+            winner = trial
+    return winner
 
 
 def _mattering(torque: _Torque, winner: numpy.ndarray, bounds: numpy.ndarray,
@@ -197,7 +297,7 @@ def _mattering(torque: _Torque, winner: numpy.ndarray, bounds: numpy.ndarray,
                                                                   bounds[moved, 1], 5)
     change = numpy.abs(torque(probes) - value).reshape(len(columns), 5).max(axis=1)
     return [moved for moved, amount in zip(columns, change)
-            if amount > 1e-9 * max(abs(value), 1e-9)]
+            if amount > max(1e-9 * abs(value), 1e-12)]
 
 
 def is_prismatic(model: ChainModel, column: int) -> bool:

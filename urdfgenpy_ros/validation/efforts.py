@@ -19,8 +19,9 @@ A joint's force limit can be written in three places of one URDF: the ``effort``
 ``<limit>``, the ``max`` (and ``min``) of the ``effort`` command interface of its
 ``<ros2_control>`` joint, and an ``<effort>`` in a ``<gazebo reference="JOINT">`` block
 (SDFormat's joint ``<limit>``, which Gazebo applies); and in an MJCF file made from it, the
-joint's ``actuatorfrcrange`` and the ``forcerange`` of actuators on the joint, as MuJoCo
-compiles them. T802 lists them when they differ.
+joint's ``actuatorfrcrange`` and the ``forcerange`` of actuators on the joint times their
+``gear`` (the torque MuJoCo applies at the joint), as MuJoCo compiles them. T802 lists
+them when they differ.
 """
 
 from __future__ import annotations
@@ -109,10 +110,12 @@ def mjcf_voices(path: str | PathLike[str]) -> dict[str, list[tuple[str, float]]]
         name = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_JOINT,
                                  model.actuator_trnid[actuator][0])
         label = mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_ACTUATOR, actuator) or actuator
+        gear = abs(float(model.actuator_gear[actuator][0]))  # MuJoCo applies gear x force
         if name:
+            geared = f' x gear {gear:g}' if gear != 1.0 else ''
             found.setdefault(name, []).append(
-                (f'{where} actuator {label!r} forcerange',
-                 float(abs(model.actuator_forcerange[actuator]).max())))
+                (f'{where} actuator {label!r} forcerange{geared}',
+                 gear * float(abs(model.actuator_forcerange[actuator]).max())))
     return found
 
 

@@ -32,9 +32,10 @@ import numpy
 
 from urdfgenpy_ros.dynamics import compiled
 from urdfgenpy_ros.dynamics.gravity import mass_model
-from urdfgenpy_ros.dynamics.worst import is_prismatic, ranges, worst_case, WorstCase
+from urdfgenpy_ros.dynamics.worst import is_prismatic, LONG_POSE, ranges, worst_case
+from urdfgenpy_ros.dynamics.worst import WorstCase
 from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.findings import Findings, joint_path
 
@@ -59,8 +60,8 @@ def check_statics(robot: Robot, findings: Findings,
     held = _held(robot)
     for column, name in enumerate(model.movable):
         limit = robot.get_joint(name).limit
-        if limit is None or not math.isfinite(limit.effort) or limit.effort < 0.0:
-            continue  # J103, J105 or R305 says what is wrong with it
+        if limit is None or not math.isfinite(limit.effort) or limit.effort <= 0.0:
+            continue  # J103, J105, J106 or R305 says what is wrong with it
         worst = worst_case(model, masses, bounds, column, g)
         need = abs(worst.torque) * margin
         if abs(worst.torque) <= scale or limit.effort >= need:
@@ -73,19 +74,41 @@ def check_statics(robot: Robot, findings: Findings,
 
 
 def _held(robot: Robot) -> str:
-    """Return what the message says of a floating base ('' for a fixed one)."""
+    """Return what the message says of a base that is held ('' for a fixed arm's)."""
     free = [joint for joint in robot.joints
             if joint.type in (JointType.FLOATING, JointType.PLANAR)]
-    if not free:
+    if free:
+        names = ', '.join(repr(joint.name) for joint in free)
+        return (f'; the floating base is held at {robot.root.name!r}: {free[0].type} joint '
+                f'{names} at its origin')
+    root = robot.root
+    if root.inertial is None or root.inertial.mass <= 0.0:
         return ''
-    names = ', '.join(repr(joint.name) for joint in free)
-    return (f' (the floating base is held at {robot.root.name!r}: {free[0].type} joint '
-            f'{names} at its origin)')
+    limbs = sum(any(joint.type.is_movable for joint in _subtree(robot, child))
+                for child in robot.joints if child.parent == root.name)
+    if limbs < 2:
+        return ''
+    return f'; the root link {root.name!r} is held still, as if bolted down'
+
+
+def _subtree(robot: Robot, joint: Joint) -> list[Joint]:
+    """Return ``joint`` and every joint below it."""
+    found, waiting = [], [joint]
+    while waiting:
+        current = waiting.pop()
+        found.append(current)
+        waiting += [below for below in robot.joints if below.parent == current.child]
+    return found
 
 
 def _message(worst: WorstCase, unit: str, effort: float,
              payload: Mapping[str, object] | None, held: str) -> str:
-    pose = ', '.join(f'{name}={round(value, 4) + 0.0:g}' for name, value in worst.pose.items())
+    values = {name: round(value, 4) + 0.0 for name, value in worst.pose.items()}
+    shown = values if len(values) <= LONG_POSE else {
+        name: value for name, value in values.items() if value != 0.0}
+    pose = ', '.join(f'{name}={value:g}' for name, value in shown.items())
+    if len(shown) < len(values):
+        pose = f'{pose}, the other joints at 0'
     where = f'at {pose}' if pose else 'in every pose'
     carrying = (f' (with {payload["mass"]:g} kg at {payload["link"]!r})'
                 if payload is not None else '')
