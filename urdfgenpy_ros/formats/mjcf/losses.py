@@ -79,7 +79,8 @@ class Carried:
     sensors: set[str] = field(default_factory=set)  # names of the <sensor>s written
     partly: dict[str, str] = field(default_factory=dict)  # sensor -> what was left out
     stand_ins: dict[str, str] = field(default_factory=dict)
-    missing: dict[str, str] = field(default_factory=dict)  # mesh URI -> why not written
+    missing: dict[str, tuple[str, str]] = field(default_factory=dict)  # mesh URI -> why
+    # not written, and the fix
     followers: set[str] = field(default_factory=set)
     links: set[str] = field(default_factory=set)
     mimics: set[str] = field(default_factory=set)  # followers written as equalities
@@ -95,11 +96,12 @@ class Losses:
         self.carried = carried
         self.findings = Findings(robot)
 
-    def add(self, code: str, node: Any, element: str, message: str) -> None:
+    def add(self, code: str, node: Any, element: str, message: str,
+            hint: str | None = None) -> None:
         """Record a finding about ``node`` (an lxml element) of the document."""
         line = node.sourceline if self.file is not None else None
         self.findings.add(code, SourceLocation(self.file, line), element, _path(node),
-                          message, HINTS[code], str(node.tag))
+                          message, hint or HINTS[code], str(node.tag))
 
 
 def _path(node: Any) -> str:
@@ -169,8 +171,9 @@ def _walk(node: Any, losses: Losses) -> None:
         losses.add('M809', node, owner, f'<{tag} {SIZES[tag]}="{node.get(SIZES[tag])}"> has '
                    'a size of zero: MuJoCo refuses such a geom, so it is not written')
     if tag == 'mesh' and node.get('filename') in losses.carried.missing:
+        why, fix = losses.carried.missing[node.get('filename')]
         losses.add('M809', node, owner, f"mesh {node.get('filename')!r} not written, nor its "
-                   f"geom: {losses.carried.missing[node.get('filename')]}")
+                   f'geom: {why}', fix)
     for child in node:
         if not isinstance(child.tag, str):
             continue

@@ -1,0 +1,86 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+
+"""
+MJCF export findings of a new-user trial on real robots, each judged by MuJoCo.
+
+MuJoCo compiles the written models, steps them and reports their contacts; the robots
+are small ones built here in the shape of the trial's (a bad mesh, a fixed-base arm, a
+gripper, ros2_control parameters and transmissions).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from click.testing import CliRunner
+from helpers import require_module
+import pytest
+
+from urdfgenpy_ros.cli import main
+
+
+@pytest.fixture(autouse=True)
+def _mujoco() -> None:
+    require_module('mujoco')
+
+
+INERTIAL = ('<inertial><mass value="0.5"/><inertia ixx="0.001" iyy="0.001" izz="0.001" '
+            'ixy="0" ixz="0" iyz="0"/></inertial>')
+
+
+def _arm(body: str = '', extra: str = '') -> str:
+    """Return a two-link arm's URDF with ``body`` in link 'a' and ``extra`` in the robot."""
+    return f'''<robot name="arm">
+  <link name="base_link">{INERTIAL}</link>
+  <link name="a">{body}{INERTIAL}</link>
+  <joint name="j1" type="revolute"><parent link="base_link"/><child link="a"/>
+    <axis xyz="0 0 1"/><limit lower="-2" upper="2" effort="10" velocity="1"/></joint>
+{extra}</robot>
+'''
+
+
+@pytest.mark.parametrize('content', [b'', b'solid x\nendsolid x\n', b'\0' * 84],
+                         ids=['empty', 'ascii-no-facet', 'binary-no-triangle'])
+def test_an_unreadable_mesh_is_an_m809_finding_and_the_rest_is_written(
+        tmp_path: Path, content: bytes) -> None:
+    import mujoco
+    (tmp_path / 'empty.stl').write_bytes(content)
+    source = tmp_path / 'robot.urdf'
+    source.write_text(_arm('<visual><geometry><mesh filename="empty.stl"/></geometry>'
+                           '</visual><collision><geometry><box size="0.1 0.1 0.1"/>'
+                           '</geometry></collision>'))
+    target = tmp_path / 'robot.xml'
+    result = CliRunner().invoke(main, ['convert', str(source), str(target)])
+    assert result.exit_code == 0, result.output
+    line = [text for text in result.output.splitlines() if 'M809' in text]
+    assert len(line) == 1 and line[0].startswith(f'{source}:3:') and "link 'a'" in line[0]
+    assert 'empty.stl' in line[0] and 'Traceback' not in result.output
+    model = mujoco.MjModel.from_xml_path(str(target))
+    assert model.nmesh == 0 and model.ngeom == 1  # the box stays, the mesh geom is out
+    assert model.body('a').id > 0
+
+
+def test_a_missing_package_gives_one_hint(tmp_path: Path) -> None:
+    import mujoco
+    source = tmp_path / 'robot.urdf'
+    source.write_text(_arm('<visual><geometry><mesh filename="package://nowhere_pkg/a.stl"/>'
+                           '</geometry></visual>'))
+    target = tmp_path / 'robot.xml'
+    result = CliRunner().invoke(main, ['convert', str(source), str(target)])
+    assert result.exit_code == 0, result.output
+    line = next(text for text in result.output.splitlines() if 'M809' in text)
+    assert line.count('--package-path') == 1 and line.count(' (') == 1, line
+    assert mujoco.MjModel.from_xml_path(str(target)).nmesh == 0
