@@ -84,3 +84,64 @@ def test_a_missing_package_gives_one_hint(tmp_path: Path) -> None:
     line = next(text for text in result.output.splitlines() if 'M809' in text)
     assert line.count('--package-path') == 1 and line.count(' (') == 1, line
     assert mujoco.MjModel.from_xml_path(str(target)).nmesh == 0
+
+
+def _box(size: str, xyz: str = '0 0 0') -> str:
+    return (f'<collision><origin xyz="{xyz}"/><geometry><box size="{size}"/></geometry>'
+            '</collision>')
+
+
+def _gripper_arm() -> str:
+    """Return a fixed-base arm whose shoulder overlaps the base, with two overlapping fingers."""
+    def link(name: str, collision: str) -> str:
+        return f'<link name="{name}">{collision}{INERTIAL}</link>'
+
+    def finger(name: str, side: int) -> str:
+        return (f'<joint name="{name}_joint" type="prismatic"><parent link="hand"/>'
+                f'<child link="{name}"/><origin xyz="0 {side * 0.01} 0.3"/>'
+                f'<axis xyz="0 {side} 0"/><limit lower="0" upper="0.04" effort="20" '
+                'velocity="0.1"/></joint>')
+    return f'''<robot name="gripper_arm">
+  {link("base_link", _box("0.2 0.2 0.2"))}
+  {link("shoulder", _box("0.1 0.1 0.3", "0 0 0.1"))}
+  {link("hand", _box("0.1 0.1 0.1", "0 0 0.25"))}
+  {link("left", _box("0.02 0.04 0.08"))}
+  {link("right", _box("0.02 0.04 0.08"))}
+  <joint name="pan" type="revolute"><parent link="base_link"/><child link="shoulder"/>
+    <origin xyz="0 0 0.1"/><axis xyz="0 0 1"/>
+    <limit lower="-3" upper="3" effort="50" velocity="1"/></joint>
+  <joint name="tilt" type="revolute"><parent link="shoulder"/><child link="hand"/>
+    <origin xyz="0 0 0.2"/><axis xyz="0 1 0"/>
+    <limit lower="-1" upper="1" effort="50" velocity="1"/></joint>
+  {finger("left", 1)}
+  {finger("right", -1)}
+</robot>
+'''
+
+
+def test_no_self_collision_at_home_and_the_fingers_stay_in_range(tmp_path: Path) -> None:
+    import mujoco
+    source = tmp_path / 'robot.urdf'
+    source.write_text(_gripper_arm())
+    target = tmp_path / 'robot.xml'
+    result = CliRunner().invoke(main, ['convert', str(source), str(target),
+                                       '--actuators', 'position', '--kp', '100',
+                                       '--kv', '10'])
+    assert result.exit_code == 0, result.output
+    assert 'excluded from self-collision' in result.output
+    model = mujoco.MjModel.from_xml_path(str(target))
+    data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, model.key('home').id)
+    mujoco.mj_forward(model, data)
+    assert data.ncon == 0, [(model.geom(c.geom1).name, model.geom(c.geom2).name)
+                            for c in data.contact[:data.ncon]]
+    excluded = {frozenset((model.body(int(pair & 0xFFFF)).name,
+                           model.body(int(pair >> 16)).name)) for pair in model.exclude_signature}
+    assert frozenset(('base_link', 'shoulder')) in excluded  # its parent is world-welded
+    assert frozenset(('left', 'right')) in excluded  # siblings touching at home
+    data.ctrl[:] = data.qpos[[model.joint(name).qposadr[0] for name in
+                              ('pan', 'tilt', 'left_joint', 'right_joint')]]
+    while data.time < 1.0:
+        mujoco.mj_step(model, data)
+    for name in ('left_joint', 'right_joint'):
+        assert -1e-3 <= data.qpos[model.joint(name).qposadr[0]] <= 0.04 + 1e-3

@@ -38,6 +38,7 @@ from urdfgenpy_ros.formats.mjcf.actuators import write_actuators
 from urdfgenpy_ros.formats.mjcf.blocks import (
     apply_block, check_attributes, merge_overlay, read_overlay)
 from urdfgenpy_ros.formats.mjcf.bodies import BodyWriter, WORLD
+from urdfgenpy_ros.formats.mjcf.contacts import write_excludes
 from urdfgenpy_ros.formats.mjcf.friction import declared_friction
 from urdfgenpy_ros.formats.mjcf.fusing import fused
 from urdfgenpy_ros.formats.mjcf.keyframe import write_keyframe
@@ -198,6 +199,8 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     carried.sensors = write_sensors(document, worldbody, written, carried.partly)
     if overlay is not None:
         merge_overlay(document, read_overlay(overlay))
+    notes.append(write_excludes(document, meshes.contents(),
+                                meshdir if path is not None else None))
     file = robot.source.file if robot.source is not None else None
     findings = find_losses(robot, urdf, file, carried)
     from urdfgenpy_ros.validation.xacro_source import in_source
