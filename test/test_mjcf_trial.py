@@ -145,3 +145,66 @@ def test_no_self_collision_at_home_and_the_fingers_stay_in_range(tmp_path: Path)
         mujoco.mj_step(model, data)
     for name in ('left_joint', 'right_joint'):
         assert -1e-3 <= data.qpos[model.joint(name).qposadr[0]] <= 0.04 + 1e-3
+
+
+def _two_joints(control: str) -> str:
+    """Return a chain of two revolute joints (limits +-2) and the ``control`` block."""
+    return f'''<robot name="pair">
+  <link name="base_link">{INERTIAL}</link>
+  <link name="a">{INERTIAL}</link>
+  <link name="b">{INERTIAL}</link>
+  <joint name="j1" type="revolute"><parent link="base_link"/><child link="a"/>
+    <axis xyz="0 0 1"/><limit lower="-2" upper="2" effort="10" velocity="1"/></joint>
+  <joint name="j2" type="revolute"><parent link="a"/><child link="b"/>
+    <origin xyz="0.3 0 0"/><axis xyz="0 0 1"/>
+    <limit lower="-2" upper="2" effort="10" velocity="1"/></joint>
+  <ros2_control name="pair" type="system">
+    <hardware><plugin>mock_components/GenericSystem</plugin></hardware>
+{control}
+  </ros2_control>
+</robot>
+'''
+
+
+def _convert(tmp_path: Path, text: str, *options: str) -> tuple[object, str]:
+    """Convert the URDF ``text``; return MuJoCo's model of the result and the output."""
+    import mujoco
+    source = tmp_path / 'robot.urdf'
+    source.write_text(text)
+    target = tmp_path / 'robot.xml'
+    result = CliRunner().invoke(main, ['convert', str(source), str(target), '-f', *options])
+    assert result.exit_code == 0, result.output
+    return mujoco.MjModel.from_xml_path(str(target)), result.output
+
+
+def test_ros2_control_initial_value_is_the_home_pose(tmp_path: Path) -> None:
+    import mujoco
+    model, _ = _convert(tmp_path, _two_joints('''
+    <joint name="j1"><command_interface name="position"/>
+      <state_interface name="position"><param name="initial_value">-1.57</param>
+      </state_interface></joint>
+    <joint name="j2"><param name="initial_value">5.0</param>
+      <command_interface name="position"/><state_interface name="position"/></joint>'''))
+    data = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, data, model.key('home').id)
+    assert list(data.qpos) == [-1.57, 2.0]  # the second clamped to its upper limit
+
+
+def test_a_ros2_control_transmission_is_the_gear(tmp_path: Path) -> None:
+    model, output = _convert(tmp_path, _two_joints('''
+    <joint name="j1"><command_interface name="position">
+      <param name="min">-1</param><param name="max">1</param></command_interface></joint>
+    <joint name="j2"><command_interface name="position"/></joint>
+    <transmission name="t1"><plugin>transmission_interface/SimpleTransmission</plugin>
+      <actuator name="a1" role="a1"/>
+      <joint name="j1" role="j1"><mechanical_reduction>2.0</mechanical_reduction></joint>
+    </transmission>
+    <transmission name="t2"><plugin>transmission_interface/SimpleTransmission</plugin>
+      <actuator name="a2" role="a2"><mechanical_reduction>4.0</mechanical_reduction>
+      </actuator><joint name="j2" role="j2"/>
+    </transmission>'''))
+    gears = {model.actuator(number).name: model.actuator_gear[number][0]
+             for number in range(model.nu)}
+    assert gears == {'j1_position': 2.0, 'j2_position': 4.0}
+    assert list(model.actuator_ctrlrange[0]) == [-2.0, 2.0]  # actuator units, as classic
+    assert 'transmission' not in output

@@ -34,6 +34,7 @@ from lxml import etree
 from urdfgenpy_ros.errors import ModelError, UrdfgenpyError, ValidationError
 from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats.mjcf.actuators import ACTUATOR_TYPES, declared_actuators, gears
+from urdfgenpy_ros.formats.mjcf.actuators import initial_values
 from urdfgenpy_ros.formats.mjcf.actuators import write_actuators
 from urdfgenpy_ros.formats.mjcf.blocks import (
     apply_block, check_attributes, merge_overlay, read_overlay)
@@ -195,7 +196,7 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
             carried.interfaces.add(actuator.origin)
         if actuator.joint.name in reductions:
             carried.transmissions.add(reductions[actuator.joint.name][1])
-    write_keyframe(document, tree, written)
+    write_keyframe(document, tree, written, initial_values(written))
     carried.sensors = write_sensors(document, worldbody, written, carried.partly)
     if overlay is not None:
         merge_overlay(document, read_overlay(overlay))

@@ -74,7 +74,8 @@ class Carried:
     """What the writer made of the blocks whose meaning depends on their content."""
 
     friction_links: set[str] = field(default_factory=set)
-    transmissions: set[int] = field(default_factory=set)  # numbers of the mapped ones
+    transmissions: set[Any] = field(default_factory=set)  # the mapped ones: a number, or
+    # (ros2_control block, element number) for one inside <ros2_control>
     interfaces: set[tuple[int, int]] = field(default_factory=set)  # (block, element number)
     sensors: set[str] = field(default_factory=set)  # names of the <sensor>s written
     partly: dict[str, str] = field(default_factory=dict)  # sensor -> what was left out
@@ -265,6 +266,15 @@ def _ros2_control(node: Any, losses: Losses) -> None:
     number, elements = _number(node), list(node.iter())
     for child in node:
         if not isinstance(child.tag, str):
+            continue
+        if child.tag == 'transmission':
+            if (number, elements.index(child)) not in losses.carried.transmissions:
+                joints = ', '.join(repr(joint.get('name')) for joint in child.findall('joint'))
+                losses.add('M805', child, owner, f'<transmission> maps to no actuator (joint '
+                           f'{joints or "none"} has no actuator in the MJCF)',
+                           'its mechanical_reduction becomes the gear of the joint\'s '
+                           'actuator: declare a command interface for the joint, or pass '
+                           '--actuators')
             continue
         if child.tag != 'joint':
             losses.add('M805', child, owner, f'<{child.tag}> has no MJCF counterpart '
