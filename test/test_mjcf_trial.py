@@ -208,3 +208,31 @@ def test_a_ros2_control_transmission_is_the_gear(tmp_path: Path) -> None:
     assert gears == {'j1_position': 2.0, 'j2_position': 4.0}
     assert list(model.actuator_ctrlrange[0]) == [-2.0, 2.0]  # actuator units, as classic
     assert 'transmission' not in output
+
+
+@pytest.mark.parametrize('option', [('--kp', '-5'), ('--kp', 'nan'), ('--kp', '0'),
+                                    ('--kv', '-3'), ('--kv', 'inf')])
+def test_a_bad_gain_is_refused_in_one_line(tmp_path: Path, option: tuple[str, str]) -> None:
+    source = tmp_path / 'robot.urdf'
+    source.write_text(_arm())
+    target = tmp_path / 'robot.xml'
+    result = CliRunner().invoke(main, ['convert', str(source), str(target), *option])
+    assert result.exit_code == 2 and option[0] in result.output, result.output
+    assert 'Traceback' not in result.output and not target.exists()
+
+
+@pytest.mark.parametrize('gains', [{'kp': -1.0}, {'kv': float('nan')}])
+def test_a_bad_gain_is_refused_by_the_api(gains: dict[str, float]) -> None:
+    from urdfgenpy_ros import Inertial, Joint, JointLimit, Link, Robot
+    from urdfgenpy_ros.errors import ModelError
+    robot = Robot('arm').add_link(Link('base_link')).add_link(
+        Link('a', inertial=Inertial.from_box(1.0, 0.1, 0.1, 0.1)))
+    robot.add_joint(Joint('j1', 'revolute', 'base_link', 'a', axis=(0, 0, 1),
+                          limit=JointLimit(-1, 1, effort=1, velocity=1)))
+    with pytest.raises(ModelError, match=next(iter(gains))):
+        robot.to_mjcf(**gains)
+
+
+def test_a_zero_kv_is_a_servo_without_damping(tmp_path: Path) -> None:
+    model, _ = _convert(tmp_path, _arm(), '--actuators', 'velocity', '--kv', '0')
+    assert model.nu == 1

@@ -34,7 +34,7 @@ import click
 
 from urdfgenpy_ros.cli.check_reports import FileReport, json_report, sarif_report
 from urdfgenpy_ros.errors import UrdfgenpyError
-from urdfgenpy_ros.formats.mjcf import BASES, MjcfRefusedError, write_mjcf
+from urdfgenpy_ros.formats.mjcf import BASES, gain_ok, MjcfRefusedError, write_mjcf
 from urdfgenpy_ros.formats.mjcf.actuators import ACTUATOR_TYPES
 from urdfgenpy_ros.robot import Robot
 
@@ -63,6 +63,15 @@ class MjcfOptions:
         return [flag for flag, on in flags.items() if on]
 
 
+def _gain(parameter: Any, value: float | None, positive: bool) -> float | None:
+    """Refuse a gain that is not finite, or below zero (``positive``: zero too)."""
+    if value is not None and not gain_ok(value, positive):
+        raise click.BadParameter(f'{value!r}: a finite number '
+                                 + ('above zero' if positive else 'of zero or more'),
+                                 param=parameter)
+    return value
+
+
 _OPTIONS = (
     click.option('--fuse-fixed', is_flag=True,
                  help='MJCF output: merge fixed-joint links into their parents (lumped '
@@ -73,9 +82,9 @@ _OPTIONS = (
     click.option('--actuators', type=click.Choice(ACTUATOR_TYPES),
                  help='MJCF output: this actuator on every joint, instead of the ones '
                       '<ros2_control> declares.'),
-    click.option('--kp', type=float,
+    click.option('--kp', type=float, callback=lambda c, p, v: _gain(p, v, True),
                  help="MJCF output: position actuators' gain (MuJoCo's default 1)."),
-    click.option('--kv', type=float,
+    click.option('--kv', type=float, callback=lambda c, p, v: _gain(p, v, False),
                  help="MJCF output: velocity actuators' gain (MuJoCo's default 1), and the "
                       "position actuators' damping."),
     click.option('--scene', is_flag=True,

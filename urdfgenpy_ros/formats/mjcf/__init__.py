@@ -142,6 +142,10 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
         raise ModelError(f'base {base!r}: use fixed or floating')
     if actuators not in (None, *ACTUATOR_TYPES):
         raise ModelError(f"actuators {actuators!r}: use {', '.join(ACTUATOR_TYPES)}")
+    for option, gain, least in (('kp', kp, 'above zero'), ('kv', kv, 'zero or more')):
+        if gain is not None and not gain_ok(gain, least == 'above zero'):
+            raise ModelError(f'{option}={gain!r}: a servo gain is a finite number, '
+                             f'{least} (N/m or Nm/rad per unit of error)')
     if len(robot.roots) != 1:
         raise ModelError(f'robot {robot.name!r} has {len(robot.roots)} root links: MJCF '
                          'needs one tree (urdfgenpy check says why)')
@@ -213,6 +217,12 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
         result.files = _write(Path(path), text, meshes, meshdir, scene, robot.name,
                               overwrite)
     return result
+
+
+def gain_ok(gain: float, positive: bool) -> bool:
+    """Return whether ``gain`` is a finite number above zero (or zero when not ``positive``)."""
+    import math
+    return math.isfinite(gain) and (gain > 0.0 if positive else gain >= 0.0)
 
 
 def _base_note(at_world: bool, base: str | None) -> str:
