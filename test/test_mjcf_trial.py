@@ -236,3 +236,18 @@ def test_a_bad_gain_is_refused_by_the_api(gains: dict[str, float]) -> None:
 def test_a_zero_kv_is_a_servo_without_damping(tmp_path: Path) -> None:
     model, _ = _convert(tmp_path, _arm(), '--actuators', 'velocity', '--kv', '0')
     assert model.nu == 1
+
+
+def test_strict_writes_nothing_and_reports_errors(tmp_path: Path) -> None:
+    import json
+    source = tmp_path / 'robot.urdf'
+    source.write_text(_arm())  # the velocity limit is lost (M801)
+    target = tmp_path / 'robot.xml'
+    result = CliRunner().invoke(main, ['convert', str(source), str(target), '--strict',
+                                       '--report', 'json'])
+    assert result.exit_code == 1 and not target.exists()
+    report = json.loads(result.stdout)
+    assert report['errors'] == 1 and report['warnings'] == 0
+    assert 'not written' in result.output and 'wrote' not in result.output
+    model, _ = _convert(tmp_path, _arm())  # without --strict: written, MuJoCo reads it
+    assert model.njnt == 1

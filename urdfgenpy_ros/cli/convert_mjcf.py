@@ -19,7 +19,8 @@
 The report lists what the MJCF cannot carry, one finding per element, in ``check``'s
 formats (``--report text|json|sarif`` on stderr, or stdout for JSON and SARIF); the
 choices the writer made (the base, the gains) follow as notes. ``--strict`` makes any
-loss an error: exit status 1, and the model is still written, so it can be looked at.
+loss an error: exit status 1, and nothing is written, as ``check --strict`` and
+``convert`` refuse elsewhere.
 """
 
 from __future__ import annotations
@@ -93,7 +94,8 @@ _OPTIONS = (
                  help='MJCF output: merge this MJCF file in by element name (gains, '
                       'contacts, sites, keyframes tuned by hand).'),
     click.option('--strict', is_flag=True,
-                 help='MJCF output: exit 1 when the MJCF cannot carry something.'),
+                 help='MJCF output: what the MJCF cannot carry is an error: exit 1, '
+                      'nothing written.'),
     click.option('--report', type=click.Choice(['text', 'json', 'sarif']), default='text',
                  show_default=True,
                  help="MJCF output: the loss report's format (JSON and SARIF on stdout)."),
@@ -126,7 +128,8 @@ def write_mjcf_file(robot: Robot, target: Path, options: MjcfOptions,
         result = write_mjcf(robot, target, fuse_fixed=options.fuse_fixed, base=options.base,
                             actuators=options.actuators, kp=options.kp, kv=options.kv,
                             scene=options.scene, overlay=options.overlay,
-                            search_paths=search_paths, overwrite=force)
+                            search_paths=search_paths, overwrite=force,
+                            strict=options.strict)
     except MjcfRefusedError as error:
         for finding in error.findings:
             click.echo(str(finding), err=True)
@@ -141,9 +144,14 @@ def write_mjcf_file(robot: Robot, target: Path, options: MjcfOptions,
             click.echo(str(finding), err=True)
     for note in result.notes:
         click.echo(f'{target}: note: {note}', err=True)
+    if options.strict and result.findings:
+        click.echo(f'{target} not written: {len(result.findings)} thing(s) the MJCF cannot '
+                   'carry, errors under --strict (without it, they are warnings and the '
+                   'model is written)', err=True)
+        return 1
     meshes = len(result.files) - 1 - int(options.scene)
     click.echo(f'wrote {target}: {len(robot.links)} links, {len(robot.joints)} joints'
                + (f', {meshes} mesh file(s)' if meshes else '')
                + (', scene.xml' if options.scene else '')
                + f'; {len(result.findings)} thing(s) the MJCF cannot carry', err=True)
-    return 1 if options.strict and result.findings else 0
+    return 0

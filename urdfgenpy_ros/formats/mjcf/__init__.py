@@ -31,7 +31,7 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import ModelError, UrdfgenpyError, ValidationError
+from urdfgenpy_ros.errors import ModelError, Severity, UrdfgenpyError, ValidationError
 from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats.mjcf.actuators import ACTUATOR_TYPES, declared_actuators, gears
 from urdfgenpy_ros.formats.mjcf.actuators import initial_values
@@ -93,7 +93,7 @@ def _refuse(robot: Robot, written: Robot, fuse_fixed: bool, floating: bool) -> N
                if finding.code in REFUSED]
     root = written.root
     if floating and root.name != WORLD and _welded_mass(written, root.name) < MINIMUM_MASS:
-        from urdfgenpy_ros.errors import Severity, SourceLocation
+        from urdfgenpy_ros.errors import SourceLocation
         refused.append(ValidationError(
             'I201', Severity.ERROR, f'link {root.name!r}',
             root.source or SourceLocation(path=f"/robot/link[@name='{root.name}']"),
@@ -121,7 +121,8 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
                actuators: str | None = None, kp: float | None = None,
                kv: float | None = None, scene: bool = False,
                overlay: str | PathLike[str] | None = None, meshdir: str = 'assets',
-               search_paths: Any = (), overwrite: bool = True) -> MjcfResult:
+               search_paths: Any = (), overwrite: bool = True,
+               strict: bool = False) -> MjcfResult:
     """
     Return the MJCF of ``robot``; with ``path``, write it, its meshes and ``scene.xml``.
 
@@ -133,7 +134,8 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     also damps the position servos);
     ``overlay`` is an MJCF file merged in by element name; ``meshdir`` the folder beside
     ``path`` the meshes go to; without ``overwrite``, a file there with other content is
-    refused before anything is written.
+    refused before anything is written. With ``strict``, each thing the MJCF cannot carry
+    is an error, and with any, nothing is written.
 
     :raises MjcfRefusedError: for a mass or tensor MuJoCo refuses, before writing.
     :raises ModelError: for a bad option or a mesh that cannot be found or read.
@@ -212,8 +214,12 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     findings = in_source(findings, robot)
     etree.indent(document, space='  ')
     text = etree.tostring(document, encoding='unicode') + '\n'
+    if strict:
+        findings = [ValidationError(finding.code, Severity.ERROR, finding.element,
+                                    finding.location, finding.message, finding.hint)
+                    for finding in findings]
     result = MjcfResult(text, findings, notes)
-    if path is not None:
+    if path is not None and not (strict and findings):
         result.files = _write(Path(path), text, meshes, meshdir, scene, robot.name,
                               overwrite)
     return result
