@@ -251,3 +251,22 @@ def test_strict_writes_nothing_and_reports_errors(tmp_path: Path) -> None:
     assert 'not written' in result.output and 'wrote' not in result.output
     model, _ = _convert(tmp_path, _arm())  # without --strict: written, MuJoCo reads it
     assert model.njnt == 1
+
+
+def test_the_refusal_advice_is_true(tmp_path: Path) -> None:
+    import mujoco
+    bad_tensor = INERTIAL.replace('izz="0.001"', 'izz="0.003"')  # A + B < C: MuJoCo refuses
+    source = tmp_path / 'tensor.urdf'
+    source.write_text(_arm().replace(f'<link name="a">{INERTIAL}',
+                                     f'<link name="a">{bad_tensor}'))
+    result = CliRunner().invoke(main, ['convert', str(source), str(tmp_path / 'a.xml')])
+    assert result.exit_code == 2 and 'urdfgenpy convert --fix' in result.output
+    fixed = CliRunner().invoke(main, ['convert', str(source), str(tmp_path / 'a.xml'),
+                                      '--fix'])  # the advice, followed: MuJoCo reads it
+    assert fixed.exit_code == 0, fixed.output
+    assert mujoco.MjModel.from_xml_path(str(tmp_path / 'a.xml')).nbody == 3
+    source.write_text(_arm().replace(f'<link name="a">{INERTIAL}', '<link name="a">'))
+    result = CliRunner().invoke(main, ['convert', str(source), str(tmp_path / 'b.xml')])
+    assert result.exit_code == 2 and 'I207' in result.output
+    assert '--fix' not in result.output  # it repairs no missing inertial
+    assert 'urdfgenpy inertia' in result.output

@@ -57,6 +57,7 @@ DEFAULT_KP = 1.0  # MuJoCo's own default for a position actuator
 DEFAULT_KV = 1.0  # and for a velocity actuator
 EXPANDED = ' (expanded)'
 REFUSED = ('I201', 'I202', 'I203', 'I207')  # what MuJoCo refuses to compile
+TENSORS = ('I202', 'I203')  # of these, what convert --fix repairs
 MINIMUM_MASS = 1e-15  # MuJoCo's mjMINVAL: a moving body needs this much
 
 
@@ -101,11 +102,26 @@ def _refuse(robot: Robot, written: Robot, fuse_fixed: bool, floating: bool) -> N
             'to it', 'give it a mass and inertia (Inertial.from_geometry), or keep the base '
             'fixed: MuJoCo refuses a massless moving body'))
     if refused:
-        fix = '' if fuse_fixed else ' (or pass fuse_fixed / --fuse-fixed if they are fixed links)'
         raise MjcfRefusedError(
             f'robot {robot.name!r}: MuJoCo refuses the mass or inertia of '
-            f'{len(refused)} link(s): fix them (urdfgenpy check --fix){fix}; nothing written',
+            f'{len(refused)} link(s): {_advice(refused, fuse_fixed)}; nothing written',
             refused)
+
+
+def _advice(refused: list[ValidationError], fuse_fixed: bool) -> str:
+    """Return what repairs the refused links: convert --fix for a tensor, else the URDF."""
+    tensors = sorted({finding.element for finding in refused if finding.code in TENSORS})
+    massless = sorted({finding.element for finding in refused
+                       if finding.code not in TENSORS})
+    said = []
+    if tensors:
+        said.append(f"urdfgenpy convert --fix repairs the tensor of {', '.join(tensors)}")
+    if massless:
+        said.append(f"give {', '.join(massless)} an <inertial> with a positive mass (urdfgenpy "
+                    'inertia MESH --mass KG prints one; Inertial.from_geometry in Python)'
+                    + ('' if fuse_fixed else ', or pass --fuse-fixed / fuse_fixed if they '
+                       'are fixed links'))
+    return '; '.join(said)
 
 
 def _welded_mass(robot: Robot, name: str) -> float:
