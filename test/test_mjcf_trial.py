@@ -270,3 +270,16 @@ def test_the_refusal_advice_is_true(tmp_path: Path) -> None:
     assert result.exit_code == 2 and 'I207' in result.output
     assert '--fix' not in result.output  # it repairs no missing inertial
     assert 'urdfgenpy inertia' in result.output
+
+
+def test_actuators_option_reports_only_the_interfaces_it_did_not_write(
+        tmp_path: Path) -> None:
+    model, output = _convert(tmp_path, _two_joints('''
+    <joint name="j1"><command_interface name="position"/>
+      <command_interface name="velocity"/></joint>
+    <joint name="j2"><command_interface name="position"/></joint>'''),
+        '--actuators', 'position')
+    names = {model.actuator(number).name for number in range(model.nu)}
+    assert names == {'j1_position', 'j2_position'}
+    lost = [line for line in output.splitlines() if 'M805' in line and 'interface' in line]
+    assert len(lost) == 1 and "'velocity' of joint 'j1'" in lost[0], lost

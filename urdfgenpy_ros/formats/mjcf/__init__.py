@@ -213,9 +213,13 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     write_actuators(document, chosen, *gains, servo_damping=kv)
     _note_gains(notes, chosen, kp, kv, gains)
     reductions = gears(written)
-    for actuator in chosen:
-        if actuator.origin is not None:
+    made = {(actuator.joint.name, actuator.kind) for actuator in chosen}
+    declared_ones = chosen if actuators is None else declared_actuators(written, None)
+    carried.replaced_by = actuators
+    for actuator in declared_ones:  # with --actuators, an interface of that kind is carried
+        if actuator.origin is not None and (actuator.joint.name, actuator.kind) in made:
             carried.interfaces.add(actuator.origin)
+    for actuator in chosen:
         if actuator.joint.name in reductions:
             carried.transmissions.add(reductions[actuator.joint.name][1])
     write_keyframe(document, tree, written, initial_values(written))

@@ -85,6 +85,7 @@ class Carried:
     followers: set[str] = field(default_factory=set)
     links: set[str] = field(default_factory=set)
     mimics: set[str] = field(default_factory=set)  # followers written as equalities
+    replaced_by: str | None = None  # the actuators option that replaced the declared ones
     world_root: bool = False  # the root link is 'world': MuJoCo's world body, no inertial
     mujoco_check: Callable[[Any], list[tuple[str, str]]] | None = None
 
@@ -286,9 +287,12 @@ def _ros2_control(node: Any, losses: Losses) -> None:
                 continue  # state interfaces: MuJoCo's joint state; params: read with them
             if (number, elements.index(interface)) in losses.carried.interfaces or follower:
                 continue
+            replaced = losses.carried.replaced_by
             losses.add('M805', interface, owner, 'command interface '
                        f"{interface.get('name')!r} of joint {child.get('name')!r} became no "
-                       'actuator')
+                       'actuator' + (f' (--actuators / actuators={replaced!r} put a '
+                                     f'{replaced} actuator on every joint instead)'
+                                     if replaced else ''))
 
 
 def _mujoco(node: Any, losses: Losses) -> None:
