@@ -283,3 +283,13 @@ def test_actuators_option_reports_only_the_interfaces_it_did_not_write(
     assert names == {'j1_position', 'j2_position'}
     lost = [line for line in output.splitlines() if 'M805' in line and 'interface' in line]
     assert len(lost) == 1 and "'velocity' of joint 'j1'" in lost[0], lost
+
+
+def test_unequal_mu1_mu2_says_mu1_is_the_friction_and_mu2_is_lost(tmp_path: Path) -> None:
+    model, output = _convert(tmp_path, _arm(
+        '<collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision>',
+        '<gazebo reference="a"><mu1>0.9</mu1><mu2>0.4</mu2></gazebo>'))
+    assert model.geom_friction[0][0] == 0.9  # mu1 is MuJoCo's sliding friction
+    lost = [line for line in output.splitlines() if '<mu' in line]
+    assert len(lost) == 1 and 'M806' in lost[0] and '<mu2> 0.4 is not carried' in lost[0]
+    assert '<mu1> 0.9 is it' in lost[0]

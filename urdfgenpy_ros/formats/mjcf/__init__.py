@@ -198,7 +198,8 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
                       links={link.name for link in robot.links},
                       mujoco_check=check_attributes, world_root=at_world,
                       friction_links={link for link, value in declared.items()
-                                      if value.isotropic})
+                                      if value.isotropic},
+                      friction_written=set(declared))
     from urdfgenpy_ros.formats.urdf import write_urdf
     urdf = etree.fromstring(write_urdf(robot).encode('utf-8'),
                             etree.XMLParser(huge_tree=True, resolve_entities=False,

@@ -73,7 +73,8 @@ HINTS = {
 class Carried:
     """What the writer made of the blocks whose meaning depends on their content."""
 
-    friction_links: set[str] = field(default_factory=set)
+    friction_links: set[str] = field(default_factory=set)  # mu1 (and an equal mu2) carried
+    friction_written: set[str] = field(default_factory=set)  # links given mu1 as friction
     transmissions: set[Any] = field(default_factory=set)  # the mapped ones: a number, or
     # (ros2_control block, element number) for one inside <ros2_control>
     interfaces: set[tuple[int, int]] = field(default_factory=set)  # (block, element number)
@@ -235,6 +236,13 @@ def _gazebo(node: Any, losses: Losses) -> None:
         if not isinstance(child.tag, str):
             continue
         if child.tag in ('mu1', 'mu2') and reference in losses.carried.friction_links:
+            continue
+        if child.tag == 'mu1' and reference in losses.carried.friction_written:
+            continue
+        if child.tag == 'mu2' and reference in losses.carried.friction_written:
+            losses.add('M806', child, owner, f'<mu2> {(child.text or "").strip()} is not '
+                       "carried: MuJoCo's sliding friction is one number for both "
+                       f"directions, and <mu1> {(node.findtext('mu1') or '').strip()} is it")
             continue
         if child.tag in ('preserveFixedJoint', 'disableFixedJointLumping'):
             continue  # honoured when fixed links are fused
