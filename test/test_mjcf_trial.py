@@ -293,3 +293,16 @@ def test_unequal_mu1_mu2_says_mu1_is_the_friction_and_mu2_is_lost(tmp_path: Path
     lost = [line for line in output.splitlines() if '<mu' in line]
     assert len(lost) == 1 and 'M806' in lost[0] and '<mu2> 0.4 is not carried' in lost[0]
     assert '<mu1> 0.9 is it' in lost[0]
+
+
+def test_the_gain_note_says_what_the_overlay_set(tmp_path: Path) -> None:
+    overlay = tmp_path / 'overlay.xml'
+    overlay.write_text('<mujoco><actuator><position name="j1_position" kp="300"/>'
+                       '<position name="j2_position" kp="300"/></actuator></mujoco>')
+    model, output = _convert(tmp_path, _two_joints(
+        '<joint name="j1"><command_interface name="position"/></joint>'
+        '<joint name="j2"><command_interface name="position"/></joint>'),
+        '--overlay', str(overlay))
+    assert list(model.actuator_gainprm[:, 0]) == [300.0, 300.0]
+    note = [line for line in output.splitlines() if 'position actuators:' in line]
+    assert len(note) == 1 and 'kp=300' in note[0] and 'kp=1 ' not in note[0], note

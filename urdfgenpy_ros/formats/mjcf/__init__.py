@@ -212,7 +212,6 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     chosen = declared_actuators(written, actuators)
     gains = (kp if kp is not None else DEFAULT_KP, kv if kv is not None else DEFAULT_KV)
     write_actuators(document, chosen, *gains, servo_damping=kv)
-    _note_gains(notes, chosen, kp, kv, gains)
     reductions = gears(written)
     made = {(actuator.joint.name, actuator.kind) for actuator in chosen}
     declared_ones = chosen if actuators is None else declared_actuators(written, None)
@@ -227,6 +226,7 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     carried.sensors = write_sensors(document, worldbody, written, carried.partly)
     if overlay is not None:
         merge_overlay(document, read_overlay(overlay))
+    _note_gains(notes, document, kp, kv, gains)
     notes.append(write_excludes(document, meshes.contents(),
                                 meshdir if path is not None else None))
     file = robot.source.file if robot.source is not None else None
@@ -285,15 +285,23 @@ def _skeleton(name: str, base: str, fuse_fixed: bool, meshdir: str | None) -> An
     return document
 
 
-def _note_gains(notes: list[str], chosen: list[Any], kp: float | None, kv: float | None,
+def _note_gains(notes: list[str], document: Any, kp: float | None, kv: float | None,
                 gains: tuple[float, float]) -> None:
-    kinds = {actuator.kind for actuator in chosen}
+    """Say each servo kind's gain, as the model has it (an overlay may have set it)."""
+    section = document.find('actuator')
     for kind, given, value, option in (('position', kp, gains[0], 'kp'),
                                        ('velocity', kv, gains[1], 'kv')):
-        if kind in kinds:
-            said = ('given' if given is not None
-                    else f"MuJoCo's default: set {option}= / --{option}")
-            notes.append(f'{kind} actuators: {option}={fmt(value)} ({said})')
+        found = [element.get(option) for element in
+                 (section.iter(kind) if section is not None else ())]
+        if not found:
+            continue
+        if set(found) != {fmt(value)}:
+            values = ', '.join(sorted({text or "MuJoCo's default" for text in found}))
+            notes.append(f'{kind} actuators: {option}={values} (the overlay sets them)')
+            continue
+        said = ('given' if given is not None
+                else f"MuJoCo's default: set {option}= / --{option}")
+        notes.append(f'{kind} actuators: {option}={fmt(value)} ({said})')
 
 
 def _write(path: Path, text: str, meshes: MeshAssets, meshdir: str, scene: bool,
