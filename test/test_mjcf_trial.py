@@ -306,3 +306,19 @@ def test_the_gain_note_says_what_the_overlay_set(tmp_path: Path) -> None:
     assert list(model.actuator_gainprm[:, 0]) == [300.0, 300.0]
     note = [line for line in output.splitlines() if 'position actuators:' in line]
     assert len(note) == 1 and 'kp=300' in note[0] and 'kp=1 ' not in note[0], note
+
+
+def test_the_api_warnings_point_at_the_callers_line(tmp_path: Path) -> None:
+    import warnings
+    from urdfgenpy_ros.formats import load
+    source = tmp_path / 'robot.urdf'
+    source.write_text(_arm())  # the velocity limit is lost (M801)
+    robot = load(source)
+    for write in (lambda: robot.to_mjcf(), lambda: robot.save(tmp_path / 'robot.xml')):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter('always')
+            write()
+        assert [Path(warning.filename).name for warning in caught] == [Path(__file__).name]
+        assert 'M801' in str(caught[0].message)
+    import mujoco
+    assert mujoco.MjModel.from_xml_path(str(tmp_path / 'robot.xml')).njnt == 1
