@@ -43,13 +43,13 @@ INERTIAL = ('<inertial><mass value="0.5"/><inertia ixx="0.001" iyy="0.001" izz="
 
 def _arm(body: str = '', extra: str = '') -> str:
     """Return a two-link arm's URDF with ``body`` in link 'a' and ``extra`` in the robot."""
-    return f'''<robot name="arm">
+    return f"""<robot name="arm">
   <link name="base_link">{INERTIAL}</link>
   <link name="a">{body}{INERTIAL}</link>
   <joint name="j1" type="revolute"><parent link="base_link"/><child link="a"/>
     <axis xyz="0 0 1"/><limit lower="-2" upper="2" effort="10" velocity="1"/></joint>
 {extra}</robot>
-'''
+"""
 
 
 @pytest.mark.parametrize('content', [b'', b'solid x\nendsolid x\n', b'\0' * 84],
@@ -101,7 +101,7 @@ def _gripper_arm() -> str:
                 f'<child link="{name}"/><origin xyz="0 {side * 0.01} 0.3"/>'
                 f'<axis xyz="0 {side} 0"/><limit lower="0" upper="0.04" effort="20" '
                 'velocity="0.1"/></joint>')
-    return f'''<robot name="gripper_arm">
+    return f"""<robot name="gripper_arm">
   {link("base_link", _box("0.2 0.2 0.2"))}
   {link("shoulder", _box("0.1 0.1 0.3", "0 0 0.1"))}
   {link("hand", _box("0.1 0.1 0.1", "0 0 0.25"))}
@@ -116,7 +116,7 @@ def _gripper_arm() -> str:
   {finger("left", 1)}
   {finger("right", -1)}
 </robot>
-'''
+"""
 
 
 def test_no_self_collision_at_home_and_the_fingers_stay_in_range(tmp_path: Path) -> None:
@@ -149,7 +149,7 @@ def test_no_self_collision_at_home_and_the_fingers_stay_in_range(tmp_path: Path)
 
 def _two_joints(control: str) -> str:
     """Return a chain of two revolute joints (limits +-2) and the ``control`` block."""
-    return f'''<robot name="pair">
+    return f"""<robot name="pair">
   <link name="base_link">{INERTIAL}</link>
   <link name="a">{INERTIAL}</link>
   <link name="b">{INERTIAL}</link>
@@ -163,7 +163,7 @@ def _two_joints(control: str) -> str:
 {control}
   </ros2_control>
 </robot>
-'''
+"""
 
 
 def _convert(tmp_path: Path, text: str, *options: str) -> tuple[object, str]:
@@ -179,19 +179,19 @@ def _convert(tmp_path: Path, text: str, *options: str) -> tuple[object, str]:
 
 def test_ros2_control_initial_value_is_the_home_pose(tmp_path: Path) -> None:
     import mujoco
-    model, _ = _convert(tmp_path, _two_joints('''
+    model, _ = _convert(tmp_path, _two_joints("""
     <joint name="j1"><command_interface name="position"/>
       <state_interface name="position"><param name="initial_value">-1.57</param>
       </state_interface></joint>
     <joint name="j2"><param name="initial_value">5.0</param>
-      <command_interface name="position"/><state_interface name="position"/></joint>'''))
+      <command_interface name="position"/><state_interface name="position"/></joint>"""))
     data = mujoco.MjData(model)
     mujoco.mj_resetDataKeyframe(model, data, model.key('home').id)
     assert list(data.qpos) == [-1.57, 2.0]  # the second clamped to its upper limit
 
 
 def test_a_ros2_control_transmission_is_the_gear(tmp_path: Path) -> None:
-    model, output = _convert(tmp_path, _two_joints('''
+    model, output = _convert(tmp_path, _two_joints("""
     <joint name="j1"><command_interface name="position">
       <param name="min">-1</param><param name="max">1</param></command_interface></joint>
     <joint name="j2"><command_interface name="position"/></joint>
@@ -202,7 +202,7 @@ def test_a_ros2_control_transmission_is_the_gear(tmp_path: Path) -> None:
     <transmission name="t2"><plugin>transmission_interface/SimpleTransmission</plugin>
       <actuator name="a2" role="a2"><mechanical_reduction>4.0</mechanical_reduction>
       </actuator><joint name="j2" role="j2"/>
-    </transmission>'''))
+    </transmission>"""))
     gears = {model.actuator(number).name: model.actuator_gear[number][0]
              for number in range(model.nu)}
     assert gears == {'j1_position': 2.0, 'j2_position': 4.0}
@@ -274,11 +274,11 @@ def test_the_refusal_advice_is_true(tmp_path: Path) -> None:
 
 def test_actuators_option_reports_only_the_interfaces_it_did_not_write(
         tmp_path: Path) -> None:
-    model, output = _convert(tmp_path, _two_joints('''
+    control = """
     <joint name="j1"><command_interface name="position"/>
       <command_interface name="velocity"/></joint>
-    <joint name="j2"><command_interface name="position"/></joint>'''),
-        '--actuators', 'position')
+    <joint name="j2"><command_interface name="position"/></joint>"""
+    model, output = _convert(tmp_path, _two_joints(control), '--actuators', 'position')
     names = {model.actuator(number).name for number in range(model.nu)}
     assert names == {'j1_position', 'j2_position'}
     lost = [line for line in output.splitlines() if 'M805' in line and 'interface' in line]

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from pathlib import Path
 import sys
+from types import FrameType
 import warnings
 
 PACKAGE = str(Path(__file__).resolve().parent)
@@ -26,7 +27,8 @@ PACKAGE = str(Path(__file__).resolve().parent)
 
 def warn_caller(message: str) -> None:
     """Issue ``message`` as a ``UserWarning`` at the first caller outside this package."""
-    level, frame = 2, sys._getframe(1)  # 2: the frame that called this function
+    level = 2  # the frame that called this function
+    frame: FrameType | None = sys._getframe(1)
     while frame is not None and str(Path(frame.f_code.co_filename).resolve()).startswith(
             PACKAGE):
         level, frame = level + 1, frame.f_back

@@ -281,7 +281,7 @@ def _ros2_control(node: Any, losses: Losses) -> None:
                 joints = ', '.join(repr(joint.get('name')) for joint in child.findall('joint'))
                 losses.add('M805', child, owner, f'<transmission> maps to no actuator (joint '
                            f'{joints or "none"} has no actuator in the MJCF)',
-                           'its mechanical_reduction becomes the gear of the joint\'s '
+                           "its mechanical_reduction becomes the gear of the joint's "
                            'actuator: declare a command interface for the joint, or pass '
                            '--actuators')
             continue
