@@ -57,7 +57,7 @@ def diverges(model, steps: int = 1000) -> bool:
 
 
 def assert_no_contact_at_home(model) -> None:
-    """MuJoCo finds no contact at the ``home`` keyframe (the robot alone, no floor)."""
+    """Check that MuJoCo finds no contact at the ``home`` keyframe (the robot alone)."""
     import mujoco
     data = mujoco.MjData(model)
     if model.nkey:
