@@ -56,6 +56,18 @@ def diverges(model, steps: int = 1000) -> bool:
         numpy.all(numpy.isfinite(data.qpos)) and numpy.all(numpy.isfinite(data.qvel)))
 
 
+def assert_no_contact_at_home(model) -> None:
+    """Check that MuJoCo finds no contact at the ``home`` keyframe (the robot alone)."""
+    import mujoco
+    data = mujoco.MjData(model)
+    if model.nkey:
+        mujoco.mj_resetDataKeyframe(model, data, model.key('home').id)
+    mujoco.mj_forward(model, data)
+    assert data.ncon == 0, sorted({(model.body(model.geom_bodyid[c.geom1]).name,
+                                    model.body(model.geom_bodyid[c.geom2]).name)
+                                   for c in data.contact[:data.ncon]})
+
+
 def assert_steps_finite(model, steps: int = 1000) -> None:
     """Step ``steps`` times with zero control from the model's initial state; all stays finite."""
     import mujoco

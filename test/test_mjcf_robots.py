@@ -133,6 +133,7 @@ def _judge(path: Path, search_paths: list, fuse: bool, tmp_path: Path) -> None:
         assert not target.exists() and _mujoco_import_refuses(robot)
         return
     model = mjcf_judge.compile_mjcf(target)
+    mjcf_judge.assert_no_contact_at_home(model)  # self-collisions excluded as MuJoCo finds
     if mjcf_judge.diverges(model):  # the robot's own physics: MuJoCo's import diverges too
         assert mjcf_judge.diverges(_mujoco_import(robot, path))
     urdf = _urdf_for_judges(path, robot, tmp_path)

@@ -628,12 +628,13 @@ class Robot:
 
         Options: ``fuse_fixed``, ``base`` ('fixed' or 'floating'), ``actuators``
         ('position', 'velocity', 'motor'), ``kp``, ``kv``, ``scene``, ``overlay``,
-        ``meshdir``, ``search_paths`` (see :func:`urdfgenpy_ros.formats.mjcf.write_mjcf`).
+        ``meshdir``, ``search_paths``, ``strict`` (see
+        :func:`urdfgenpy_ros.formats.mjcf.write_mjcf`).
         Each thing the MJCF cannot carry is a ``UserWarning`` in ``check``'s format.
         """
-        import warnings
+        from urdfgenpy_ros.caller import warn_caller
         from urdfgenpy_ros.formats.mjcf import write_mjcf
         result = write_mjcf(self, path, **options)
         for finding in result.findings:
-            warnings.warn(str(finding), stacklevel=2)
+            warn_caller(str(finding))
         return result.text

@@ -78,7 +78,7 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     (.assembly.yaml); TARGET is .urdf, .xacro or .sdf, or MuJoCo's .xml/.mjcf. An SDF or
     MJCF that the engine would refuse (a link's inertia) is not written: exit status 2,
     one line per link. MJCF: what it cannot carry is reported, one line each (--strict:
-    exit status 1); its meshes go to assets/ beside it.
+    errors, exit status 1, nothing written); its meshes go to assets/ beside it.
     """
     kind = format_of(target)
     if kind != 'mjcf' and mjcf.given():

@@ -19,7 +19,8 @@
 The report lists what the MJCF cannot carry, one finding per element, in ``check``'s
 formats (``--report text|json|sarif`` on stderr, or stdout for JSON and SARIF); the
 choices the writer made (the base, the gains) follow as notes. ``--strict`` makes any
-loss an error: exit status 1, and the model is still written, so it can be looked at.
+loss an error: exit status 1, and nothing is written, as ``check --strict`` and
+``convert`` refuse elsewhere.
 """
 
 from __future__ import annotations
@@ -34,7 +35,7 @@ import click
 
 from urdfgenpy_ros.cli.check_reports import FileReport, json_report, sarif_report
 from urdfgenpy_ros.errors import UrdfgenpyError
-from urdfgenpy_ros.formats.mjcf import BASES, MjcfRefusedError, write_mjcf
+from urdfgenpy_ros.formats.mjcf import BASES, gain_ok, MjcfRefusedError, write_mjcf
 from urdfgenpy_ros.formats.mjcf.actuators import ACTUATOR_TYPES
 from urdfgenpy_ros.robot import Robot
 
@@ -63,6 +64,15 @@ class MjcfOptions:
         return [flag for flag, on in flags.items() if on]
 
 
+def _gain(parameter: Any, value: float | None, positive: bool) -> float | None:
+    """Refuse a gain that is not finite, or below zero (``positive``: zero too)."""
+    if value is not None and not gain_ok(value, positive):
+        raise click.BadParameter(f'{value!r}: a finite number '
+                                 + ('above zero' if positive else 'of zero or more'),
+                                 param=parameter)
+    return value
+
+
 _OPTIONS = (
     click.option('--fuse-fixed', is_flag=True,
                  help='MJCF output: merge fixed-joint links into their parents (lumped '
@@ -73,9 +83,9 @@ _OPTIONS = (
     click.option('--actuators', type=click.Choice(ACTUATOR_TYPES),
                  help='MJCF output: this actuator on every joint, instead of the ones '
                       '<ros2_control> declares.'),
-    click.option('--kp', type=float,
+    click.option('--kp', type=float, callback=lambda c, p, v: _gain(p, v, True),
                  help="MJCF output: position actuators' gain (MuJoCo's default 1)."),
-    click.option('--kv', type=float,
+    click.option('--kv', type=float, callback=lambda c, p, v: _gain(p, v, False),
                  help="MJCF output: velocity actuators' gain (MuJoCo's default 1), and the "
                       "position actuators' damping."),
     click.option('--scene', is_flag=True,
@@ -84,7 +94,8 @@ _OPTIONS = (
                  help='MJCF output: merge this MJCF file in by element name (gains, '
                       'contacts, sites, keyframes tuned by hand).'),
     click.option('--strict', is_flag=True,
-                 help='MJCF output: exit 1 when the MJCF cannot carry something.'),
+                 help='MJCF output: what the MJCF cannot carry is an error: exit 1, '
+                      'nothing written.'),
     click.option('--report', type=click.Choice(['text', 'json', 'sarif']), default='text',
                  show_default=True,
                  help="MJCF output: the loss report's format (JSON and SARIF on stdout)."),
@@ -117,7 +128,8 @@ def write_mjcf_file(robot: Robot, target: Path, options: MjcfOptions,
         result = write_mjcf(robot, target, fuse_fixed=options.fuse_fixed, base=options.base,
                             actuators=options.actuators, kp=options.kp, kv=options.kv,
                             scene=options.scene, overlay=options.overlay,
-                            search_paths=search_paths, overwrite=force)
+                            search_paths=search_paths, overwrite=force,
+                            strict=options.strict)
     except MjcfRefusedError as error:
         for finding in error.findings:
             click.echo(str(finding), err=True)
@@ -132,9 +144,14 @@ def write_mjcf_file(robot: Robot, target: Path, options: MjcfOptions,
             click.echo(str(finding), err=True)
     for note in result.notes:
         click.echo(f'{target}: note: {note}', err=True)
+    if options.strict and result.findings:
+        click.echo(f'{target} not written: {len(result.findings)} thing(s) the MJCF cannot '
+                   'carry, errors under --strict (without it, they are warnings and the '
+                   'model is written)', err=True)
+        return 1
     meshes = len(result.files) - 1 - int(options.scene)
     click.echo(f'wrote {target}: {len(robot.links)} links, {len(robot.joints)} joints'
                + (f', {meshes} mesh file(s)' if meshes else '')
                + (', scene.xml' if options.scene else '')
                + f'; {len(result.findings)} thing(s) the MJCF cannot carry', err=True)
-    return 1 if options.strict and result.findings else 0
+    return 0

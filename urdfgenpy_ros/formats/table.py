@@ -126,11 +126,11 @@ def _write_sdf(robot: Robot, path: PathArg, **options: Any) -> str:
 
 
 def _write_mjcf(robot: Robot, path: PathArg, **options: Any) -> str:
-    import warnings
+    from urdfgenpy_ros.caller import warn_caller
     from urdfgenpy_ros.formats.mjcf import write_mjcf
     result = write_mjcf(robot, path, **options)
     for finding in result.findings:
-        warnings.warn(str(finding), stacklevel=3)
+        warn_caller(str(finding))
     return result.text
 
 
@@ -142,7 +142,7 @@ FORMATS: tuple[Format, ...] = (
            not_read='reading SDF is not supported (convert from URDF or Xacro)'),
     Format('mjcf', ('.xml', '.mjcf'), 'MuJoCo MJCF', None, _write_mjcf,
            ('fuse_fixed', 'base', 'actuators', 'kp', 'kv', 'scene', 'overlay', 'meshdir',
-            'search_paths', 'overwrite'),
+            'search_paths', 'overwrite', 'strict'),
            not_read='reading MJCF is not supported: urdfgenpy writes it (a URDF or Xacro '
                     'file named .xml: rename it .urdf or .urdf.xacro)'),
     Format('assembly', ('.assembly.yaml', '.assembly.yml'), 'assembly file',

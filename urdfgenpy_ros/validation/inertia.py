@@ -68,8 +68,9 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
                 findings.add('I207', link, element, link_path(link.name),
                              f'moves ({joint.type} joint {joint.name!r}) but has no '
                              '<inertial>', f'RViz does not mind; {dropped}, and MuJoCo '
-                             'refuses it: give it a mass and inertia (Inertial.from_geometry)'
-                             )
+                             'refuses it: give it a mass and inertia (urdfgenpy inertia MESH '
+                             '--mass KG prints the <inertial> of its mesh; '
+                             'Inertial.from_geometry in Python)')
             elif joint is not None and moving_below.get(link.name, False):
                 findings.add('I206', link, element, link_path(link.name),
                              'has no <inertial>', f'{dropped}: give it a mass and inertia')

@@ -31,13 +31,15 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import ModelError, UrdfgenpyError, ValidationError
+from urdfgenpy_ros.errors import ModelError, Severity, UrdfgenpyError, ValidationError
 from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats.mjcf.actuators import ACTUATOR_TYPES, declared_actuators, gears
+from urdfgenpy_ros.formats.mjcf.actuators import initial_values
 from urdfgenpy_ros.formats.mjcf.actuators import write_actuators
 from urdfgenpy_ros.formats.mjcf.blocks import (
     apply_block, check_attributes, merge_overlay, read_overlay)
 from urdfgenpy_ros.formats.mjcf.bodies import BodyWriter, WORLD
+from urdfgenpy_ros.formats.mjcf.contacts import write_excludes
 from urdfgenpy_ros.formats.mjcf.friction import declared_friction
 from urdfgenpy_ros.formats.mjcf.fusing import fused
 from urdfgenpy_ros.formats.mjcf.keyframe import write_keyframe
@@ -55,6 +57,7 @@ DEFAULT_KP = 1.0  # MuJoCo's own default for a position actuator
 DEFAULT_KV = 1.0  # and for a velocity actuator
 EXPANDED = ' (expanded)'
 REFUSED = ('I201', 'I202', 'I203', 'I207')  # what MuJoCo refuses to compile
+TENSORS = ('I202', 'I203')  # of these, what convert --fix repairs
 MINIMUM_MASS = 1e-15  # MuJoCo's mjMINVAL: a moving body needs this much
 
 
@@ -91,7 +94,7 @@ def _refuse(robot: Robot, written: Robot, fuse_fixed: bool, floating: bool) -> N
                if finding.code in REFUSED]
     root = written.root
     if floating and root.name != WORLD and _welded_mass(written, root.name) < MINIMUM_MASS:
-        from urdfgenpy_ros.errors import Severity, SourceLocation
+        from urdfgenpy_ros.errors import SourceLocation
         refused.append(ValidationError(
             'I201', Severity.ERROR, f'link {root.name!r}',
             root.source or SourceLocation(path=f"/robot/link[@name='{root.name}']"),
@@ -99,11 +102,26 @@ def _refuse(robot: Robot, written: Robot, fuse_fixed: bool, floating: bool) -> N
             'to it', 'give it a mass and inertia (Inertial.from_geometry), or keep the base '
             'fixed: MuJoCo refuses a massless moving body'))
     if refused:
-        fix = '' if fuse_fixed else ' (or pass fuse_fixed / --fuse-fixed if they are fixed links)'
         raise MjcfRefusedError(
             f'robot {robot.name!r}: MuJoCo refuses the mass or inertia of '
-            f'{len(refused)} link(s): fix them (urdfgenpy check --fix){fix}; nothing written',
+            f'{len(refused)} link(s): {_advice(refused, fuse_fixed)}; nothing written',
             refused)
+
+
+def _advice(refused: list[ValidationError], fuse_fixed: bool) -> str:
+    """Return what repairs the refused links: convert --fix for a tensor, else the URDF."""
+    tensors = sorted({finding.element for finding in refused if finding.code in TENSORS})
+    massless = sorted({finding.element for finding in refused
+                       if finding.code not in TENSORS})
+    said = []
+    if tensors:
+        said.append(f"urdfgenpy convert --fix repairs the tensor of {', '.join(tensors)}")
+    if massless:
+        said.append(f"give {', '.join(massless)} an <inertial> with a positive mass (urdfgenpy "
+                    'inertia MESH --mass KG prints one; Inertial.from_geometry in Python)'
+                    + ('' if fuse_fixed else ', or pass --fuse-fixed / fuse_fixed if they '
+                       'are fixed links'))
+    return '; '.join(said)
 
 
 def _welded_mass(robot: Robot, name: str) -> float:
@@ -119,7 +137,8 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
                actuators: str | None = None, kp: float | None = None,
                kv: float | None = None, scene: bool = False,
                overlay: str | PathLike[str] | None = None, meshdir: str = 'assets',
-               search_paths: Any = (), overwrite: bool = True) -> MjcfResult:
+               search_paths: Any = (), overwrite: bool = True,
+               strict: bool = False) -> MjcfResult:
     """
     Return the MJCF of ``robot``; with ``path``, write it, its meshes and ``scene.xml``.
 
@@ -131,7 +150,8 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     also damps the position servos);
     ``overlay`` is an MJCF file merged in by element name; ``meshdir`` the folder beside
     ``path`` the meshes go to; without ``overwrite``, a file there with other content is
-    refused before anything is written.
+    refused before anything is written. With ``strict``, each thing the MJCF cannot carry
+    is an error, and with any, nothing is written.
 
     :raises MjcfRefusedError: for a mass or tensor MuJoCo refuses, before writing.
     :raises ModelError: for a bad option or a mesh that cannot be found or read.
@@ -140,6 +160,10 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
         raise ModelError(f'base {base!r}: use fixed or floating')
     if actuators not in (None, *ACTUATOR_TYPES):
         raise ModelError(f"actuators {actuators!r}: use {', '.join(ACTUATOR_TYPES)}")
+    for option, gain, least in (('kp', kp, 'above zero'), ('kv', kv, 'zero or more')):
+        if gain is not None and not gain_ok(gain, least == 'above zero'):
+            raise ModelError(f'{option}={gain!r}: a servo gain is a finite number, '
+                             f'{least} (N/m or Nm/rad per unit of error)')
     if len(robot.roots) != 1:
         raise ModelError(f'robot {robot.name!r} has {len(robot.roots)} root links: MJCF '
                          'needs one tree (urdfgenpy check says why)')
@@ -174,7 +198,8 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
                       links={link.name for link in robot.links},
                       mujoco_check=check_attributes, world_root=at_world,
                       friction_links={link for link, value in declared.items()
-                                      if value.isotropic})
+                                      if value.isotropic},
+                      friction_written=set(declared))
     from urdfgenpy_ros.formats.urdf import write_urdf
     urdf = etree.fromstring(write_urdf(robot).encode('utf-8'),
                             etree.XMLParser(huge_tree=True, resolve_entities=False,
@@ -187,28 +212,38 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     chosen = declared_actuators(written, actuators)
     gains = (kp if kp is not None else DEFAULT_KP, kv if kv is not None else DEFAULT_KV)
     write_actuators(document, chosen, *gains, servo_damping=kv)
-    _note_gains(notes, chosen, kp, kv, gains)
     reductions = gears(written)
-    for actuator in chosen:
-        if actuator.origin is not None:
+    made = {(actuator.joint.name, actuator.kind) for actuator in chosen}
+    declared_ones = chosen if actuators is None else declared_actuators(written, None)
+    carried.replaced_by = actuators
+    for actuator in declared_ones:  # with --actuators, an interface of that kind is carried
+        if actuator.origin is not None and (actuator.joint.name, actuator.kind) in made:
             carried.interfaces.add(actuator.origin)
+    for actuator in chosen:
         if actuator.joint.name in reductions:
             carried.transmissions.add(reductions[actuator.joint.name][1])
-    write_keyframe(document, tree, written)
+    write_keyframe(document, tree, written, initial_values(written))
     carried.sensors = write_sensors(document, worldbody, written, carried.partly)
     if overlay is not None:
         merge_overlay(document, read_overlay(overlay))
+    _note_gains(notes, document, kp, kv, gains)
     _simulate(document, notes, {actuator.kind for actuator in chosen}, kv is not None,
               (scene and path is not None and taken == 'floating' and not at_world)
               and (robot.root.name, meshes, meshdir))
+    notes.append(write_excludes(document, meshes.contents(),
+                                meshdir if path is not None else None))
     file = robot.source.file if robot.source is not None else None
     findings = find_losses(robot, urdf, file, carried)
     from urdfgenpy_ros.validation.xacro_source import in_source
     findings = in_source(findings, robot)
     etree.indent(document, space='  ')
     text = etree.tostring(document, encoding='unicode') + '\n'
+    if strict:
+        findings = [ValidationError(finding.code, Severity.ERROR, finding.element,
+                                    finding.location, finding.message, finding.hint)
+                    for finding in findings]
     result = MjcfResult(text, findings, notes)
-    if path is not None:
+    if path is not None and not (strict and findings):
         result.files = _write(Path(path), text, meshes, meshdir, scene, robot.name,
                               overwrite)
     return result
@@ -226,6 +261,12 @@ def _simulate(document: Any, notes: list[str], kinds: set[str], servo_damping: b
         notes.append(note)
         comment = document[0]
         comment.text = f"{comment.text}{note.replace('--', '- -')}. "
+
+
+def gain_ok(gain: float, positive: bool) -> bool:
+    """Return whether ``gain`` is a finite number above zero (or zero when not ``positive``)."""
+    import math
+    return math.isfinite(gain) and (gain > 0.0 if positive else gain >= 0.0)
 
 
 def _base_note(at_world: bool, base: str | None) -> str:
@@ -261,15 +302,23 @@ def _skeleton(name: str, base: str, fuse_fixed: bool, meshdir: str | None) -> An
     return document
 
 
-def _note_gains(notes: list[str], chosen: list[Any], kp: float | None, kv: float | None,
+def _note_gains(notes: list[str], document: Any, kp: float | None, kv: float | None,
                 gains: tuple[float, float]) -> None:
-    kinds = {actuator.kind for actuator in chosen}
+    """Say each servo kind's gain, as the model has it (an overlay may have set it)."""
+    section = document.find('actuator')
     for kind, given, value, option in (('position', kp, gains[0], 'kp'),
                                        ('velocity', kv, gains[1], 'kv')):
-        if kind in kinds:
-            said = ('given' if given is not None
-                    else f"MuJoCo's default: set {option}= / --{option}")
-            notes.append(f'{kind} actuators: {option}={fmt(value)} ({said})')
+        found = [element.get(option) for element in
+                 (section.iter(kind) if section is not None else ())]
+        if not found:
+            continue
+        if set(found) != {fmt(value)}:
+            values = ', '.join(sorted({text or "MuJoCo's default" for text in found}))
+            notes.append(f'{kind} actuators: {option}={values} (the overlay sets them)')
+            continue
+        said = ('given' if given is not None
+                else f"MuJoCo's default: set {option}= / --{option}")
+        notes.append(f'{kind} actuators: {option}={fmt(value)} ({said})')
 
 
 def _write(path: Path, text: str, meshes: MeshAssets, meshdir: str, scene: bool,

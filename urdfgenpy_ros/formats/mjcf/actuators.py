@@ -28,6 +28,7 @@ does not hold (``kp``, ``kv``) come from the options. Mimic followers are never 
 from __future__ import annotations
 
 from dataclasses import dataclass
+import math
 from typing import Any, TYPE_CHECKING
 
 from lxml import etree
@@ -71,22 +72,63 @@ def blocks(robot: Robot, tag: str) -> list[Any]:
     return [block.element for block in robot.extensions if block.tag == tag]
 
 
-def gears(robot: Robot) -> dict[str, tuple[float, int]]:
-    """Return each joint's mechanical reduction and the number of the transmission."""
-    found: dict[str, tuple[float, int]] = {}
+def gears(robot: Robot) -> dict[str, tuple[float, Any]]:
+    """
+    Return each joint's mechanical reduction and which transmission gave it.
+
+    A classic ``<transmission>`` (``mechanicalReduction``) is named by its number among
+    them; one inside ``<ros2_control>`` (``mechanical_reduction`` of its ``<joint>``, else
+    of its ``<actuator>``) by (the block's number, its element number), as interfaces are.
+    """
+    found: dict[str, tuple[float, Any]] = {}
     for number, element in enumerate(blocks(robot, 'transmission')):
         joints = [node.get('name') for node in element.findall('joint')]
         reductions = [node.findtext('mechanicalReduction') for node in element.iter()
                       if node.findtext('mechanicalReduction') is not None]
-        value = 1.0
-        if reductions:
-            try:
-                value = float((reductions[0] or '1').strip())
-            except ValueError:
-                value = 1.0
+        value = _reduction(reductions)
         for name in joints:
             if name:
                 found[name] = (value, number)
+    for number, block in enumerate(blocks(robot, 'ros2_control')):
+        elements = list(block.iter())
+        for element in block.findall('transmission'):
+            for joint in element.findall('joint'):
+                reductions = [node.findtext('mechanical_reduction')
+                              for node in (joint, *element.findall('actuator'))
+                              if node.findtext('mechanical_reduction') is not None]
+                if joint.get('name'):
+                    found[joint.get('name')] = (_reduction(reductions),
+                                                (number, elements.index(element)))
+    return found
+
+
+def _reduction(texts: list[str | None]) -> float:
+    """Return the first reduction of ``texts`` that is a non-zero number, else 1."""
+    for text in texts:
+        try:
+            value = float((text or '').strip())
+        except ValueError:
+            continue
+        if value != 0.0:
+            return value
+    return 1.0
+
+
+def initial_values(robot: Robot) -> dict[str, float]:
+    """
+    Return each joint's ros2_control ``initial_value`` (its position state interface's).
+
+    A ``<param name="initial_value">`` straight under the ``<joint>`` counts too.
+    """
+    found: dict[str, float] = {}
+    for block in blocks(robot, 'ros2_control'):
+        for joint in block.findall('joint'):
+            places = [joint] + [interface for interface in joint.findall('state_interface')
+                                if interface.get('name') == 'position']
+            for place in places:
+                value = _number(place, 'initial_value')
+                if value is not None and math.isfinite(value) and joint.get('name'):
+                    found[joint.get('name')] = value
     return found
 
 

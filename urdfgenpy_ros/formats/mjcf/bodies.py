@@ -64,7 +64,8 @@ class BodyTree:
     joints: list[MjcfJoint] = field(default_factory=list)
     materials: dict[str, tuple[float, ...]] = field(default_factory=dict)
     stand_ins: dict[str, str] = field(default_factory=dict)  # URDF joint -> what replaced it
-    missing: dict[str, str] = field(default_factory=dict)  # mesh URI -> why it is left out
+    missing: dict[str, tuple[str, str]] = field(default_factory=dict)  # mesh URI -> why
+    # it is left out, and the fix
 
 
 def quat(origin: Origin) -> str | None:
@@ -199,7 +200,7 @@ class BodyWriter:
                     attributes.update(geometry_attributes(item.geometry, self.meshes, where))
                 except MeshNotWritten as error:
                     assert isinstance(item.geometry, Mesh)
-                    self.tree.missing[item.geometry.filename] = str(error)
+                    self.tree.missing[item.geometry.filename] = (str(error), error.hint)
                     continue
                 _pose(attributes, item.origin)
                 if isinstance(item, Visual):

@@ -13,7 +13,11 @@
 # limitations under the License.
 
 
-"""The ``home`` keyframe: every joint at zero, clamped to its limits; mimics follow."""
+"""
+The ``home`` keyframe: ros2_control's ``initial_value`` or zero, within the limits.
+
+Mimic followers follow their leader.
+"""
 
 from __future__ import annotations
 
@@ -28,20 +32,33 @@ if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
 
 
-def write_keyframe(document: Any, tree: BodyTree, robot: Robot) -> None:
-    """Write the ``home`` keyframe: every joint at zero, clamped to its limits."""
+def write_keyframe(document: Any, tree: BodyTree, robot: Robot,
+                   initial: dict[str, float] | None = None) -> None:
+    """
+    Write the ``home`` keyframe: every joint at zero, clamped to its limits.
+
+    ``initial`` gives a joint's own home instead (ros2_control's ``initial_value``).
+    """
     if not tree.joints:
         return
     home = {joint.name: joint.home for joint in tree.joints}
+    for name, value in (initial or {}).items():
+        if name in home and len(home[name]) == 1:
+            home[name] = (_within(robot.get_joint(name), value),)
     for joint in robot.joints:
         mimic = joint.mimic
         if mimic is not None and joint.name in home and mimic.joint in home \
                 and len(home[joint.name]) == 1:
             value = mimic.offset + mimic.multiplier * home[mimic.joint][0]
-            limit = joint.limit
-            if limit is not None and joint.type.needs_limit and limit.lower < limit.upper:
-                value = min(max(value, limit.lower), limit.upper)
-            home[joint.name] = (value,)
+            home[joint.name] = (_within(joint, value),)
     qpos = [value for joint in tree.joints for value in home[joint.name]]
     keyframe = etree.SubElement(document, 'keyframe')
     etree.SubElement(keyframe, 'key', name='home', qpos=fmt_vec(qpos))
+
+
+def _within(joint: Any, value: float) -> float:
+    """Return ``value`` clamped to the limits of ``joint`` (when it has a range)."""
+    limit = joint.limit
+    if limit is not None and joint.type.needs_limit and limit.lower < limit.upper:
+        return min(max(value, limit.lower), limit.upper)
+    return value

@@ -73,16 +73,20 @@ HINTS = {
 class Carried:
     """What the writer made of the blocks whose meaning depends on their content."""
 
-    friction_links: set[str] = field(default_factory=set)
-    transmissions: set[int] = field(default_factory=set)  # numbers of the mapped ones
+    friction_links: set[str] = field(default_factory=set)  # mu1 (and an equal mu2) carried
+    friction_written: set[str] = field(default_factory=set)  # links given mu1 as friction
+    transmissions: set[Any] = field(default_factory=set)  # the mapped ones: a number, or
+    # (ros2_control block, element number) for one inside <ros2_control>
     interfaces: set[tuple[int, int]] = field(default_factory=set)  # (block, element number)
     sensors: set[str] = field(default_factory=set)  # names of the <sensor>s written
     partly: dict[str, str] = field(default_factory=dict)  # sensor -> what was left out
     stand_ins: dict[str, str] = field(default_factory=dict)
-    missing: dict[str, str] = field(default_factory=dict)  # mesh URI -> why not written
+    missing: dict[str, tuple[str, str]] = field(default_factory=dict)  # mesh URI -> why
+    # not written, and the fix
     followers: set[str] = field(default_factory=set)
     links: set[str] = field(default_factory=set)
     mimics: set[str] = field(default_factory=set)  # followers written as equalities
+    replaced_by: str | None = None  # the actuators option that replaced the declared ones
     world_root: bool = False  # the root link is 'world': MuJoCo's world body, no inertial
     mujoco_check: Callable[[Any], list[tuple[str, str]]] | None = None
 
@@ -95,11 +99,12 @@ class Losses:
         self.carried = carried
         self.findings = Findings(robot)
 
-    def add(self, code: str, node: Any, element: str, message: str) -> None:
+    def add(self, code: str, node: Any, element: str, message: str,
+            hint: str | None = None) -> None:
         """Record a finding about ``node`` (an lxml element) of the document."""
         line = node.sourceline if self.file is not None else None
         self.findings.add(code, SourceLocation(self.file, line), element, _path(node),
-                          message, HINTS[code], str(node.tag))
+                          message, hint or HINTS[code], str(node.tag))
 
 
 def _path(node: Any) -> str:
@@ -169,8 +174,9 @@ def _walk(node: Any, losses: Losses) -> None:
         losses.add('M809', node, owner, f'<{tag} {SIZES[tag]}="{node.get(SIZES[tag])}"> has '
                    'a size of zero: MuJoCo refuses such a geom, so it is not written')
     if tag == 'mesh' and node.get('filename') in losses.carried.missing:
+        why, fix = losses.carried.missing[node.get('filename')]
         losses.add('M809', node, owner, f"mesh {node.get('filename')!r} not written, nor its "
-                   f"geom: {losses.carried.missing[node.get('filename')]}")
+                   f'geom: {why}', fix)
     for child in node:
         if not isinstance(child.tag, str):
             continue
@@ -231,6 +237,13 @@ def _gazebo(node: Any, losses: Losses) -> None:
             continue
         if child.tag in ('mu1', 'mu2') and reference in losses.carried.friction_links:
             continue
+        if child.tag == 'mu1' and reference in losses.carried.friction_written:
+            continue
+        if child.tag == 'mu2' and reference in losses.carried.friction_written:
+            losses.add('M806', child, owner, f'<mu2> {(child.text or "").strip()} is not '
+                       "carried: MuJoCo's sliding friction is one number for both "
+                       f"directions, and <mu1> {(node.findtext('mu1') or '').strip()} is it")
+            continue
         if child.tag in ('preserveFixedJoint', 'disableFixedJointLumping'):
             continue  # honoured when fixed links are fused
         if child.tag == 'sensor' and child.get('name') in losses.carried.sensors:
@@ -263,6 +276,15 @@ def _ros2_control(node: Any, losses: Losses) -> None:
     for child in node:
         if not isinstance(child.tag, str):
             continue
+        if child.tag == 'transmission':
+            if (number, elements.index(child)) not in losses.carried.transmissions:
+                joints = ', '.join(repr(joint.get('name')) for joint in child.findall('joint'))
+                losses.add('M805', child, owner, f'<transmission> maps to no actuator (joint '
+                           f'{joints or "none"} has no actuator in the MJCF)',
+                           "its mechanical_reduction becomes the gear of the joint's "
+                           'actuator: declare a command interface for the joint, or pass '
+                           '--actuators')
+            continue
         if child.tag != 'joint':
             losses.add('M805', child, owner, f'<{child.tag}> has no MJCF counterpart '
                        '(MuJoCo simulates the joints itself)')
@@ -273,9 +295,12 @@ def _ros2_control(node: Any, losses: Losses) -> None:
                 continue  # state interfaces: MuJoCo's joint state; params: read with them
             if (number, elements.index(interface)) in losses.carried.interfaces or follower:
                 continue
+            replaced = losses.carried.replaced_by
             losses.add('M805', interface, owner, 'command interface '
                        f"{interface.get('name')!r} of joint {child.get('name')!r} became no "
-                       'actuator')
+                       'actuator' + (f' (--actuators / actuators={replaced!r} put a '
+                                     f'{replaced} actuator on every joint instead)'
+                                     if replaced else ''))
 
 
 def _mujoco(node: Any, losses: Losses) -> None:

@@ -37,8 +37,17 @@ COPIED = ('.stl', '.obj')
 CONVERTED = ('.dae', '.glb', '.gltf', '.ply')
 
 
+PACKAGE_HINT = ('source its workspace, or give the folder holding its package: '
+                '--package-path on the command line, search_paths in Python')
+UNREADABLE_HINT = 'the model has no such geom: repair or re-export the mesh file'
+
+
 class MeshNotWritten(ModelError):
     """A mesh that cannot be found or read: its geom is left out, and that is a finding."""
+
+    def __init__(self, message: str, hint: str = UNREADABLE_HINT) -> None:
+        super().__init__(message)
+        self.hint = hint
 
 
 @dataclass
@@ -49,23 +58,32 @@ class MeshAssets:
     base: Path | None
     meshdir: str | None  # None: reference each file where it is (no conversion possible)
     assets: dict[tuple[Path, Any], tuple[str, str]] = field(default_factory=dict)
-    files: dict[str, tuple[Path, bool]] = field(default_factory=dict)  # name -> (source,
-    # converted to OBJ)
+    files: dict[str, bytes] = field(default_factory=dict)  # name -> content (copied, or
+    # converted to OBJ): read when added, so a bad file is a finding, not an abort
     _names: dict[Path, str] = field(default_factory=dict)
 
     def add(self, mesh: Mesh, where: str) -> str:
         """Return the asset name of ``mesh`` (read at ``where``), adding it when new."""
         try:
             path = self.resolver.resolve(mesh.filename, self.base).resolve()
-        except UrdfgenpyError as error:
-            raise MeshNotWritten(f'{error} (give --package-path / search_paths)') from None
+        except UrdfgenpyError as error:  # one hint, said below, not the resolver's too
+            reason = str(error)
+            if reason.endswith(')') and ' (' in reason:
+                reason = reason.rsplit(' (', 1)[0]
+            raise MeshNotWritten(reason, PACKAGE_HINT) from None
         key = (path, mesh.scale)
         if key not in self.assets:
             suffix = path.suffix.lower()
             if suffix not in COPIED + CONVERTED:
                 raise MeshNotWritten(f'MuJoCo reads STL and OBJ, and urdfgenpy converts '
-                                     f'{", ".join(CONVERTED)}: convert {suffix} to one of them')
-            written = self._file_name(path)
+                                     f'{", ".join(CONVERTED)}', f'the model has no such '
+                                     f'geom: convert the {suffix} file to one of them')
+            try:
+                written = self._file_name(path)
+            except (ModelError, OSError) as error:  # unreadable: its geom is left out
+                if self.meshdir is None and isinstance(error, ModelError):
+                    raise  # it needs a folder to go to: an option, not the mesh
+                raise MeshNotWritten(str(error)) from None
             name = _unique(Path(written).stem, {n for n, _ in self.assets.values()})
             self.assets[key] = (name, written)
         return self.assets[key][0]
@@ -81,10 +99,11 @@ class MeshAssets:
                                  'written beside the model: give the MJCF a path')
             name = str(path)
         else:
+            data = converted_obj(path) if convert else path.read_bytes()
             taken = {Path(name).stem.lower() for name in self.files}
             stem = _unique(path.stem, taken, lower=True)
             name = stem + ('.obj' if convert else suffix)
-            self.files[name] = (path, convert)
+            self.files[name] = data
         self._names[path] = name
         return name
 
@@ -100,8 +119,7 @@ class MeshAssets:
 
     def contents(self) -> dict[str, bytes]:
         """Return each file to write in ``meshdir``: copied, or converted to OBJ."""
-        return {name: (converted_obj(source) if convert else source.read_bytes())
-                for name, (source, convert) in self.files.items()}
+        return dict(self.files)
 
 
 STL_FACES = 200000  # MuJoCo's stl_decoder reads binary STL of 1 to 200000 triangles
