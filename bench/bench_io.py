@@ -57,6 +57,8 @@ import time
 import tracemalloc
 from typing import Any, Callable
 
+from timing import p90
+
 PACKAGES = ('upkie_description', 'gym_ignition_models', 'jvrc_description',
             'cookie_description')
 
@@ -207,11 +209,6 @@ def seconds(function: Callable[[], Any], repeat: int, sample: float) -> float:
     return statistics.median(times)
 
 
-def _p90(values: list[float]) -> float:
-    ordered = sorted(values)
-    return ordered[min(len(ordered) - 1, int(round(0.9 * (len(ordered) - 1))))]
-
-
 def main() -> None:
     """Print the per-file ratio table (and per-file figures on request)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
@@ -271,7 +268,7 @@ def main() -> None:
     print('| library | ' + ' | '.join(f'{kind} median | {kind} p90' for kind in kinds) +
           ' |\n|---|' + '---:|' * (2 * len(kinds)))
     for name, kinds in ratios.items():
-        cells = ' | '.join(f'{statistics.median(values):.1f}x | {_p90(values):.1f}x'
+        cells = ' | '.join(f'{statistics.median(values):.1f}x | {p90(values):.1f}x'
                            for values in kinds.values())
         print(f'| {name} | {cells} |')
     for name, paths in unreadable.items():

@@ -46,6 +46,7 @@ sys.path[:0] = [str(HERE.parent), str(HERE.parent / 'test')]
 
 import registry_robots  # noqa: E402
 from helpers import check_urdf_verdict, CORPUS, CORPUS_PACKAGES  # noqa: E402, I100
+from timing import p90  # noqa: E402
 
 
 def _robots() -> list[tuple[Path, list[Path]]]:
@@ -164,11 +165,6 @@ def _time(function, source: Path, folders: list[Path], verify: bool,
     return statistics.median(times)
 
 
-def _p90(values: list[float]) -> float:
-    ordered = sorted(values)
-    return ordered[min(len(ordered) - 1, int(round(0.9 * (len(ordered) - 1))))]
-
-
 def main() -> None:
     """Time every peer on every robot; print a Markdown table."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
@@ -196,10 +192,10 @@ def main() -> None:
             continue
         ratios = [mine[robot] / reference[robot] for robot in mine if robot in reference]
         values = list(mine.values())
-        ratio = (f'{statistics.median(ratios):.2f}x | {_p90(ratios):.2f}x' if ratios
+        ratio = (f'{statistics.median(ratios):.2f}x | {p90(ratios):.2f}x' if ratios
                  else ' | ')
         print(f'| {name} | {len(mine)} of {len(robots)} | {statistics.median(values) * 1000:.0f}'
-              f' | {_p90(values) * 1000:.0f} | {ratio} |')
+              f' | {p90(values) * 1000:.0f} | {ratio} |')
 
 
 if __name__ == '__main__':

@@ -49,6 +49,8 @@ import sys
 import tempfile
 import time
 
+from timing import p90
+
 REPO = Path(__file__).resolve().parents[1]
 PREFIX = REPO / 'test' / 'fixtures' / 'workspace' / 'prefix'
 
@@ -102,11 +104,6 @@ def _cpu_seconds(pid: int) -> float:
     """Return the user + system CPU time of process ``pid`` so far."""
     fields = Path(f'/proc/{pid}/stat').read_text().rsplit(')', 1)[1].split()
     return (int(fields[11]) + int(fields[12])) / os.sysconf('SC_CLK_TCK')
-
-
-def _p90(values: list[float]) -> float:
-    ordered = sorted(values)
-    return ordered[min(len(ordered) - 1, round(0.9 * (len(ordered) - 1)))]
 
 
 def contenders(folder: Path) -> dict[str, list[str]]:
@@ -194,14 +191,14 @@ def main() -> None:
     print('|---|---:|---:|---:|---:|---:|---:|')
     for name, values in times.items():
         median, cpu_median = statistics.median(values), statistics.median(cpu[name])
-        print(f'| {name} | {median:.3f} | {_p90(values):.3f} | {median / floor:.2f} | '
-              f'{cpu_median:.2f} | {_p90(cpu[name]):.2f} | {cpu_median / cpu_floor:.2f} |')
+        print(f'| {name} | {median:.3f} | {p90(values):.3f} | {median / floor:.2f} | '
+              f'{cpu_median:.2f} | {p90(cpu[name]):.2f} | {cpu_median / cpu_floor:.2f} |')
     publish_floor = statistics.median(at_publish['minimal rclpy (fixed string)'])
     print('\n| model source | CPU at first publish, median s | p90 s | × minimal |')
     print('|---|---:|---:|---:|')
     for name, values in at_publish.items():
         median = statistics.median(values)
-        print(f'| {name} | {median:.3f} | {_p90(values):.3f} | {median / publish_floor:.2f} |')
+        print(f'| {name} | {median:.3f} | {p90(values):.3f} | {median / publish_floor:.2f} |')
 
 
 if __name__ == '__main__':

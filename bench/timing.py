@@ -32,3 +32,9 @@ def median_seconds(function: Callable[[], Any], repeat: int) -> float:
         function()
         times.append(time.perf_counter() - start)
     return statistics.median(times)
+
+
+def p90(values: list[float]) -> float:
+    """Return the 90th percentile of ``values`` (the nearest rank, no interpolation)."""
+    ordered = sorted(values)
+    return ordered[min(len(ordered) - 1, round(0.9 * (len(ordered) - 1)))]
