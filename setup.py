@@ -60,7 +60,7 @@ setup(
             # pinocchio judges kinematics, Jacobians, gravity torques, reshaping and MJCF FK;
             # Talos, Solo-12, Panda and UR5 files
             'pin', 'example-robot-data',
-            # DH tables are judged by robotics-toolbox's own DHRobot and models (it brings rtb-data)
+            # DH tables are judged by robotics-toolbox's DHRobot and models (it brings rtb-data)
             'roboticstoolbox-python',
             'pre-commit',  # the documented hook, run by the real pre-commit
             'scipy',  # the statics worst case is judged against random samples + scipy refinement
