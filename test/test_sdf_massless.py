@@ -94,3 +94,35 @@ def test_a_root_libsdformat_leaves_out_is_a_finding(
     assert bool(found) == refused
     if found:
         assert found[0].element == f"link '{next(iter(links))}'"
+
+
+TOOL = f"""<?xml version="1.0"?>
+<robot name="tcp">
+  <link name="base_link"/>
+  <link name="arm"><inertial><mass value="0.3"/>{TENSOR}</inertial></link>
+  <joint name="j" type="revolute"><parent link="base_link"/><child link="arm"/>
+    <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+  <link name="tool0"/>
+  <joint name="tcp_joint" type="fixed"><parent link="arm"/><child link="tool0"/>
+    <origin xyz="0 0 0.2"/></joint>
+</robot>
+"""
+
+
+def test_each_link_sdf_gives_its_default_kilogram_is_said(check_sdf, tmp_path: Path) -> None:
+    """A massless tool frame weighs 1 kg in the SDF: convert says so, for each such link."""
+    source = tmp_path / 'tcp.urdf'
+    source.write_text(TOOL)
+    result = CliRunner().invoke(main, ['convert', str(source), str(tmp_path / 'tcp.sdf')])
+    assert result.exit_code == 0, result.output
+    said = {line.split("link '")[1].split("'")[0]: line for line in result.stderr.splitlines()
+            if 'SDF gives it its default mass of 1 kg' in line}
+    code, _, ours, _, _ = check_sdf(tmp_path / 'tcp.sdf')
+    assert code == 0
+    defaulted = {name for name, inertial in ours.items()
+                 if inertial == pytest.approx((1, 0, 0, 0, 1, 1, 1))}
+    assert set(said) == defaulted == {'base_link', 'tool0'}  # what libsdformat reads
+    assert said['tool0'].startswith(f'{source}:7:') and '--lump-fixed' in said['tool0']
+    lumped = CliRunner().invoke(main, ['convert', '--lump-fixed', str(source),
+                                       str(tmp_path / 'lumped.sdf')])
+    assert lumped.exit_code == 0 and "'tool0'" not in lumped.stderr

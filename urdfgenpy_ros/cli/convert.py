@@ -30,7 +30,7 @@ from urdfgenpy_ros.cli.convert_mjcf import mjcf_options, MjcfOptions, write_mjcf
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.formats.sdf_inertia import refused_inertias
-from urdfgenpy_ros.formats.sdf_mass import mass_only_notes
+from urdfgenpy_ros.formats.sdf_mass import default_mass_notes, mass_only_notes
 from urdfgenpy_ros.formats.urdf_downgrade import as_version, VERSIONS
 from urdfgenpy_ros.lumping import lump_fixed_joints
 from urdfgenpy_ros.report import counted
@@ -110,8 +110,8 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
         robot = lump_fixed_joints(robot)  # what to_sdf(lump_fixed=True) writes
     if kind == 'sdf':
         _refuse_invalid_inertia(robot, target)
-        for note in mass_only_notes(robot):  # kept as libsdformat keeps it
-            click.echo(note, err=True)
+        for note in (*mass_only_notes(robot), *default_mass_notes(robot)):
+            click.echo(note, err=True)  # a mass-only inertial kept as libsdformat keeps it
     if kind == 'mjcf':  # meshes are resolved from the source and copied beside the target
         raise SystemExit(write_mjcf_file(robot, target, mjcf, package_paths, force))
     rebase_meshes(robot, source.parent, target.parent)  # relative meshes still found

@@ -85,3 +85,24 @@ def _numbers(text: str | None) -> tuple[float, float, float]:
     if len(values) != 3:
         raise ValueError(text)
     return values
+
+
+def default_mass_notes(robot: Robot) -> list[str]:
+    """
+    Return one line per link SDF output writes with no ``<inertial>`` at all.
+
+    SDF gives such a link its default, 1 kg with a unit tensor, so a massless tool frame
+    weighs 1 kg in Gazebo; libsdformat's own URDF conversion lumps or drops it instead.
+    """
+    notes = []
+    for link in robot.links:
+        if link.inertial is not None or link.name == 'world' or mass_only(link) is not None:
+            continue
+        joints = [robot.parent_joint(link), *robot.child_joints(link)]
+        lumpable = any(joint is not None and joint.type.value == 'fixed' for joint in joints)
+        fix = ('pass --lump-fixed to merge it as libsdformat does, or give it an <inertial>'
+               if lumpable else 'give it an <inertial>')
+        where = f'{link.source}: ' if link.source is not None else ''
+        notes.append(f'{where}warning: link {link.name!r} has no <inertial>: SDF gives it '
+                     f'its default mass of 1 kg and a unit tensor ({fix})')
+    return notes
