@@ -34,7 +34,7 @@ from urdfgenpy_ros.floats import fmt_vec
 from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import Joint, JointType
-from urdfgenpy_ros.link import Shape
+from urdfgenpy_ros.link import Link, Shape
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.transforms import (
     from_xyz_rpy, IDENTITY4, Matrix4, multiply, to_xyz_rpy)
@@ -125,6 +125,39 @@ def lumps(joint: Joint) -> bool:
     return True
 
 
+def move_contents(body: Link, child: Link, pose: Matrix4, at: Origin, *,
+                  everything: bool = True, name_shapes: bool = False) -> None:
+    """
+    Move ``child``'s mass, visuals and collisions onto ``body``, ``child`` being at ``pose``.
+
+    ``at`` is ``pose`` as an origin. With ``everything``, its sensors and sensor blocks
+    move too (the child goes); ``name_shapes`` gives an unnamed visual or collision the
+    child's name, as Gazebo's lumping names it.
+    """
+    parts = [(body.inertial, IDENTITY4)] if body.inertial is not None else []
+    if child.inertial is not None:
+        parts.append((child.inertial, pose))
+    body.inertial = combine(parts) if parts else None
+    child.inertial = None
+    items: tuple[Shape, ...] = (*child.visuals, *child.collisions)
+    for item in items:
+        item.origin = _compose(at, item.origin)
+        if name_shapes and not item.name:
+            item.name = child.name
+    body.visuals.extend(child.visuals)
+    body.collisions.extend(child.collisions)
+    child.visuals.clear()
+    child.collisions.clear()
+    if not everything:
+        return
+    for sensor in child.sensors:
+        sensor.origin = _compose(at, sensor.origin)
+        sensor.frame = body.name
+        body.sensors.append(sensor)
+    _move_sensor_blocks(child.extensions, at, child.name)
+    body.extensions.extend(child.extensions)
+
+
 def lump_fixed_joints(robot: Robot) -> Robot:
     """Return a copy of ``robot`` with fixed joints' children merged into their parents."""
     merged = copy.deepcopy(robot)
@@ -134,22 +167,7 @@ def lump_fixed_joints(robot: Robot) -> Robot:
             return merged
         parent, child = merged.get_link(joint.parent), merged.get_link(joint.child)
         at = joint.origin
-        frame = from_xyz_rpy(at.xyz, at.rpy)
-        parts = [(parent.inertial, IDENTITY4)] if parent.inertial is not None else []
-        if child.inertial is not None:
-            parts.append((child.inertial, frame))
-        parent.inertial = combine(parts) if parts else None
-        items: tuple[Shape, ...] = (*child.visuals, *child.collisions)
-        for item in items:
-            item.origin = _compose(at, item.origin)
-        parent.visuals.extend(child.visuals)
-        parent.collisions.extend(child.collisions)
-        for sensor in child.sensors:
-            sensor.origin = _compose(at, sensor.origin)
-            sensor.frame = parent.name
-            parent.sensors.append(sensor)
-        _move_sensor_blocks(child.extensions, at, child.name)
-        parent.extensions.extend(child.extensions)
+        move_contents(parent, child, from_xyz_rpy(at.xyz, at.rpy), at)
         for grandchild in merged.child_joints(child.name):
             grandchild.parent = parent.name
             grandchild.origin = _compose(at, grandchild.origin)

@@ -32,7 +32,7 @@ from __future__ import annotations
 import copy
 
 from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.lumping import _compose, _move_sensor_blocks, combine, lumps
+from urdfgenpy_ros.lumping import lumps, move_contents
 from urdfgenpy_ros.reshape._frames import origin_of
 from urdfgenpy_ros.transforms import IDENTITY4, Matrix4, multiply
 
@@ -72,25 +72,6 @@ def merge_fixed(robot, keep=(), *, drop_frames: bool = False):
 
 def _lump(body, child, pose: Matrix4, drop_frames: bool) -> None:
     """Move ``child``'s mass, visuals and collisions onto ``body`` (``child`` at ``pose``)."""
-    parts = [(body.inertial, IDENTITY4)] if body.inertial is not None else []
-    if child.inertial is not None:
-        parts.append((child.inertial, pose))
-    body.inertial = combine(parts) if parts else None
-    child.inertial = None
-    at = origin_of(pose)
-    for item in (*child.visuals, *child.collisions):
-        item.origin = _compose(at, item.origin)
-        if not item.name:  # Gazebo then names it as its lumping of the original did
-            item.name = child.name
-    body.visuals.extend(child.visuals)
-    body.collisions.extend(child.collisions)
-    child.visuals.clear()
-    child.collisions.clear()
-    if not drop_frames:  # the frame stays: what refers to it stays with it
-        return
-    for sensor in child.sensors:
-        sensor.origin = _compose(at, sensor.origin)
-        sensor.frame = body.name
-        body.sensors.append(sensor)
-    _move_sensor_blocks(child.extensions, at, child.name)
-    body.extensions.extend(child.extensions)
+    # the frame stays unless dropped: what refers to it (sensors, blocks) stays with it;
+    # moved shapes take the names Gazebo's lumping of the original gives them
+    move_contents(body, child, pose, origin_of(pose), everything=drop_frames, name_shapes=True)
