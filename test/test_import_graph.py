@@ -1,0 +1,246 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+The package's import graph, read from its source, has no cycle.
+
+Every ``import`` and ``from ... import`` anywhere in a module counts, inside functions and
+methods too: an import that runs late is still a dependency, and a cycle through one is a
+module that cannot be understood, tested or moved without the other. ``from pkg import
+name`` is an edge to ``pkg.name`` when that is a module, else to ``pkg``; relative
+imports are resolved; importing ``a.b.c`` also runs the packages ``a.b`` and ``a``, so
+those are edges too, unless they contain the importing module (they are already running
+then). Imports under ``if TYPE_CHECKING:`` are left out: they never run, and annotations
+are all they serve. Strings given to ``importlib.import_module`` (the user's builder
+functions, the viewer's optional engines) are not read.
+
+The layers, each importing only those below it:
+
+1. **Model**: ``errors``, ``checks``, ``floats``, ``value_kinds``, ``geometry``,
+   ``material``, ``inertial``, ``link``, ``joint``, ``extensions``, ``sensors``,
+   ``preserved``, and ``model``: ``RobotModel``, the robot's data and tree (building,
+   access, navigation, editing). Link and joint refer to the robot only for typing.
+2. **Operations** on a model: ``formats/``, ``validation/``, ``dynamics/``,
+   ``reshape/``, ``assembly``, ``assembly_file``, ``tree``, ``lumping``, ``resources``,
+   ``dh``, ``mesh_inertia``, ``urdf_versions``, ``examples``, ``model_source``. They
+   name ``Robot`` only under ``TYPE_CHECKING``; a reader builds the class it is given
+   (``Robot.from_urdf`` passes ``cls``), an operation that copies a robot builds
+   ``type(robot)(...)``.
+3. **Facade**: ``robot.Robot(RobotModel)``, whose methods (``save``, ``validate``,
+   ``fk``, ``mirror``, ...) call down into the operations, and the package's
+   ``__init__`` that exports it.
+4. **Front ends**: ``cli/``, ``publisher/``, ``scaffold/``, ``viewer/``.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections import deque
+from collections.abc import Iterator
+from pathlib import Path
+
+from helpers import REPO
+import pytest
+
+Graph = dict[str, set[str]]
+
+
+def _modules(root: Path) -> dict[str, Path]:
+    """Return every module of the package in folder ``root``, by dotted name."""
+    modules = {}
+    for path in sorted(root.rglob('*.py')):
+        parts = path.relative_to(root.parent).with_suffix('').parts
+        if parts[-1] == '__init__':
+            parts = parts[:-1]
+        modules['.'.join(parts)] = path
+    return modules
+
+
+def _is_type_checking(test: ast.expr) -> bool:
+    return ((isinstance(test, ast.Name) and test.id == 'TYPE_CHECKING')
+            or (isinstance(test, ast.Attribute) and test.attr == 'TYPE_CHECKING'))
+
+
+def _imports(node: ast.AST) -> Iterator[ast.Import | ast.ImportFrom]:
+    """Yield every import statement under ``node`` that can run (not TYPE_CHECKING's)."""
+    if isinstance(node, ast.Import | ast.ImportFrom):
+        yield node
+    if isinstance(node, ast.If) and _is_type_checking(node.test):
+        children: list[ast.AST] = list(node.orelse)
+    else:
+        children = list(ast.iter_child_nodes(node))
+    for child in children:
+        yield from _imports(child)
+
+
+def _targets(statement: ast.Import | ast.ImportFrom, package: str,
+             modules: dict[str, Path]) -> Iterator[str]:
+    """Yield the modules one import statement names (``package``: where it is written)."""
+    if isinstance(statement, ast.Import):
+        yield from (alias.name for alias in statement.names)
+        return
+    base = statement.module or ''
+    if statement.level:
+        parts = package.split('.')[:len(package.split('.')) - statement.level + 1]
+        base = '.'.join(parts + ([base] if base else []))
+    for alias in statement.names:
+        yield f'{base}.{alias.name}' if f'{base}.{alias.name}' in modules else base
+
+
+def import_graph(root: Path) -> Graph:
+    """Return module -> the modules of the same package it imports, read from ``root``."""
+    modules = _modules(root)
+    graph: Graph = {}
+    for name, path in modules.items():
+        package = name if path.name == '__init__.py' else name.rpartition('.')[0]
+        edges = graph.setdefault(name, set())
+        tree = ast.parse(path.read_text(encoding='utf-8'), str(path))
+        for statement in _imports(tree):
+            for target in _targets(statement, package, modules):
+                parts = target.split('.')
+                for end in range(1, len(parts) + 1):
+                    module = '.'.join(parts[:end])
+                    runs_already = end < len(parts) and (name + '.').startswith(module + '.')
+                    if module in modules and module != name and not runs_already:
+                        edges.add(module)
+    return graph
+
+
+def _components(graph: Graph) -> list[list[str]]:
+    """Return the strongly connected components of more than one module (Tarjan, no recursion)."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    on_stack: set[str] = set()
+    found: list[list[str]] = []
+    for start in sorted(graph):
+        if start in index:
+            continue
+        work = [(start, iter(sorted(graph[start])))]
+        index[start] = low[start] = len(index)
+        stack.append(start)
+        on_stack.add(start)
+        while work:
+            node, successors = work[-1]
+            for successor in successors:
+                if successor not in index:
+                    index[successor] = low[successor] = len(index)
+                    stack.append(successor)
+                    on_stack.add(successor)
+                    work.append((successor, iter(sorted(graph[successor]))))
+                    break
+                if successor in on_stack:
+                    low[node] = min(low[node], index[successor])
+            else:
+                work.pop()
+                if work:
+                    low[work[-1][0]] = min(low[work[-1][0]], low[node])
+                if low[node] == index[node]:
+                    component = []
+                    while True:
+                        member = stack.pop()
+                        on_stack.discard(member)
+                        component.append(member)
+                        if member == node:
+                            break
+                    if len(component) > 1:
+                        found.append(sorted(component))
+    return sorted(found)
+
+
+def _shortest_cycle(graph: Graph, component: list[str]) -> list[str]:
+    """Return the shortest cycle inside ``component``, as a path ending where it starts."""
+    inside = set(component)
+    best: list[str] | None = None
+    for start in component:
+        came_from: dict[str, str] = {}
+        queue = deque([start])
+        while queue:
+            node = queue.popleft()
+            if start in graph[node]:
+                path = [node]
+                while path[-1] != start:
+                    path.append(came_from[path[-1]])
+                cycle = path[::-1] + [start]
+                if best is None or len(cycle) < len(best):
+                    best = cycle
+                break
+            for successor in sorted(graph[node] & inside):
+                if successor not in came_from and successor != start:
+                    came_from[successor] = node
+                    queue.append(successor)
+    assert best is not None
+    return best
+
+
+def cycles(graph: Graph) -> list[str]:
+    """Return each import cycle, the shortest of each component, as ``a -> b -> a``."""
+    return [' -> '.join(_shortest_cycle(graph, component))
+            for component in _components(graph)]
+
+
+def assert_no_cycle(graph: Graph) -> None:
+    """Fail naming each import cycle."""
+    found = cycles(graph)
+    assert found == [], 'import cycles (the shortest of each tangle):\n' + '\n'.join(found)
+
+
+def test_the_package_has_no_import_cycle() -> None:
+    graph = import_graph(REPO / 'urdfgenpy_ros')
+    assert len(graph) > 50 and 'urdfgenpy_ros.formats.urdf' in graph['urdfgenpy_ros.robot']
+    assert_no_cycle(graph)
+
+
+def _package(folder: Path, files: dict[str, str]) -> Path:
+    for name, text in files.items():
+        path = folder / 'pkg' / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    return folder / 'pkg'
+
+
+def test_a_cycle_through_an_import_inside_a_function_is_found(tmp_path: Path) -> None:
+    root = _package(tmp_path, {
+        '__init__.py': 'from pkg.facade import Facade\n',
+        'facade.py': 'from pkg import model\n\nclass Facade(model.Model):\n'
+                     '    def save(self):\n        from .ops.write import write\n',
+        'model.py': 'class Model:\n    pass\n',
+        'ops/__init__.py': '',
+        'ops/write.py': 'def write(robot):\n    from pkg.facade import Facade\n',
+        'ops/typed.py': 'from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n'
+                        '    from pkg.facade import Facade\nelse:\n    from pkg import model\n',
+        'ops/deep.py': 'import pkg.ops.write\nfrom .. import model\n',
+        'other.py': 'from pkg.ops import deep\n',
+    })
+    graph = import_graph(root)
+    assert graph['pkg.ops.write'] == {'pkg.facade'}
+    assert graph['pkg.ops.typed'] == {'pkg.model'}  # TYPE_CHECKING's import left out
+    assert graph['pkg.ops.deep'] == {'pkg.ops.write', 'pkg.model'}  # pkg.ops runs already
+    assert graph['pkg.other'] == {'pkg.ops', 'pkg.ops.deep'}  # pkg.ops/__init__ runs first
+    assert cycles(graph) == ['pkg.facade -> pkg.ops.write -> pkg.facade']
+    with pytest.raises(AssertionError, match='pkg.facade -> pkg.ops.write -> pkg.facade'):
+        assert_no_cycle(graph)
+
+
+def test_each_component_names_its_shortest_cycle(tmp_path: Path) -> None:
+    root = _package(tmp_path, {
+        '__init__.py': '',
+        'a.py': 'import pkg.b\nimport pkg.c\n',
+        'b.py': 'import pkg.c\n',
+        'c.py': 'def f():\n    import pkg.a\n',
+        'x.py': 'class X:\n    def m(self):\n        from pkg.y import Y\n',
+        'y.py': 'from pkg import x\n',
+        'z.py': 'import pkg.a\n',
+    })
+    assert cycles(import_graph(root)) == ['pkg.a -> pkg.c -> pkg.a', 'pkg.x -> pkg.y -> pkg.x']
