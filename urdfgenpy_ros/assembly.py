@@ -183,7 +183,7 @@ def attach(base: Robot, part: Robot, at: str, origin: Origin | None = None,
     """
     where = f'cannot attach {part.name!r} to {base.name!r}'
     if not base.has_link(at):
-        from urdfgenpy_ros.robot import _suggest
+        from urdfgenpy_ros.model import _suggest
         raise ModelError(f'{where}: link {at!r} is not in {base.name!r}'
                          f'{_suggest(at, [link.name for link in base.links])} '
                          '(name a link of the base, with its prefix if it has one)')

@@ -222,7 +222,7 @@ def _xacro_value(value: object) -> str:
 
 
 def _from_function(file: _File, entry: _Mapping, target: str) -> Robot:
-    from urdfgenpy_ros.model_source import robot_from_function
+    from urdfgenpy_ros.builders import robot_from_function
     try:
         return robot_from_function(target)
     except UrdfgenpyError as error:

@@ -33,16 +33,20 @@ from dataclasses import dataclass, field, KW_ONLY
 from enum import Enum
 import math
 from os import PathLike
+from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Origin, Sphere
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import Joint, JointLimit, JointType
 from urdfgenpy_ros.link import Collision, Link, Visual
-from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.model import robot_class
 from urdfgenpy_ros.transforms import (
     from_xyz_rpy, IDENTITY4, Matrix4, multiply, rotation_x, rotation_z, to_xyz_rpy,
     translation)
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 
 class DHConvention(str, Enum):
@@ -184,7 +188,7 @@ class DHTable:
             raise ModelError(f"link_geometry must be 'cylinder', 'box' or 'sphere', got "
                              f'{link_geometry!r}')
         origins, flange = self._joint_origins()
-        robot = Robot(name)
+        robot = robot_class()(name)
         robot.add_link(Link('base_link'))
         parent = 'base_link'
         for number, (row, origin) in enumerate(zip(self.rows, origins), start=1):

@@ -30,7 +30,7 @@ from urdfgenpy_ros.preserved import Preserved
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.extensions import Extension
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
     from urdfgenpy_ros.sensors import Sensor
 
 
@@ -204,7 +204,7 @@ class Joint:
     sensors: list[Sensor] = field(default_factory=list)
     source: SourceLocation | None = _hidden()
     extras: Preserved | None = _hidden()
-    _robot: Robot | None = field(default=None, init=False, compare=False, repr=False)
+    _robot: RobotModel | None = field(default=None, init=False, compare=False, repr=False)
 
     if TYPE_CHECKING:
         # The generated __init__ accepts a type name too ('revolute'); say so to checkers.

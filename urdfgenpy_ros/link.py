@@ -29,7 +29,7 @@ from urdfgenpy_ros.preserved import Preserved
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.extensions import Extension
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
     from urdfgenpy_ros.sensors import Sensor
 
 
@@ -80,7 +80,7 @@ class Link:
     sensors: list[Sensor] = field(default_factory=list)
     source: SourceLocation | None = field(default=None, compare=False, repr=False)
     extras: Preserved | None = field(default=None, compare=False, repr=False)
-    _robot: Robot | None = field(default=None, init=False, compare=False, repr=False)
+    _robot: RobotModel | None = field(default=None, init=False, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         """Check the name."""

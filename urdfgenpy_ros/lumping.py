@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import copy
 import math
+from typing import TYPE_CHECKING
 
 from lxml import etree
 
@@ -35,9 +36,11 @@ from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.link import Link, Shape
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.transforms import (
     from_xyz_rpy, IDENTITY4, Matrix4, multiply, to_xyz_rpy)
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 WORLD = 'world'
 """The link name URDF uses for the world frame; SDF reserves it."""

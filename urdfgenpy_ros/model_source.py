@@ -16,14 +16,11 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
-from contextlib import contextmanager
-import importlib
-import os
+from collections.abc import Sequence
 from pathlib import Path
-import sys
 from typing import NamedTuple
 
+from urdfgenpy_ros.builders import robot_from_function
 from urdfgenpy_ros.errors import ParseError, UrdfgenpyError
 from urdfgenpy_ros.formats import find_format, load
 from urdfgenpy_ros.robot import Robot
@@ -97,39 +94,3 @@ def _load_model(model: str, xacro_args: Sequence[str], package_paths: Sequence[s
             raise UrdfgenpyError(f'{words.model}: {error}') from None
     raise UrdfgenpyError(f'{words.model}: {model!r} is neither a .urdf/.xacro file nor '
                          'package.module:function')
-
-
-def robot_from_function(target: str) -> Robot:
-    """
-    Return the robot ``package.module:function`` builds (a Robot, or URDF text).
-
-    :raises UrdfgenpyError: when it cannot be imported or returns something else.
-    """
-    module_name, _, function_name = target.partition(':')
-    try:
-        with _here_importable():
-            function = getattr(importlib.import_module(module_name), function_name)
-    except (ImportError, AttributeError, ValueError) as error:
-        raise UrdfgenpyError(f'cannot import {target!r}: {error} (write '
-                             'package.module:function, importable from here)') from None
-    result = function()
-    if isinstance(result, Robot):
-        return result
-    if isinstance(result, (str, bytes)):
-        return Robot.from_urdf_string(result, target)
-    raise UrdfgenpyError(f'{target}() returned {type(result).__name__}, not a Robot or '
-                         'URDF text')
-
-
-@contextmanager
-def _here_importable() -> Iterator[None]:
-    """Let modules in the current folder be imported, as ``python -c`` would."""
-    here = os.getcwd()
-    added = '' not in sys.path and here not in sys.path
-    if added:
-        sys.path.insert(0, here)
-    try:
-        yield
-    finally:
-        if added and here in sys.path:
-            sys.path.remove(here)

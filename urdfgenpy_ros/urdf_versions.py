@@ -24,10 +24,12 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 import re
-from typing import Any, NamedTuple
+from typing import Any, NamedTuple, TYPE_CHECKING
 
 from urdfgenpy_ros.geometry import Capsule
-from urdfgenpy_ros.robot import Robot
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 Version = tuple[int, int]
 

@@ -24,7 +24,7 @@ array of configurations, which gives N results at once.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import Any, TYPE_CHECKING
 import weakref
 
 import numpy
@@ -33,7 +33,9 @@ from urdfgenpy_ros.dynamics.forward import jacobian as _jacobian, link_matrices
 from urdfgenpy_ros.dynamics.forward import LinkPoses
 from urdfgenpy_ros.dynamics.gravity import gravity_torques as _gravity, mass_model
 from urdfgenpy_ros.dynamics.model import ChainModel, compile_robot, fingerprint, positions
-from urdfgenpy_ros.robot import Robot
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 __all__ = ['compiled', 'fk', 'gravity_torques', 'jacobian', 'LinkPoses', 'movable_joints']
 

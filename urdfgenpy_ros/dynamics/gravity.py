@@ -27,13 +27,16 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 import math
+from typing import TYPE_CHECKING
 
 import numpy
 
 from urdfgenpy_ros.dynamics.forward import link_frames
 from urdfgenpy_ros.dynamics.model import ChainModel, REVOLUTE
 from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.robot import Robot
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 
 @dataclass(frozen=True)

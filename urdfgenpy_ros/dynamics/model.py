@@ -28,13 +28,15 @@ from dataclasses import dataclass
 from functools import cached_property
 import math
 import operator
-from typing import Any
+from typing import Any, TYPE_CHECKING
 
 import numpy
 
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.joint import Joint, JointType
-from urdfgenpy_ros.robot import Robot
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 FIXED, REVOLUTE, PRISMATIC = 0, 1, 2
 _MOTION = {JointType.REVOLUTE: REVOLUTE, JointType.CONTINUOUS: REVOLUTE,

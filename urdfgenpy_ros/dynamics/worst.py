@@ -32,13 +32,16 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 import itertools
 import math
+from typing import TYPE_CHECKING
 
 import numpy
 
 from urdfgenpy_ros.dynamics.gravity import gravity_torques, MassModel
 from urdfgenpy_ros.dynamics.model import ChainModel, PRISMATIC, REVOLUTE
 from urdfgenpy_ros.joint import JointType
-from urdfgenpy_ros.robot import Robot
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 GRID_POINTS = 4096
 STARTS = 64

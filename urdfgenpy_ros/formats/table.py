@@ -71,8 +71,10 @@ def _read_urdf(path: Path, mappings: Mapping[str, str], search_paths: Iterable[P
             from urdfgenpy_ros.formats.xacro_read import no_robot_in
             raise no_robot_in(path, data.decode('utf-8', 'replace')) or error from None
     if evidence.weak:  # only a $(...) in a mesh filename: read as urdfdom does, X104
-        from urdfgenpy_ros.robot import Robot
-        return Robot.from_urdf(path)
+        from urdfgenpy_ros.formats.detect import weak_evidence_warning
+        robot = read_urdf_bytes(data, str(path))
+        robot.read_warnings.insert(0, weak_evidence_warning(evidence))
+        return robot
     from urdfgenpy_ros.errors import ReadWarning
     robot = _read_xacro(path, mappings, search_paths)
     given = ' '.join(f'{name}:={value}' for name, value in mappings.items())

@@ -24,16 +24,21 @@ robot given, so nothing changes without a line.
 from __future__ import annotations
 
 import dataclasses
-from typing import Any
+from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.errors import ModelError, ValidationError
+from urdfgenpy_ros.formats._xml import xml_bytes
+from urdfgenpy_ros.formats.urdf import write_urdf
+from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
 from urdfgenpy_ros.geometry import Capsule, Cylinder, Origin, Sphere
 from urdfgenpy_ros.link import Shape
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.transforms import matrix_rpy, multiply, translation
 from urdfgenpy_ros.urdf_versions import (
     features, needed_version, parse_version, version_text)
 from urdfgenpy_ros.validation.findings import Findings
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 VERSIONS = ('1.0', '1.1', '1.2')
 """The URDF versions a robot can be written as."""
@@ -65,7 +70,8 @@ def as_version(robot: Robot, version: str) -> tuple[Robot, list[ValidationError]
                          f'{feature.what} dropped (URDF {version} has no such limit)',
                          'keep it in your controller configuration, or declare '
                          'version="1.2"', 'limit')
-    copy = Robot.from_urdf_string(robot.to_urdf(), robot.source.file if robot.source else None)
+    copy = read_urdf_bytes(xml_bytes(write_urdf(robot), 'surrogateescape'),
+                           robot.source.file if robot.source else None, type(robot))
     if wanted < (1, 1):
         _without_quaternions(copy)
         _without_capsules(copy)

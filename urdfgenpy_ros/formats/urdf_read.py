@@ -25,7 +25,7 @@ from __future__ import annotations
 
 from functools import partial
 import re
-from typing import Any
+from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
@@ -41,8 +41,11 @@ from urdfgenpy_ros.geometry import quaternion_rpy
 from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.material import Material
+from urdfgenpy_ros.model import robot_class
 from urdfgenpy_ros.preserved import Details, DocumentPreserved, Layout
-from urdfgenpy_ros.robot import Robot
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 EXTENSION_TAGS = frozenset(('gazebo', 'transmission', 'ros2_control'))
 _TYPES = ', '.join(kind.value for kind in JointType)
@@ -167,13 +170,13 @@ class _Reader:
 
     # ---- the robot ----------------------------------------------------------------
 
-    def robot(self, root: Any) -> Robot:
+    def robot(self, root: Any, cls: type[Robot]) -> Robot:
         """Read the ``<robot>`` element and everything in it."""
         root = self._robot_element(root)
         name = root.get('name')
         if not name:
             raise self.fail(root, "<robot>: missing 'name' (give the robot a name)")
-        robot = Robot(name)
+        robot = cls(name)
         robot.source = self.where(root)
         robot.urdf_version = root.get('version')
         order: list[Any] = []
@@ -374,15 +377,18 @@ def _describe(node: Any) -> str:
     return f'<{node.tag} name="{name}">' if name else f'<{node.tag}>'
 
 
-def read_urdf_bytes(data: bytes, file: str | None = None) -> Robot:
+def read_urdf_bytes(data: bytes, file: str | None = None, cls: type[Robot] | None = None
+                    ) -> Robot:
     """
     Return the robot described by URDF ``data`` (``file`` names it in messages).
+
+    The robot is a ``cls`` (default: :func:`urdfgenpy_ros.model.robot_class`, ``Robot``).
 
     :raises ParseError: when the text is not a readable URDF (one line, with location).
     """
     root, source, warnings = parse_xml(data, file)
     reader = _Reader(source, warnings)
     with checks.unchecked():
-        robot = reader.robot(root)
+        robot = reader.robot(root, cls or robot_class())
     robot.read_warnings = warnings
     return robot

@@ -24,14 +24,16 @@ from os import PathLike
 from pathlib import Path
 import re
 import threading
-from typing import Any
+from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.errors import (
     MissingDependencyError, ParseError, ReadWarning, SourceLocation)
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
 from urdfgenpy_ros.formats.xacro_args import unknown_arguments
 from urdfgenpy_ros.resources import PackageResolver
-from urdfgenpy_ros.robot import Robot
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 
 class _PackageMissing(LookupError):
@@ -186,13 +188,14 @@ def _xacro_warnings(printed: str) -> list[str]:
 
 def read_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
                search_paths: Iterable[str | PathLike[str]] = (),
-               packages: Mapping[str, str | PathLike[str]] | None = None) -> Robot:
+               packages: Mapping[str, str | PathLike[str]] | None = None,
+               cls: type[Robot] | None = None) -> Robot:
     """Expand the Xacro file ``path`` with ``mappings`` (``name: value``) and read it."""
     said: list[ReadWarning] = []
     text, included = expand_xacro(path, mappings, PackageResolver(search_paths, packages),
                                   said)
     try:
-        robot = read_urdf_bytes(text.encode('utf-8'), f'{path} (expanded)')
+        robot = read_urdf_bytes(text.encode('utf-8'), f'{path} (expanded)', cls)
     except ParseError as error:
         from urdfgenpy_ros.validation.xacro_source import error_in_source
         raise no_robot_in(path, text) or error_in_source(

@@ -179,8 +179,7 @@ def _zero_poses(robot) -> dict[str, Matrix4]:
 def _copy(robot, links, joints):
     """Return a robot holding deep copies of ``links`` and ``joints``."""
     from urdfgenpy_ros import checks
-    from urdfgenpy_ros.robot import Robot
-    piece = Robot(robot.name)
+    piece = type(robot)(robot.name)
     for link in copy.deepcopy(links):
         piece.add_link(link)
     with checks.unchecked():  # the first joint's parent stays outside the copy

@@ -19,10 +19,10 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping
 from os import PathLike
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.resources import PackageResolver
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET
 from urdfgenpy_ros.validation.codes import CODES
 from urdfgenpy_ros.validation.findings import Findings
@@ -32,6 +32,9 @@ from urdfgenpy_ros.validation.references import check_references
 from urdfgenpy_ros.validation.topology import check_topology
 from urdfgenpy_ros.validation.versions import check_versions
 from urdfgenpy_ros.validation.xacro_source import in_source
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 __all__ = ['CODES', 'validate', 'ValidationError']
 

@@ -29,11 +29,13 @@ from __future__ import annotations
 import math
 from os import PathLike
 from pathlib import Path
-from typing import Any
+from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.errors import MissingDependencyError, ParseError, SourceLocation
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.findings import Findings, joint_path
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 
 def _number(text: str | None) -> float | None:

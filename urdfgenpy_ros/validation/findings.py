@@ -18,11 +18,13 @@ from __future__ import annotations
 
 from pathlib import Path
 import re
-from typing import Any
+from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.errors import SourceLocation, ValidationError
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.codes import severity_of
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 
 def link_path(name: str) -> str:

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 from difflib import SequenceMatcher
 import math
 import re
+from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.errors import SourceLocation, ValidationError
 from urdfgenpy_ros.floats import fmt, fmt_vec
@@ -38,8 +39,10 @@ from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Sphere
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import Joint, JointLimit, JointType
 from urdfgenpy_ros.link import Link
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.transforms import from_xyz_rpy
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 FIXABLE = frozenset(('J102', 'J103', 'J104', 'J106', 'I202', 'I203', 'I205'))
 """The codes ``fix`` can repair (J103 and J106 only with defaults)."""

@@ -23,11 +23,15 @@ solid sphere of the link's mass and of radius ``radius``, its centre of mass kep
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.floats import fmt
 from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.fix import fix, FIXABLE, Repair
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 DEFAULT_RADIUS = 0.05
 """Radius (m) of the solid sphere whose tensor a link without shapes gets."""

@@ -17,6 +17,7 @@
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Sphere
 from urdfgenpy_ros.inertial import (
@@ -24,11 +25,13 @@ from urdfgenpy_ros.inertial import (
 from urdfgenpy_ros.joint import JointType
 from urdfgenpy_ros.link import Link, Shape
 from urdfgenpy_ros.lumping import lumps, WORLD
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.transforms import symmetric_eigenvalues
 from urdfgenpy_ros.validation.findings import Findings, link_path
 from urdfgenpy_ros.validation.preflight import (
     SdfConversion, sdformat_conversion, SDFORMAT_ZERO_MASS)
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 # MuJoCo's mjMINVAL (include/mujoco/mjtype.h): a moving body needs a mass of at least this
 # (user_model.cc, CheckBodyMassInertia), as do its moments when all six are zero.

@@ -17,10 +17,13 @@
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.joint import Joint, JointType
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.findings import Findings, joint_path
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 
 def check_joints(robot: Robot, findings: Findings) -> None:

@@ -37,7 +37,7 @@ from pathlib import Path
 import re
 import sys
 import tempfile
-from typing import Any
+from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.errors import SourceLocation, UrdfgenpyError
 from urdfgenpy_ros.geometry import Mesh
@@ -45,11 +45,13 @@ from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import JointType
 from urdfgenpy_ros.lumping import combine
 from urdfgenpy_ros.resources import PackageResolver
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.transforms import from_xyz_rpy, IDENTITY4, Matrix4, multiply
 from urdfgenpy_ros.transforms import symmetric_eigenvalues
 from urdfgenpy_ros.validation.codes import PREFLIGHT_HINTS
 from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 MESH_FORMATS = ('.stl', '.obj', '.msh')
 _RELATIVE = 1e-6  # MuJoCo computes in doubles; principal moments differ by rounding only

@@ -30,14 +30,17 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from os import PathLike
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.errors import ValidationError
 from urdfgenpy_ros.formats.sdf_mass import mass_only
 from urdfgenpy_ros.joint import Joint
 from urdfgenpy_ros.lumping import lumps, WORLD
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.codes import PREFLIGHT_HINTS
 from urdfgenpy_ros.validation.findings import Findings, link_path
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 ENGINES = ('mujoco', 'gazebo')
 SDFORMAT_ZERO_MASS = 1e-6  # ignition::math::equal(mass, 0.0): its default tolerance

@@ -19,13 +19,15 @@ from __future__ import annotations
 import math
 import os
 from pathlib import Path
-from typing import Any
+from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Sphere
 from urdfgenpy_ros.link import Shape
 from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 
 def check_references(robot: Robot, findings: Findings, resolver: PackageResolver | None,

@@ -27,6 +27,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 import math
+from typing import TYPE_CHECKING
 
 import numpy
 
@@ -36,8 +37,10 @@ from urdfgenpy_ros.dynamics.worst import is_prismatic, LONG_POSE, ranges, worst_
 from urdfgenpy_ros.dynamics.worst import WorstCase
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.joint import Joint, JointType
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.findings import Findings, joint_path
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 UNLOADED = 1e-9  # of the robot's weight times a metre: gravity cannot load the joint
 

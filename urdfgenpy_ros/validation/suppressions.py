@@ -31,13 +31,15 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 import re
-from typing import Any
+from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
 from urdfgenpy_ros.errors import ValidationError
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.codes import CODES
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 _DIRECTIVE = re.compile(r'^\s*urdfgenpy\s*:\s*(ignore-file|ignore)\b(.*)$', re.DOTALL)
 _CODE = re.compile(r'[A-Z]\d{3}')

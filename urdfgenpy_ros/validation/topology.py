@@ -17,9 +17,12 @@
 from __future__ import annotations
 
 import re
+from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 _FRAME_NAME = re.compile(r'^[A-Za-z_][A-Za-z0-9_./-]*$')
 

@@ -33,12 +33,14 @@ from functools import lru_cache
 import os
 from pathlib import Path
 import re
-from typing import NamedTuple
+from typing import NamedTuple, TYPE_CHECKING
 
 from lxml import etree
 
 from urdfgenpy_ros.errors import ParseError, SourceLocation, ValidationError
-from urdfgenpy_ros.robot import Robot
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 EXPANDED = ' (expanded)'
 """How a location in an expanded Xacro names its file (``arm.urdf.xacro (expanded)``)."""

@@ -26,11 +26,13 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.errors import SourceLocation, ValidationError
-from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.findings import Findings
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 # tag -> (attributes carried, children carried); '*' children: judged by a handler
 CARRIED: dict[str, tuple[frozenset[str], frozenset[str]]] = {
