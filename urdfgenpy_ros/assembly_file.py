@@ -38,7 +38,7 @@ top-level ``parts:`` key; other YAML files are DH tables.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 import importlib
 import inspect
 import math
@@ -52,6 +52,8 @@ from urdfgenpy_ros.geometry import Origin
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
+
+    Load = Callable[[Path, dict[str, str], list[Any]], Robot]
 
 CODE = 'A001'
 ASSEMBLY_SUFFIXES = ('.assembly.yaml', '.assembly.yml')
@@ -123,9 +125,12 @@ class _File:
 
 
 def read_assembly(path: str | PathLike[str],
-                  search_paths: Iterable[str | PathLike[str]] = ()) -> Robot:
+                  search_paths: Iterable[str | PathLike[str]] = (), *, load: Load) -> Robot:
     """
-    Build the robot the assembly file ``path`` describes.
+    Build the robot the assembly file ``path`` describes, reading its parts with ``load``.
+
+    ``load`` is :func:`urdfgenpy_ros.formats.load` (passed in: that front door reads
+    assembly files with this function).
 
     :raises ParseError: one line with the file, line, key and the fix (code A001).
     """
@@ -151,7 +156,7 @@ def read_assembly(path: str | PathLike[str],
             raise file.error(data.lines['parts'], 'parts', f'part {index + 1} is not a mapping'
                              ' (write - file: arm.urdf or - function: module:function)')
         _known(file, entry, _PART_KEYS)
-        part, files = _load_part(file, entry, list(search_paths))
+        part, files = _load_part(file, entry, list(search_paths), load)
         included += files
         if robot is None:
             for key in ('at', 'prefix', 'origin', 'joint_name'):
@@ -185,7 +190,7 @@ def _text(file: _File, mapping: _Mapping, key: str) -> str:
     return value
 
 
-def _load_part(file: _File, entry: _Mapping, search_paths: list[Any]
+def _load_part(file: _File, entry: _Mapping, search_paths: list[Any], load: Load
                ) -> tuple[Robot, list[str]]:
     """Return the part's robot and the files it was read from."""
     if ('file' in entry) == ('function' in entry):
@@ -198,7 +203,6 @@ def _load_part(file: _File, entry: _Mapping, search_paths: list[Any]
     if 'function' in entry:
         target = _text(file, entry, 'function')
         return _from_function(file, entry, target), _module_file(target)
-    from urdfgenpy_ros.formats import load
     from urdfgenpy_ros.resources import PackageResolver, rebase_meshes, ResourceError
     uri = _text(file, entry, 'file')
     try:

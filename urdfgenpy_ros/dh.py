@@ -30,11 +30,11 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, field, KW_ONLY
-from enum import Enum
 import math
 from os import PathLike
 from typing import TYPE_CHECKING
 
+from urdfgenpy_ros.dh_row import DHConvention, DHRow
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Origin, Sphere
 from urdfgenpy_ros.inertial import Inertial
@@ -48,50 +48,7 @@ from urdfgenpy_ros.transforms import (
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
 
-
-class DHConvention(str, Enum):
-    """Which Denavit-Hartenberg convention a table uses."""
-
-    STANDARD = 'standard'
-    MODIFIED = 'modified'
-
-
-@dataclass(slots=True)
-class DHRow:
-    """
-    One joint: ``DHRow(joint, a, alpha, d, theta_offset, joint_type)``.
-
-    ``joint`` is a number or a name; lengths in metres, angles in radians. Limits are
-    optional (revolute: -pi..pi; prismatic: 0..1 m by default).
-    """
-
-    joint: int | str
-    a: float = 0.0
-    alpha: float = 0.0
-    d: float = 0.0
-    theta_offset: float = 0.0
-    joint_type: str = 'revolute'
-    _: KW_ONLY
-    lower: float | None = None
-    upper: float | None = None
-    effort: float = 100.0
-    velocity: float = 2.0
-
-    def __post_init__(self) -> None:
-        """Check the joint type and coerce numbers."""
-        if self.joint_type not in ('revolute', 'prismatic'):
-            raise ModelError(f'DH row {self.joint!r}: joint_type must be revolute or '
-                             f'prismatic, got {self.joint_type!r}')
-        for name in ('a', 'alpha', 'd', 'theta_offset'):
-            value = float(getattr(self, name))
-            if not math.isfinite(value):
-                raise ModelError(f'DH row {self.joint!r}: {name} must be finite')
-            setattr(self, name, value)
-
-    @property
-    def name(self) -> str:
-        """Return the joint name: ``joint_<n>`` for a number, else the name itself."""
-        return f'joint_{self.joint}' if isinstance(self.joint, int) else str(self.joint)
+__all__ = ['DHConvention', 'DHRow', 'DHTable']
 
 
 @dataclass(slots=True)
@@ -225,7 +182,7 @@ class DHTable:
             prismatic (floating, planar and mimic joints are refused).
         """
         from urdfgenpy_ros.reshape.dh_extract import dh_from_robot
-        table: DHTable = dh_from_robot(robot, base, tip, convention)
+        table: DHTable = dh_from_robot(robot, base, tip, convention, cls=cls)
         return table
 
     # ---- files ------------------------------------------------------------------------
@@ -234,7 +191,7 @@ class DHTable:
     def from_file(cls, path: str | PathLike[str]) -> DHTable:
         """Read a table from a .yaml/.yml or .csv file (see docs/dh_guide.md)."""
         from urdfgenpy_ros.formats.dh_table import read_table
-        return read_table(path)
+        return read_table(path, cls)
 
     def save(self, path: str | PathLike[str], degrees: bool = False) -> None:
         """

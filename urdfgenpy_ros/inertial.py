@@ -181,14 +181,14 @@ class Inertial:
         Needs the ``mesh`` extra (trimesh). The origin is the centre of mass.
         """
         from urdfgenpy_ros.mesh_inertia import inertial_from_mesh
-        return inertial_from_mesh(filename, density, mass, scale)
+        return inertial_from_mesh(filename, density, mass, scale, cls=cls)
 
     @classmethod
     def from_meshlab(cls, mass: float, volume: float, tensor: list[list[float]],
                      centre: tuple[float, float, float] | None = None) -> Inertial:
         """Return an SI inertial from MeshLab's geometric measures (mm, density 1)."""
         from urdfgenpy_ros.mesh_inertia import inertial_from_meshlab
-        return inertial_from_meshlab(mass, volume, tensor, centre)
+        return inertial_from_meshlab(mass, volume, tensor, centre, cls=cls)
 
 
 _INF = math.inf

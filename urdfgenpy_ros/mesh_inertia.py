@@ -24,13 +24,15 @@ from __future__ import annotations
 from collections.abc import Sequence
 from os import PathLike
 from pathlib import Path
-from typing import Any
+from typing import Any, TYPE_CHECKING
 import warnings
 
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
 from urdfgenpy_ros.geometry import Origin
-from urdfgenpy_ros.inertial import Inertial
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.inertial import Inertial
 
 
 class ScaleWarning(UserWarning):
@@ -119,9 +121,10 @@ def mass_properties(triangles: Any) -> tuple[float, Any, Any]:
 
 def inertial_from_mesh(filename: str | PathLike[str], density: float | None = None,
                        mass: float | None = None,
-                       scale: Sequence[float] | None = None) -> Inertial:
+                       scale: Sequence[float] | None = None, *, cls: type[Inertial]
+                       ) -> Inertial:
     """
-    Return the inertial of a solid mesh of uniform ``density`` (kg/m^3) or total ``mass``.
+    Return the ``cls`` (an Inertial) of a solid mesh of uniform ``density`` or ``mass``.
 
     The origin is the centre of mass (axes as the mesh's); ``scale`` multiplies the
     vertices first (0.001 for millimetres).
@@ -148,14 +151,15 @@ def inertial_from_mesh(filename: str | PathLike[str], density: float | None = No
     if mass is None:
         mass = float(density) * volume  # type: ignore[arg-type]
     tensor = tensor * (mass / volume)
-    return Inertial(mass, tensor[0, 0], tensor[0, 1], tensor[0, 2], tensor[1, 1],
+    return cls(mass, tensor[0, 0], tensor[0, 1], tensor[0, 2], tensor[1, 1],
                     tensor[1, 2], tensor[2, 2], origin=Origin(tuple(float(c) for c in centre)))
 
 
 def inertial_from_meshlab(mass: float, volume: float, tensor: Sequence[Sequence[float]],
-                          centre: Sequence[float] | None = None) -> Inertial:
+                          centre: Sequence[float] | None = None, *, cls: type[Inertial]
+                          ) -> Inertial:
     """
-    Return an SI inertial from MeshLab's "Compute Geometric Measures" output.
+    Return an SI inertial (a ``cls``) from MeshLab's "Compute Geometric Measures" output.
 
     MeshLab works in the mesh's units (usually millimetres) with density 1: ``volume`` in
     mm^3, ``tensor`` (3x3) in mm^5 and the optional ``centre`` of mass in mm. Scaling by
@@ -167,5 +171,5 @@ def inertial_from_meshlab(mass: float, volume: float, tensor: Sequence[Sequence[
     values = [[checks.finite('Inertial.from_meshlab', 'tensor', value) * factor
                for value in row] for row in tensor]
     origin = Origin(tuple(float(c) / 1000.0 for c in centre)) if centre else Origin()
-    return Inertial(mass, values[0][0], values[0][1], values[0][2], values[1][1],
+    return cls(mass, values[0][0], values[0][1], values[0][2], values[1][1],
                     values[1][2], values[2][2], origin=origin)

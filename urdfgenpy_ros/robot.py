@@ -223,7 +223,8 @@ class Robot(RobotModel):
         :raises ParseError: one line with the file, line, key and the fix.
         """
         from urdfgenpy_ros.assembly_file import read_assembly
-        return read_assembly(path, search_paths)
+        from urdfgenpy_ros.formats import load
+        return read_assembly(path, search_paths, load=load)
 
     # ---- reshaping -----------------------------------------------------------------
 

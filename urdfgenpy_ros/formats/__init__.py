@@ -22,12 +22,11 @@ The formats are the rows of :data:`urdfgenpy_ros.formats.table.FORMATS`; ``load`
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
 from os import PathLike
 from pathlib import Path
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.formats.table import find_format, FORMATS, reader_for, writer_for
+from urdfgenpy_ros.formats.table import find_format, FORMATS, load, writer_for
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -46,25 +45,6 @@ def format_of(path: str | PathLike[str]) -> str:
     :raises ModelError: one line, for a suffix no format writes.
     """
     return writer_for(path).name
-
-
-def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
-         search_paths: Iterable[str | PathLike[str]] = ()) -> Robot:
-    """
-    Read a robot from ``path`` in the format its suffix names.
-
-    ``mappings`` are Xacro arguments; ``search_paths`` folders holding ROS packages. An
-    assembly file (``*.assembly.yaml``, or YAML with a top-level ``parts:``) gives the
-    robot its parts make; any other .yaml, .yml or .csv file is a DH table and gives its
-    skeleton. A ``.urdf`` file that is Xacro (TurtleBot3's are) is expanded with xacro, as
-    ROS launch files do, and the robot gets a read warning (X101) saying so. A suffix no
-    format reads (``.sdf``, ``.xml``, ``.txt``) is refused in one line.
-
-    :raises ModelError: for a suffix no format reads.
-    """
-    row = reader_for(path)
-    assert row.reader is not None
-    return row.reader(Path(path), dict(mappings or {}), search_paths)
 
 
 def save(robot: Robot, path: str | PathLike[str], **options: Any) -> None:

@@ -27,11 +27,14 @@ import io
 import math
 from os import PathLike
 from pathlib import Path
-from typing import Any
+from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.dh import DHConvention, DHRow, DHTable
+from urdfgenpy_ros.dh_row import DHConvention, DHRow
 from urdfgenpy_ros.errors import MissingDependencyError, ModelError, ParseError, SourceLocation
 from urdfgenpy_ros.geometry import Origin
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.dh import DHTable
 
 COLUMNS = ('joint', 'a', 'alpha', 'd', 'theta_offset', 'type', 'lower', 'upper', 'effort',
            'velocity')
@@ -104,23 +107,23 @@ def _convention(value: Any, where: SourceLocation) -> DHConvention:
                          'D003') from None
 
 
-def read_table(path: str | PathLike[str]) -> DHTable:
+def read_table(path: str | PathLike[str], cls: type[DHTable]) -> DHTable:
     """
-    Read a DH table from a .yaml/.yml or .csv file.
+    Read a DH table (a ``cls``) from a .yaml/.yml or .csv file.
 
     :raises ParseError: naming the file, the line where known, and the fix.
     """
     file = Path(path)
     text = file.read_text(encoding='utf-8')
     if file.suffix.lower() in ('.yaml', '.yml'):
-        return _read_yaml(text, str(path))
+        return _read_yaml(text, str(path), cls)
     if file.suffix.lower() == '.csv':
-        return _read_csv(text, str(path))
+        return _read_csv(text, str(path), cls)
     raise ParseError(f'unknown DH table suffix {file.suffix!r} (use .yaml, .yml or .csv)',
                      SourceLocation(str(path)), 'D001')
 
 
-def _read_yaml(text: str, file: str) -> DHTable:
+def _read_yaml(text: str, file: str, cls: type[DHTable]) -> DHTable:
     yaml = _yaml()
     try:
         data = yaml.safe_load(text)
@@ -144,7 +147,7 @@ def _read_yaml(text: str, file: str) -> DHTable:
             raise ParseError('each DH row is a mapping {joint: ..., a: ..., ...}',
                              SourceLocation(file, line, 1), 'D001')
         rows.append(_row(values, degrees, SourceLocation(file, line, 1)))
-    return DHTable(_convention(data['convention'], where), rows,
+    return cls(_convention(data['convention'], where), rows,
                    base=_origin(data.get('base'), degrees, where),
                    tool=_origin(data.get('tool'), degrees, where))
 
@@ -163,7 +166,7 @@ def _yaml_row_line(lines: list[str], index: int) -> int:
     return 1
 
 
-def _read_csv(text: str, file: str) -> DHTable:
+def _read_csv(text: str, file: str, cls: type[DHTable]) -> DHTable:
     settings: dict[str, str] = {}
     body = []
     for number, line in enumerate(text.splitlines(), start=1):
@@ -187,7 +190,7 @@ def _read_csv(text: str, file: str) -> DHTable:
             raise ParseError(f'{len(cells)} cells for {len(columns)} columns', where, 'D001')
         rows.append(_row(dict(zip(columns, cells)), degrees, where))
     where = SourceLocation(file, 1, 1)
-    return DHTable(_convention(settings.get('convention', ''), where), rows)
+    return cls(_convention(settings.get('convention', ''), where), rows)
 
 
 def write_table(table: DHTable, path: str | PathLike[str], degrees: bool = False) -> None:

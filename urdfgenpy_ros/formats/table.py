@@ -94,7 +94,7 @@ def _read_xacro(path: Path, mappings: Mapping[str, str], search_paths: Iterable[
 def _read_assembly(path: Path, mappings: Mapping[str, str],
                    search_paths: Iterable[PathArg]) -> Robot:
     from urdfgenpy_ros.assembly_file import read_assembly
-    return read_assembly(path, list(search_paths))
+    return read_assembly(path, list(search_paths), load=load)  # parts: any format
 
 
 def _read_table(path: Path, mappings: Mapping[str, str], search_paths: Iterable[PathArg]
@@ -201,3 +201,22 @@ def writer_for(path: PathArg) -> Format:
         raise ModelError(f'{path}: {what} {Path(path).suffix.lower()!r} (urdfgenpy writes '
                          f'{_known("write")})')
     return row
+
+
+def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
+         search_paths: Iterable[str | PathLike[str]] = ()) -> Robot:
+    """
+    Read a robot from ``path`` in the format its suffix names.
+
+    ``mappings`` are Xacro arguments; ``search_paths`` folders holding ROS packages. An
+    assembly file (``*.assembly.yaml``, or YAML with a top-level ``parts:``) gives the
+    robot its parts make; any other .yaml, .yml or .csv file is a DH table and gives its
+    skeleton. A ``.urdf`` file that is Xacro (TurtleBot3's are) is expanded with xacro, as
+    ROS launch files do, and the robot gets a read warning (X101) saying so. A suffix no
+    format reads (``.sdf``, ``.xml``, ``.txt``) is refused in one line.
+
+    :raises ModelError: for a suffix no format reads.
+    """
+    row = reader_for(path)
+    assert row.reader is not None
+    return row.reader(Path(path), dict(mappings or {}), search_paths)

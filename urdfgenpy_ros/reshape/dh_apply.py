@@ -54,7 +54,7 @@ def apply_dh(robot, table, base: str, tip: str) -> list[str]:
         if row.joint_type != kind:
             raise ModelError(f'DH row {row.joint!r} is {row.joint_type}, joint '
                              f'{axis.joint.name!r} is {kind}: the rows follow the chain')
-    nominal = dh_from_robot(robot, base, tip, table.convention)
+    nominal = dh_from_robot(robot, base, tip, table.convention, cls=type(table))
     zero = [0.0] * len(axes)
     old_frames, new_frames = nominal.link_frames(zero), table.link_frames(zero)
     # each link on the frame its joint moves, as the robot's own table places it

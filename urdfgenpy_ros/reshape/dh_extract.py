@@ -205,9 +205,9 @@ def _snap(value: float) -> float:
     return 0.0 if abs(value) < 1e-15 else value + 0.0
 
 
-def dh_from_robot(robot, base: str, tip: str, convention: str = 'standard'):
+def dh_from_robot(robot, base: str, tip: str, convention: str = 'standard', *, cls):
     """
-    Return the DH table of the chain from link ``base`` to link ``tip`` of ``robot``.
+    Return the DH table (a ``cls``) of the chain from link ``base`` to link ``tip``.
 
     Its rows are named after the joints and carry their limits; ``base`` and ``tool``
     hold the transforms from the base link to DH frame 0 and from the last DH frame to
@@ -215,7 +215,7 @@ def dh_from_robot(robot, base: str, tip: str, convention: str = 'standard'):
 
     :raises ModelError: when the chain is not serial revolute/prismatic (naming the joint).
     """
-    from urdfgenpy_ros.dh import DHConvention, DHRow, DHTable
+    from urdfgenpy_ros.dh_row import DHConvention, DHRow
     style = DHConvention(convention)
     _, axes, tip_pose = chain_axes(robot, base, tip)
     if style is DHConvention.STANDARD:
@@ -233,5 +233,5 @@ def dh_from_robot(robot, base: str, tip: str, convention: str = 'standard'):
                           upper=limit.upper if limit is not None else None,
                           effort=limit.effort if limit is not None else 100.0,
                           velocity=limit.velocity if limit is not None else 2.0))
-    return DHTable(style, rows, base=origin_of(frames[0]),
+    return cls(style, rows, base=origin_of(frames[0]),
                    tool=origin_of(multiply(inverse(frames[-1]), tip_pose)))

@@ -133,13 +133,17 @@ def _as_written(robot: Robot, findings: Findings, search_paths: list[Any],
     """
     from lxml import etree
 
-    from urdfgenpy_ros.formats import load
+    from urdfgenpy_ros.formats.detect import xacro_evidence_in
+    from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
     source = robot.source.file if robot.source is not None else None
-    if not source or not Path(source).is_file():
+    if not source or not Path(source).is_file() or not source.lower().endswith('.urdf'):
         return
     path = Path(source).resolve()
-    try:
-        again = load(path)
+    try:  # as formats.load reads a .urdf, without its front door (which writes MJCF)
+        data = path.read_bytes()
+        if xacro_evidence_in(data, str(path)) is not None:  # Xacro: not the file's robot
+            return
+        again = read_urdf_bytes(data, str(path))
     except (UrdfgenpyError, OSError, ValueError):
         return
     if any(note.code.startswith('X') for note in again.read_warnings) \
