@@ -13,34 +13,32 @@
 # limitations under the License.
 
 """
-The package's import graph, read from its source, has no cycle.
+The package's import graph, read from its source, has no cycle, and its layers hold.
 
 Every ``import`` and ``from ... import`` anywhere in a module counts, inside functions and
-methods too: an import that runs late is still a dependency, and a cycle through one is a
-module that cannot be understood, tested or moved without the other. ``from pkg import
-name`` is an edge to ``pkg.name`` when that is a module, else to ``pkg``; relative
+methods too: an import that runs late is still a dependency, and a cycle through one ties
+modules that then cannot be understood, tested or moved one without the other. ``from pkg
+import name`` is an edge to ``pkg.name`` when that is a module, else to ``pkg``; relative
 imports are resolved. Imports under ``if TYPE_CHECKING:`` are left out: they never run,
-and annotations are all they serve. Strings given to ``importlib.import_module`` (the user's builder
-functions, the viewer's optional engines) are not read.
+annotations are all they serve. Names given to ``importlib.import_module`` as strings (the
+user's builder functions, the viewer's optional engines) are not read.
 
-The layers, each importing only those below it:
+The layers (docs/architecture.md), each importing only those below it:
 
-1. **Model**: ``errors``, ``checks``, ``floats``, ``value_kinds``, ``geometry``,
-   ``material``, ``inertial``, ``link``, ``joint``, ``extensions``, ``sensors``,
-   ``preserved``, and ``model``: ``RobotModel``, the robot's data and tree (building,
-   access, navigation, editing). Link and joint refer to the robot only for typing.
-2. **Operations** on a model: ``formats/``, ``validation/``, ``dynamics/``,
-   ``reshape/``, ``assembly``, ``assembly_file``, ``tree``, ``lumping``, ``resources``,
-   ``dh``, ``mesh_inertia``, ``urdf_versions``, ``examples``, ``model_source``. They
-   name ``Robot`` only under ``TYPE_CHECKING``; a reader builds the class it is given
-   (``Robot.from_urdf`` passes ``cls``), an operation that copies a robot builds
-   ``type(robot)(...)``.
-3. **Facade**: ``robot.Robot(RobotModel)``, whose methods (``save``, ``validate``,
-   ``fk``, ``mirror``, ...) call down into the operations, and the package's
-   ``__init__`` that exports it.
-4. **Front ends**: ``cli/``, ``publisher/``, ``scaffold/``, ``viewer/``.
+1. **Model** (:data:`MODEL`): the elements (``geometry``, ``link``, ``joint``,
+   ``inertial``, ...), ``dh_row``, ``mesh_inertia`` and ``model.RobotModel``, the robot's
+   data and tree.
+2. **Operations** on a model: ``formats/``, ``validation/``, ``dynamics/``, ``reshape/``,
+   ``assembly``, ``assembly_file``, ``builders``, ``tree``, ``lumping``, ``resources``,
+   ``dh``, ``urdf_versions``, ``kinematics``. They name ``Robot`` only for typing; a reader
+   builds the class it is told (``Robot.from_urdf`` passes ``cls``) or else
+   ``model.robot_class()``, which ``robot.py`` sets to ``Robot``; a copy is
+   ``copy.deepcopy(robot)`` or ``type(robot)(...)``.
+3. **Facade**: ``robot.Robot(RobotModel)``, whose methods (``save``, ``validate``, ``fk``,
+   ``mirror``, ...) call down into the operations.
+4. **Above it** (:data:`USE_ROBOT`): the package's ``__init__``, the front ends (``cli/``,
+   ``publisher/``, ``scaffold/``, ``viewer/``), ``model_source``, ``examples``.
 """
-
 from __future__ import annotations
 
 import ast
@@ -52,6 +50,16 @@ from helpers import REPO
 import pytest
 
 Graph = dict[str, set[str]]
+
+PACKAGE = 'urdfgenpy_ros'
+MODEL = frozenset(f'{PACKAGE}.{name}' for name in (
+    'checks', 'dh_row', 'errors', 'extensions', 'floats', 'geometry', 'inertial', 'joint',
+    'link', 'material', 'mesh_inertia', 'model', 'owned_names', 'preserved', 'sensors',
+    'transforms', 'value_kinds'))
+"""The model layer: these import only each other."""
+USE_ROBOT = (PACKAGE, f'{PACKAGE}.cli.', f'{PACKAGE}.publisher.', f'{PACKAGE}.scaffold.',
+             f'{PACKAGE}.viewer.', f'{PACKAGE}.model_source', f'{PACKAGE}.examples')
+"""What may import the facade, ``urdfgenpy_ros.robot``, to run (a name, or a prefix.)"""
 
 
 def _modules(root: Path) -> dict[str, Path]:
@@ -189,10 +197,27 @@ def assert_no_cycle(graph: Graph) -> None:
     assert found == [], 'import cycles (the shortest of each tangle):\n' + '\n'.join(found)
 
 
-def test_the_package_has_no_import_cycle() -> None:
-    graph = import_graph(REPO / 'urdfgenpy_ros')
-    assert len(graph) > 50 and 'urdfgenpy_ros.formats.urdf' in graph['urdfgenpy_ros.robot']
+@pytest.fixture(scope='module')
+def graph() -> Graph:
+    return import_graph(REPO / PACKAGE)
+
+
+def test_the_package_has_no_import_cycle(graph: Graph) -> None:
+    assert len(graph) > 50 and f'{PACKAGE}.formats.urdf' in graph[f'{PACKAGE}.robot']
     assert_no_cycle(graph)
+
+
+def test_the_model_imports_nothing_above_it(graph: Graph) -> None:
+    assert MODEL <= set(graph)
+    above = {f'{module} -> {target}' for module in MODEL for target in graph[module] - MODEL}
+    assert above == set()
+
+
+def test_only_what_is_above_the_facade_imports_it_to_run(graph: Graph) -> None:
+    users = {module for module, targets in graph.items() if f'{PACKAGE}.robot' in targets}
+    assert {f'{PACKAGE}.cli.view', f'{PACKAGE}.examples', PACKAGE} <= users
+    assert {module for module in users
+            if module != PACKAGE and not module.startswith(USE_ROBOT[1:])} == set()
 
 
 def _package(folder: Path, files: dict[str, str]) -> Path:

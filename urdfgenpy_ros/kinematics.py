@@ -25,9 +25,12 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 import math
+from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.joint import JointType
-from urdfgenpy_ros.robot import Robot
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 Vector = tuple[float, float, float]
 Quaternion = tuple[float, float, float, float]

@@ -152,7 +152,7 @@ def inertial_from_mesh(filename: str | PathLike[str], density: float | None = No
         mass = float(density) * volume  # type: ignore[arg-type]
     tensor = tensor * (mass / volume)
     return cls(mass, tensor[0, 0], tensor[0, 1], tensor[0, 2], tensor[1, 1],
-                    tensor[1, 2], tensor[2, 2], origin=Origin(tuple(float(c) for c in centre)))
+               tensor[1, 2], tensor[2, 2], origin=Origin(tuple(float(c) for c in centre)))
 
 
 def inertial_from_meshlab(mass: float, volume: float, tensor: Sequence[Sequence[float]],
@@ -172,4 +172,4 @@ def inertial_from_meshlab(mass: float, volume: float, tensor: Sequence[Sequence[
                for value in row] for row in tensor]
     origin = Origin(tuple(float(c) / 1000.0 for c in centre)) if centre else Origin()
     return cls(mass, values[0][0], values[0][1], values[0][2], values[1][1],
-                    values[1][2], values[2][2], origin=origin)
+               values[1][2], values[2][2], origin=origin)

@@ -359,7 +359,6 @@ class RobotModel:
         self._joints = {joint.name: joint for joint in self._joints.values()}
 
 
-
 _built: list[type[Robot]] = []
 
 

@@ -17,12 +17,15 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
+from typing import TYPE_CHECKING
 from xml.sax.saxutils import escape, quoteattr
 
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._xml import fmt
 from urdfgenpy_ros.joint import JointType
-from urdfgenpy_ros.robot import Robot
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 
 def _value(value: object) -> str:

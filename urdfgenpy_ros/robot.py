@@ -60,7 +60,6 @@ class Robot(RobotModel):
         rename(self, joints={old: checks.name('joint', new)})
         return joint
 
-
     # ---- checking ------------------------------------------------------------------
 
     def validate(self, strict: bool = False, **options: object) -> list[ValidationError]:

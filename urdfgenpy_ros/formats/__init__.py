@@ -23,7 +23,6 @@ The formats are the rows of :data:`urdfgenpy_ros.formats.table.FORMATS`; ``load`
 from __future__ import annotations
 
 from os import PathLike
-from pathlib import Path
 from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.formats.table import find_format, FORMATS, load, writer_for

@@ -148,8 +148,8 @@ def _read_yaml(text: str, file: str, cls: type[DHTable]) -> DHTable:
                              SourceLocation(file, line, 1), 'D001')
         rows.append(_row(values, degrees, SourceLocation(file, line, 1)))
     return cls(_convention(data['convention'], where), rows,
-                   base=_origin(data.get('base'), degrees, where),
-                   tool=_origin(data.get('tool'), degrees, where))
+               base=_origin(data.get('base'), degrees, where),
+               tool=_origin(data.get('tool'), degrees, where))
 
 
 def _yaml_row_line(lines: list[str], index: int) -> int:

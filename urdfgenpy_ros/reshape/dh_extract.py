@@ -234,4 +234,4 @@ def dh_from_robot(robot, base: str, tip: str, convention: str = 'standard', *, c
                           effort=limit.effort if limit is not None else 100.0,
                           velocity=limit.velocity if limit is not None else 2.0))
     return cls(style, rows, base=origin_of(frames[0]),
-                   tool=origin_of(multiply(inverse(frames[-1]), tip_pose)))
+               tool=origin_of(multiply(inverse(frames[-1]), tip_pose)))
