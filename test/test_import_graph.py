@@ -46,7 +46,7 @@ from collections import deque
 from collections.abc import Iterator
 from pathlib import Path
 
-from helpers import REPO
+from helpers import FIXTURES, REPO, require_module
 import pytest
 
 Graph = dict[str, set[str]]
@@ -262,3 +262,48 @@ def test_each_component_names_its_shortest_cycle(tmp_path: Path) -> None:
         'z.py': 'import pkg.a\n',
     })
     assert cycles(import_graph(root)) == ['pkg.a -> pkg.c -> pkg.a', 'pkg.x -> pkg.y -> pkg.x']
+
+
+def test_every_reader_and_copy_builds_a_robot_of_the_class_asked(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The readers do not import Robot, yet what they build is one (or the subclass asked)."""
+    require_module('xacro')
+    from urdfgenpy_ros import Robot
+    from urdfgenpy_ros.builders import robot_from_function
+    from urdfgenpy_ros.dh import DHRow, DHTable
+    from urdfgenpy_ros.formats import load
+    from urdfgenpy_ros.formats.urdf_downgrade import as_version
+    from urdfgenpy_ros.model import RobotModel
+
+    class Mine(Robot):
+        pass
+
+    urdf = FIXTURES / 'packages' / 'fixture_description' / 'urdf' / 'every_element.urdf'
+    xacro = urdf.with_name('arm.urdf.xacro')
+    packages = [FIXTURES / 'packages']
+    table = DHTable('standard', [DHRow(1, 0.1), DHRow(2, 0.2, joint_type='prismatic')])
+    table.save(tmp_path / 'arm.yaml')
+    (tmp_path / 'base.urdf').write_bytes(urdf.read_bytes())
+    (tmp_path / 'builder_of_text.py').write_text(
+        'def text():\n    return """<robot name=\'r\'><link name=\'l\'/></robot>"""\n')
+    (tmp_path / 'both.assembly.yaml').write_text(
+        f'parts:\n  - file: base.urdf\n  - file: arm.yaml\n'
+        f'    at: {Robot.from_urdf(urdf).root.name}\n    prefix: arm_\n')
+    built = {
+        'load .urdf': load(urdf), 'load .urdf.xacro': load(xacro, search_paths=packages),
+        'load DH table': load(tmp_path / 'arm.yaml'),
+        'load assembly': load(tmp_path / 'both.assembly.yaml'),
+        'from_assembly': Robot.from_assembly(tmp_path / 'both.assembly.yaml'),
+        'from_urdf_string': Robot.from_urdf_string(urdf.read_bytes()),
+        'to_robot': table.to_robot('arm'), 'merge_fixed': load(urdf).merge_fixed(),
+        'as_version': as_version(load(urdf), '1.0')[0],
+    }
+    monkeypatch.chdir(tmp_path)  # the builder's module is found from here, as the node does
+    built['builder function'] = robot_from_function('builder_of_text:text')
+    assert {name: type(robot) for name, robot in built.items()} == dict.fromkeys(built, Robot)
+    mine = [Mine.from_urdf(urdf), Mine.from_urdf_string(urdf.read_bytes()),
+            Mine.from_xacro(xacro, search_paths=packages),
+            as_version(Mine.from_urdf(urdf), '1.0')[0], Mine.from_urdf(urdf).merge_fixed()]
+    assert [type(robot) for robot in mine] == [Mine] * len(mine)
+    assert isinstance(mine[0], RobotModel)
+    assert type(DHTable.from_file(tmp_path / 'arm.yaml')) is DHTable
