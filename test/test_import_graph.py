@@ -39,6 +39,7 @@ The layers (docs/architecture.md), each importing only those below it:
 4. **Above it** (:data:`USE_ROBOT`): the package's ``__init__``, the front ends (``cli/``,
    ``publisher/``, ``scaffold/``, ``viewer/``), ``model_source``, ``examples``.
 """
+
 from __future__ import annotations
 
 import ast
