@@ -30,9 +30,9 @@ The layers (docs/architecture.md), each importing only those below it:
    data and tree.
 2. **Operations** on a model: ``formats/``, ``validation/``, ``dynamics/``, ``reshape/``,
    ``assembly``, ``assembly_file``, ``builders``, ``tree``, ``lumping``, ``resources``,
-   ``dh``, ``urdf_versions``, ``kinematics``. They name ``Robot`` only for typing; a reader
-   builds the class it is told (``Robot.from_urdf`` passes ``cls``) or else
-   ``model.robot_class()``, which ``robot.py`` sets to ``Robot``; a copy is
+   ``dh``, ``urdf_versions``, ``kinematics``, ``plugins``. They name ``Robot`` only for
+   typing; a reader builds the class it is told (``Robot.from_urdf`` passes ``cls``) or
+   else ``model.robot_class()``, which ``robot.py`` sets to ``Robot``; a copy is
    ``copy.deepcopy(robot)`` or ``type(robot)(...)``.
 3. **Facade**: ``robot.Robot(RobotModel)``, whose methods (``save``, ``validate``, ``fk``,
    ``mirror``, ...) call down into the operations.
