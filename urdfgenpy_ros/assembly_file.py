@@ -243,6 +243,7 @@ def _module_file(target: str) -> list[str]:
 
 
 def _attach(file: _File, entry: _Mapping, robot: Robot, part: Robot) -> None:
+    from urdfgenpy_ros.assembly import attach
     from urdfgenpy_ros.errors import ModelError
     if 'at' not in entry:
         raise file.error(entry.line, 'at', 'every part after the first needs the link it '
@@ -255,7 +256,7 @@ def _attach(file: _File, entry: _Mapping, robot: Robot, part: Robot) -> None:
     origin = _origin(file, entry)
     joint_name = _text(file, entry, 'joint_name') if 'joint_name' in entry else None
     try:
-        robot.attach(part, at, origin, prefix, joint_name)
+        attach(robot, part, at, origin, prefix, joint_name)
     except ModelError as error:
         key = 'at' if not robot.has_link(at) else \
             'joint_name' if _only_joint_name_taken(robot, part, prefix, joint_name) else 'prefix'

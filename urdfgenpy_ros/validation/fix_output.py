@@ -40,7 +40,8 @@ _TENSORS = ('I202', 'I203')
 
 def fix_for_output(robot: Robot, radius: float = DEFAULT_RADIUS) -> list[str]:
     """Repair ``robot``'s fixable errors in place; return one line per repair (or refusal)."""
-    errors = [finding for finding in robot.validate(check_meshes=False)
+    from urdfgenpy_ros.validation import validate
+    errors = [finding for finding in validate(robot, check_meshes=False)
               if finding.severity is Severity.ERROR and finding.code in FIXABLE]
     repairs = fix(robot, errors)
     done = {(repair.code, repair.element) for repair in repairs}

@@ -66,12 +66,13 @@ def mujoco_findings(robot: Robot, findings: Findings, search_paths: list[Any],
     except ImportError:
         _by_rules(robot, findings)
         return
+    from urdfgenpy_ros.formats.urdf import write_urdf
     compiled, meshes = _compilable(robot, findings, search_paths, base)
     said: list[str] = []
     model = None
     try:
         with _quiet(said):
-            model = mujoco.MjModel.from_xml_string(compiled.to_urdf())
+            model = mujoco.MjModel.from_xml_string(write_urdf(compiled))
     except (ValueError, UrdfgenpyError) as error:
         findings.add('M505', robot, f'robot {robot.name!r}', '/robot',
                      ' '.join(str(error).split()), PREFLIGHT_HINTS['M505'], 'robot')
@@ -134,6 +135,7 @@ def _as_written(robot: Robot, findings: Findings, search_paths: list[Any],
     from lxml import etree
 
     from urdfgenpy_ros.formats.detect import xacro_evidence_in
+    from urdfgenpy_ros.formats.urdf import write_urdf
     from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
     source = robot.source.file if robot.source is not None else None
     if not source or not Path(source).is_file() or not source.lower().endswith('.urdf'):
@@ -147,7 +149,7 @@ def _as_written(robot: Robot, findings: Findings, search_paths: list[Any],
     except (UrdfgenpyError, OSError, ValueError):
         return
     if any(note.code.startswith('X') for note in again.read_warnings) \
-            or again.extras is None or again.to_urdf() != robot.to_urdf():
+            or again.extras is None or write_urdf(again) != write_urdf(robot):
         return
     resolver = PackageResolver(search_paths)
     assets: dict[str, bytes] = {}
