@@ -26,7 +26,6 @@ by ``copy.deepcopy`` or ``type(robot)(...)``.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Mapping
-import difflib
 from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros import checks
@@ -44,6 +43,7 @@ if TYPE_CHECKING:
 
 
 def _suggest(name: str, known: Any) -> str:
+    import difflib  # only when a name is not found: not at every start
     close = difflib.get_close_matches(name, list(known), n=1)
     return f' (did you mean {close[0]!r}?)' if close else ''
 
