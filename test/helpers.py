@@ -137,10 +137,10 @@ def pybullet_load(path: Path) -> tuple[int, int]:
     return int(body), int(joints)
 
 
-def check_urdf(path: Path) -> subprocess.CompletedProcess:
+def check_urdf(path: Path, timeout: float = 30) -> subprocess.CompletedProcess:
     """Run Debian's check_urdf on a file (with a timeout: it hangs on loops)."""
     return subprocess.run([debian_check_urdf(), str(path)], capture_output=True,
-                          text=True, timeout=30)
+                          text=True, timeout=timeout)
 
 
 def debian_check_urdf() -> str:
@@ -169,10 +169,10 @@ def urdfdom6_tool(name: str) -> str:
     pytest.skip(message)
 
 
-def check_urdf_verdict(path: Path) -> bool:
+def check_urdf_verdict(path: Path, timeout: float = 30) -> bool:
     """Return whether check_urdf accepts a file (it hangs on some loops: that is a no)."""
     try:
-        return check_urdf(path).returncode == 0
+        return check_urdf(path, timeout).returncode == 0
     except subprocess.TimeoutExpired:
         return False
 
