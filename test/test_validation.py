@@ -141,6 +141,7 @@ def _errors(path: Path, packages: list[Path]) -> list[str]:
 
 
 @pytest.mark.parametrize('original', _registry_params())
+@pytest.mark.engine
 def test_registry_robots_both_consumers_accept_have_no_error(
         original: Path, tmp_path: Path) -> None:
     path = original
@@ -154,6 +155,7 @@ def test_registry_robots_both_consumers_accept_have_no_error(
     assert _errors(path, search_paths()) == []
 
 
+@pytest.mark.engine
 def test_corpus_files_both_consumers_accept_have_no_error() -> None:
     corpus = corpus_file('.')
     clean = 0
