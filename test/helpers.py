@@ -101,8 +101,13 @@ def require_module(name: str):
         pytest.skip(message)
 
 
+_SDF_CHECKERS: list[Path] = []  # the libsdformat checker, compiled once: its users share it
+
+
 def build_sdf_checker(folder: Path) -> Path:
-    """Compile test/sdf_checker/check_sdf.cc against libsdformat in ``folder``; skip without."""
+    """Compile test/sdf_checker/check_sdf.cc in ``folder``, once per run; skip without it."""
+    if _SDF_CHECKERS and _SDF_CHECKERS[0].is_file():
+        return _SDF_CHECKERS[0]
     require_tool('pkg-config')
     flags = subprocess.run(['pkg-config', '--cflags', '--libs', 'sdformat12'],
                            capture_output=True, text=True)
@@ -112,6 +117,7 @@ def build_sdf_checker(folder: Path) -> Path:
     subprocess.run([shutil.which('g++') or 'g++', '-O1', '-o', str(binary),
                     str(REPO / 'test' / 'sdf_checker' / 'check_sdf.cc'), *flags.stdout.split()],
                    check=True, timeout=300)
+    _SDF_CHECKERS.append(binary)
     return binary
 
 
