@@ -12,7 +12,7 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""Shared fixtures: the corpus, example robots, a colcon workspace, a ROS graph."""
+"""Shared fixtures: the corpus, example robots, a colcon workspace, a ROS graph; the fast lane."""
 
 from __future__ import annotations
 
@@ -23,10 +23,21 @@ import subprocess
 import sys
 
 from helpers import CORPUS, full_robot, NO_CORPUS, REPO, require_module
+import lanes
 import pytest
 
 from urdfgenpy_ros.examples import pan_tilt_unit
 from urdfgenpy_ros.robot import Robot
+
+
+def pytest_addoption(parser: pytest.Parser) -> None:
+    """Add ``--fast`` and the fast lane's time budget (lanes.py)."""
+    lanes.add_options(parser)
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    """Select the fast lane when asked and name slow unmarked tests (lanes.py)."""
+    lanes.configure(config)
 
 
 @pytest.fixture

@@ -101,8 +101,13 @@ def require_module(name: str):
         pytest.skip(message)
 
 
+_SDF_CHECKERS: list[Path] = []  # the libsdformat checker, compiled once: its users share it
+
+
 def build_sdf_checker(folder: Path) -> Path:
-    """Compile test/sdf_checker/check_sdf.cc against libsdformat in ``folder``; skip without."""
+    """Compile test/sdf_checker/check_sdf.cc in ``folder``, once per run; skip without it."""
+    if _SDF_CHECKERS and _SDF_CHECKERS[0].is_file():
+        return _SDF_CHECKERS[0]
     require_tool('pkg-config')
     flags = subprocess.run(['pkg-config', '--cflags', '--libs', 'sdformat12'],
                            capture_output=True, text=True)
@@ -112,6 +117,7 @@ def build_sdf_checker(folder: Path) -> Path:
     subprocess.run([shutil.which('g++') or 'g++', '-O1', '-o', str(binary),
                     str(REPO / 'test' / 'sdf_checker' / 'check_sdf.cc'), *flags.stdout.split()],
                    check=True, timeout=300)
+    _SDF_CHECKERS.append(binary)
     return binary
 
 
@@ -137,10 +143,10 @@ def pybullet_load(path: Path) -> tuple[int, int]:
     return int(body), int(joints)
 
 
-def check_urdf(path: Path) -> subprocess.CompletedProcess:
+def check_urdf(path: Path, timeout: float = 30) -> subprocess.CompletedProcess:
     """Run Debian's check_urdf on a file (with a timeout: it hangs on loops)."""
     return subprocess.run([debian_check_urdf(), str(path)], capture_output=True,
-                          text=True, timeout=30)
+                          text=True, timeout=timeout)
 
 
 def debian_check_urdf() -> str:
@@ -169,10 +175,10 @@ def urdfdom6_tool(name: str) -> str:
     pytest.skip(message)
 
 
-def check_urdf_verdict(path: Path) -> bool:
+def check_urdf_verdict(path: Path, timeout: float = 30) -> bool:
     """Return whether check_urdf accepts a file (it hangs on some loops: that is a no)."""
     try:
-        return check_urdf(path).returncode == 0
+        return check_urdf(path, timeout).returncode == 0
     except subprocess.TimeoutExpired:
         return False
 

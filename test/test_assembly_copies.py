@@ -77,6 +77,7 @@ def _lumped_parent(robot: Robot, link: str) -> str:
     return link
 
 
+@pytest.mark.engine
 def test_sdformat_keeps_every_sensor_on_its_link(check_sdf, tmp_path: Path) -> None:  # noqa: F811
     robot = _two_armed()
     path = tmp_path / 'two_arms.urdf'

@@ -86,6 +86,7 @@ def _compare_with_sdformat(robot: Robot, path: Path, convert_urdf) -> None:
 
 
 @pytest.mark.parametrize('name', ['lumping', 'massless_root', 'world_root'])
+@pytest.mark.engine
 def test_sdformat_rules_match_libsdformat_on_fixtures(name: str, convert_urdf) -> None:
     path = PREFLIGHT / f'{name}.urdf'
     _compare_with_sdformat(Robot.from_urdf(path), path, convert_urdf)
@@ -122,6 +123,7 @@ def _all_urdfs() -> list:
 
 
 @pytest.mark.parametrize('path', _all_urdfs())
+@pytest.mark.engine
 def test_sdformat_rules_match_libsdformat_on_real_robots(
         path: Path, convert_urdf, tmp_path: Path) -> None:
     robot, path = _readable(path, tmp_path)
@@ -150,6 +152,7 @@ def _mujoco_bodies(path: Path) -> set[str] | None:
 
 
 @pytest.mark.parametrize('path', _all_urdfs())
+@pytest.mark.engine
 def test_every_body_mujoco_merges_is_reported(path: Path, tmp_path: Path) -> None:
     robot, path = _readable(path, tmp_path)
     if robot is None:

@@ -60,6 +60,7 @@ def source(tmp_path: Path) -> Path:
     return path
 
 
+@pytest.mark.engine
 def test_convert_fix_writes_an_sdf_libsdformat_loads(check_sdf, source: Path,
                                                      tmp_path: Path) -> None:
     trimesh = require_module('trimesh')

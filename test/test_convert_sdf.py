@@ -29,6 +29,8 @@ from urdfgenpy_ros import Inertial, Joint, JointType, Link, Robot
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.formats.sdf_inertia import sdformat_refuses
 
+pytestmark = pytest.mark.engine  # libsdformat's checker
+
 FIXTURE = Path(__file__).parent / 'fixtures' / 'sdf' / 'refused_inertia.urdf'
 
 

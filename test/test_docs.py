@@ -35,6 +35,8 @@ from docs_given import GIVEN
 from helpers import check_urdf, REPO, urdfdom6_tool
 import pytest
 
+pytestmark = pytest.mark.docs  # every block of every page, in order
+
 PAGES = [REPO / 'README.md', *sorted((REPO / 'docs').glob('*.md'))]
 FENCE = re.compile(r'^(?P<indent>[ \t]*)```(?P<lang>[\w+-]*)[^\n`]*\n(?P<body>.*?)'
                    r'^(?P=indent)```[ \t]*$', re.M | re.S)

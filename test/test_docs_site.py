@@ -33,6 +33,8 @@ import pytest
 
 import urdfgenpy_ros
 
+pytestmark = pytest.mark.docs  # mkdocs build --strict
+
 
 @pytest.fixture(scope='module')
 def site(tmp_path_factory: pytest.TempPathFactory) -> Path:

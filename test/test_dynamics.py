@@ -134,6 +134,7 @@ def _robot(path: Path | str) -> Robot:
 
 
 @pytest.mark.parametrize('path', ROBOTS)
+@pytest.mark.engine
 def test_fk_and_jacobians_equal_pinocchio_at_random_configurations(path: Path) -> None:
     robot = _robot(path)
     judge = Pinocchio(robot)

@@ -102,6 +102,7 @@ def check_sdf(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 @pytest.mark.parametrize('name', sorted(EXPECTED))
+@pytest.mark.engine
 def test_links_said_to_be_dropped_are_the_ones_libsdformat_drops(
         name: str, check_sdf: Path, tmp_path: Path) -> None:
     import subprocess

@@ -198,6 +198,7 @@ def _corpus_files() -> list[Path]:
 
 @pytest.mark.parametrize('path', corpus_cases(_corpus_files(),
                                               [path.name for path in _corpus_files()]))
+@pytest.mark.slow
 def test_random_edits_on_corpus(path: Path, corpus: Path) -> None:
     """The same on every real robot of the corpus that both readers accept."""
     try:

@@ -116,6 +116,7 @@ def test_cli_inertia_with_malformed_numbers(mass: str, volume: str, tensor: list
     _assert_no_bug(result, {0, 2})
 
 
+@pytest.mark.slow  # 60 packages written
 @SLOW
 @given(name=st.one_of(st.text(max_size=12), st.sampled_from(['ok_description', 'a__b', '9x'])),
        build_type=st.sampled_from(['ament_cmake', 'ament_python', 'catkin', '']),

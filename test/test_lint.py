@@ -24,6 +24,7 @@ import pytest
 
 @pytest.mark.linter
 @pytest.mark.flake8
+@pytest.mark.slow
 def test_flake8() -> None:
     main = require_module('ament_flake8.main').main_with_errors
     require_module('flake8_quotes')
@@ -34,6 +35,7 @@ def test_flake8() -> None:
 
 @pytest.mark.linter
 @pytest.mark.pep257
+@pytest.mark.slow
 def test_pep257() -> None:
     main = require_module('ament_pep257.main').main
     require_module('pydocstyle')

@@ -39,6 +39,8 @@ import registry_robots
 from urdfgenpy_ros.formats import load
 from urdfgenpy_ros.formats.mjcf import MjcfRefusedError, write_mjcf
 
+pytestmark = pytest.mark.engine  # MuJoCo compiles and runs every real robot
+
 # more than a few seconds each (large meshes to convert and to hull)
 SLOW = {'cookie.urdf', 'panda.urdf', 'fr3.urdf', 'dual_fr3.urdf', 'upkie.urdf',
         'upkie_camera.urdf', 'kinova_robotiq.urdf'}

@@ -32,6 +32,7 @@ def _mypy(*arguments: str) -> subprocess.CompletedProcess[str]:
                           cwd=REPO, capture_output=True, text=True, timeout=600)
 
 
+@pytest.mark.slow
 def test_package_type_checks() -> None:
     result = _mypy('--config-file', 'setup.cfg')
     assert result.returncode == 0, result.stdout + result.stderr

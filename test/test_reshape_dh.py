@@ -110,6 +110,7 @@ def _biggest(a, b) -> float:
     return max(float(abs(x - y).max()) for x, y in zip(a, b))
 
 
+@pytest.mark.slow  # robotics-toolbox alone takes 2-3 s to import
 @pytest.mark.parametrize('convention', CONVENTIONS)
 @pytest.mark.parametrize('arm', sorted(ARMS))
 def test_extracted_table_has_the_urdfs_forward_kinematics(arm: str, convention: str,
@@ -131,6 +132,7 @@ def test_extracted_table_has_the_urdfs_forward_kinematics(arm: str, convention: 
     assert _biggest(urdf, [robot.fkine(q).A for q in configurations]) < 1e-9
 
 
+@pytest.mark.slow  # robotics-toolbox
 def test_panda_modified_table_is_robotics_toolboxs_own() -> None:
     rtb = require_module('roboticstoolbox')
     find, base, tip = ARMS['panda']

@@ -67,6 +67,7 @@ def _gazebo_shapes(binary: Path, path: Path) -> dict[str, str]:
             for node in root.iter('collision', 'visual')}
 
 
+@pytest.mark.engine
 def test_merged_collisions_keep_the_names_gazebos_lumping_gives_them(tmp_path: Path) -> None:
     binary = build_sdf_checker(tmp_path)
     source = tmp_path / 'leg.urdf'

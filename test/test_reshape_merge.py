@@ -76,6 +76,7 @@ def _frames(path: Path, configuration_seed: int, names: list[str]):
 
 
 @pytest.mark.parametrize('name', ROBOTS)
+@pytest.mark.engine
 def test_merged_links_carry_libsdformats_lumped_inertia(name: str, sdformat_inertials,
                                                         tmp_path: Path) -> None:
     numpy = require_module('numpy')

@@ -80,6 +80,7 @@ def robots(draw) -> Robot:
     return robot
 
 
+@pytest.mark.slow  # 150 robots
 @hypothesis.settings(max_examples=150, deadline=None)
 @hypothesis.given(robots())
 def test_write_then_read_gives_the_same_robot(robot: Robot) -> None:

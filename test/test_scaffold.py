@@ -90,6 +90,7 @@ def _sourced(workspace: Path, command: str) -> str:
     return result.stdout
 
 
+@pytest.mark.colcon
 def test_two_packages_macro_files_alone_make_one_coloured_robot(workspace: Path,
                                                                 tmp_path: Path) -> None:
     """Another package includes only the macro files: every colour comes along, once."""
@@ -116,6 +117,7 @@ def test_two_packages_macro_files_alone_make_one_coloured_robot(workspace: Path,
 
 
 @pytest.mark.parametrize('name', PACKAGES)
+@pytest.mark.colcon
 def test_installed_package_expands_to_a_valid_urdf(workspace: Path, name: str,
                                                    tmp_path: Path,
                                                    monkeypatch: pytest.MonkeyPatch) -> None:
@@ -137,6 +139,7 @@ def test_installed_package_expands_to_a_valid_urdf(workspace: Path, name: str,
 
 
 @pytest.mark.parametrize('name', PACKAGES)
+@pytest.mark.colcon
 def test_package_xml_covers_every_package_the_launch_files_use(workspace: Path,
                                                                name: str) -> None:
     catkin_pkg = require_module('catkin_pkg.package')

@@ -147,6 +147,7 @@ def test_the_package_expands_in_xacro_to_the_original_model(
 
 
 @pytest.mark.slow
+@pytest.mark.colcon
 def test_the_package_builds_and_its_tests_pass_with_colcon(
         workspace: Path, tmp_path: Path) -> None:
     require_module('colcon_core')

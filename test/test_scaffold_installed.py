@@ -27,6 +27,8 @@ import sysconfig
 from helpers import REPO
 import pytest
 
+pytestmark = pytest.mark.slow  # a wheel installed in a new venv
+
 PREFIX = REPO / 'test' / 'fixtures' / 'workspace' / 'prefix'  # holds other packages only
 _SOURCES = ('setup.py', 'setup.cfg', 'package.xml', 'README.md', 'LICENSE', 'resource',
             'templates', 'urdfgenpy_ros')

@@ -32,6 +32,8 @@ from urdfgenpy_ros.plugins import diff_drive, gz_ros2_control, joint_state_publi
 from urdfgenpy_ros.plugins import ros2_control
 from urdfgenpy_ros.sensors import Camera, ForceTorque, Imu, Lidar
 
+pytestmark = pytest.mark.engine  # libsdformat's checker, MuJoCo and PyBullet
+
 
 @pytest.fixture(scope='session')
 def check_sdf(tmp_path_factory: pytest.TempPathFactory):

@@ -30,6 +30,8 @@ import test_sdf
 from urdfgenpy_ros import Robot
 from urdfgenpy_ros.cli import main
 
+pytestmark = pytest.mark.engine  # libsdformat's checker
+
 check_sdf = test_sdf.check_sdf  # the session fixture running libsdformat's checker
 TENSOR = '<inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/>'
 CAMERA = f"""<?xml version="1.0"?>

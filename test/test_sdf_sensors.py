@@ -65,6 +65,7 @@ def _example_robot(relative: str) -> Path:
 
 @pytest.mark.parametrize('source', [
     'fixture', 'go1_description/urdf/go1.urdf', 'baxter_description/urdf/baxter.urdf'])
+@pytest.mark.engine
 def test_lumped_links_keep_their_sensors_where_sdformat_puts_them(
         source: str, sdformat_sensors, tmp_path: Path) -> None:
     urdf = (FIXTURES / 'lumped_sensors.urdf' if source == 'fixture'
@@ -93,6 +94,7 @@ def test_a_sensor_pose_relative_to_a_frame_stays_and_a_bad_one_is_named() -> Non
         robot.to_sdf(lump_fixed=True)
 
 
+@pytest.mark.engine
 def test_a_sensor_pose_in_degrees_is_merged_as_its_angles_mean(
         sdformat_sensors, tmp_path: Path) -> None:
     # libsdformat 12 reads the numbers of <pose degrees="true"> as radians when it merges the

@@ -293,6 +293,7 @@ def test_sarif_names_the_statics_rules(tmp_path: Path) -> None:
 
 
 @pytest.mark.parametrize('name', corpus_cases(['pr2']))
+@pytest.mark.slow
 def test_pr2_shoulders_need_their_counterbalance(name: str) -> None:
     """PR2's shoulder lift holds its arm with a spring: 30 N m of motor cannot alone."""
     pin = require_module('pinocchio')
@@ -358,6 +359,7 @@ def _example_robot(inside: str) -> Path:
     return path
 
 
+@pytest.mark.slow
 def test_seven_joint_xarm_against_pinocchio_and_scipy() -> None:
     """
     xArm7: each joint's worst case is at least the best of random samples refined by scipy.

@@ -260,6 +260,7 @@ def _has_error(robot: Robot, target: str) -> bool:
 
 
 @pytest.mark.parametrize('quats', [False, True])
+@pytest.mark.slow
 def test_check_errors_exactly_where_each_targets_urdfdom_refuses(tmp_path: Path,
                                                                  quats: bool) -> None:
     """Debian's check_urdf (urdfdom 3) judges --target jazzy, urdfdom 6 judges rolling."""
@@ -337,6 +338,7 @@ def check_sdf(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return build_sdf_checker(tmp_path_factory.mktemp('checker'))
 
 
+@pytest.mark.engine
 def test_sdf_of_a_quaternion_turned_visual_has_the_turn_in_libsdformat(
         tmp_path: Path, check_sdf: Path) -> None:
     numpy = require_module('numpy')

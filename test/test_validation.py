@@ -101,10 +101,16 @@ VERDICTS = {
 }
 
 
+# check_urdf never ends on a joint from a link to itself: it prints the loop for ever. A
+# second of that is its verdict (a file it reads takes it milliseconds), not 30.
+HANGS = {'S006'}
+
+
 @pytest.mark.parametrize('key', VERDICTS)
 def test_consumers_agree_or_accept_silently(key: str, tmp_path: Path) -> None:
     path = _write(tmp_path, key, broken(key))
-    assert (check_urdf_verdict(path), mujoco_accepts(path)) == VERDICTS[key]
+    urdfdom = check_urdf_verdict(path, timeout=1 if key in HANGS else 30)
+    assert (urdfdom, mujoco_accepts(path)) == VERDICTS[key]
 
 
 def test_every_error_code_has_a_consumer_verdict() -> None:
@@ -135,6 +141,7 @@ def _errors(path: Path, packages: list[Path]) -> list[str]:
 
 
 @pytest.mark.parametrize('original', _registry_params())
+@pytest.mark.engine
 def test_registry_robots_both_consumers_accept_have_no_error(
         original: Path, tmp_path: Path) -> None:
     path = original
@@ -148,6 +155,7 @@ def test_registry_robots_both_consumers_accept_have_no_error(
     assert _errors(path, search_paths()) == []
 
 
+@pytest.mark.engine
 def test_corpus_files_both_consumers_accept_have_no_error() -> None:
     corpus = corpus_file('.')
     clean = 0

@@ -60,6 +60,7 @@ def names(urdf: str) -> tuple[list[str], list[str]]:
 
 # ---- long-running processes ----------------------------------------------------------
 
+@pytest.mark.slow
 def test_200_reads_in_one_process_stay_the_same_and_flat() -> None:
     import gc
     import tracemalloc
