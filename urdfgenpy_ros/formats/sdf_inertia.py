@@ -57,4 +57,3 @@ def refusal(inertial: Inertial) -> tuple[str, str] | None:
 def sdformat_refuses(inertial: Inertial) -> bool:
     """Return whether libsdformat refuses a link with ``inertial``, as gz-math judges it."""
     return refusal(inertial) is not None
-

@@ -43,7 +43,8 @@ from urdfgenpy_ros.model_source import load_model
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.validation.consumers import is_physics_only, physics_warning
-from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions
+from urdfgenpy_ros.validation.review import review, ReviewOptions
+from urdfgenpy_ros.validation.suppressions import parse_codes
 
 if TYPE_CHECKING:  # imported when needed: sensor_msgs brings numpy, not needed to start
     from sensor_msgs.msg import JointState
@@ -139,6 +140,9 @@ class PublisherNode(Node):
             self.ignored = parse_codes(' '.join(self.values['ignore']))
         except ValueError as error:
             raise UrdfgenpyError(f"parameter 'ignore': {error}") from None
+        # what the node's review checks and silences (its gui's viewer shows the same)
+        self.review_options = ReviewOptions(search_paths=tuple(self.values['package_paths']),
+                                            target=self.values['target'], ignore=self.ignored)
         rate = self.values['rate']
         if isinstance(rate, bool) or not isinstance(rate, (int, float)) or not rate > 0:
             raise UrdfgenpyError(f"parameter 'rate': {rate!r} is not a positive number of Hz")
@@ -193,10 +197,9 @@ class PublisherNode(Node):
     def _load(self) -> tuple[Robot, list[str]]:
         robot, watched = load_model(self.values['model'], self.values['xacro_args'],
                                     self.values['package_paths'])
-        found = robot.validate(search_paths=self.values['package_paths'],
-                               target=self.values['target'])
-        # the file's own suppression comments, as `urdfgenpy check` reads them, and 'ignore'
-        findings, silenced = read_suppressions(robot, self.ignored).split(found)
+        # the file's own suppression comments count, as in `urdfgenpy check`, and 'ignore'
+        found = review(robot, self.review_options)
+        findings, silenced = found.findings, found.suppressed
         strict = self.values['strict']
         errors = [finding for finding in findings if finding.severity is Severity.ERROR
                   and (strict or not is_physics_only(finding))]
@@ -208,7 +211,7 @@ class PublisherNode(Node):
             else:
                 self.get_logger().warning(str(finding))
         if silenced:
-            codes = ', '.join(sorted({finding.code for finding, _ in silenced}))
+            codes = ', '.join(sorted({item.finding.code for item in silenced}))
             self.get_logger().info(f'{len(silenced)} finding(s) ignored ({codes}): parameter '
                                    "'ignore' or suppression comments in the file")
         if errors:

@@ -24,7 +24,7 @@ from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET
 from urdfgenpy_ros.validation.codes import CODES
 from urdfgenpy_ros.validation.review import (
-    Check, CHECKS, review, Review, ReviewOptions, run_checks, Suppressed)
+    Check, CHECKS, Review, review, ReviewOptions, run_checks, Suppressed)
 
 __all__ = ['Check', 'CHECKS', 'CODES', 'review', 'Review', 'ReviewOptions', 'Suppressed',
            'validate', 'ValidationError']

@@ -27,7 +27,8 @@ from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.floats import fmt
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.robot import Robot
-from urdfgenpy_ros.validation.fix import fix, FIXABLE, Repair
+from urdfgenpy_ros.validation.fix import fix, Repair
+from urdfgenpy_ros.validation.review import review, ReviewOptions
 
 DEFAULT_RADIUS = 0.05
 """Radius (m) of the solid sphere whose tensor a link without shapes gets."""
@@ -36,8 +37,8 @@ _TENSORS = ('I202', 'I203')
 
 def fix_for_output(robot: Robot, radius: float = DEFAULT_RADIUS) -> list[str]:
     """Repair ``robot``'s fixable errors in place; return one line per repair (or refusal)."""
-    errors = [finding for finding in robot.validate(check_meshes=False)
-              if finding.severity is Severity.ERROR and finding.code in FIXABLE]
+    found = review(robot, ReviewOptions(check_meshes=False, suppressions=False))
+    errors = [finding for finding in found.repairable if finding.severity is Severity.ERROR]
     repairs = fix(robot, errors)
     done = {(repair.code, repair.element) for repair in repairs}
     lines = [str(repair) for repair in repairs]

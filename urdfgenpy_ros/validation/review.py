@@ -49,7 +49,6 @@ from urdfgenpy_ros.validation.versions import check_versions
 from urdfgenpy_ros.validation.xacro_source import in_source
 
 
-
 @dataclass(frozen=True)
 class ReviewOptions:
     """
@@ -163,7 +162,7 @@ class Review:
 # ---- the checks -------------------------------------------------------------------------
 
 def _read_warnings(robot: Robot, findings: Findings, options: ReviewOptions) -> None:
-    """The reader's warnings, as serious as CODES says."""
+    """Add the reader's warnings, as serious as CODES says."""
     for warning in robot.read_warnings:
         findings.items.append(ValidationError(warning.code, CODES[warning.code][0],
                                               f'robot {robot.name!r}', warning.location,
@@ -227,8 +226,8 @@ CHECKS: tuple[Check, ...] = (
 """Every check, in the order a review runs them (and its findings are listed)."""
 
 
-def run_checks(robot: Robot, options: ReviewOptions) -> tuple[list[ValidationError],
-                                                               dict[str, list[ValidationError]]]:
+def run_checks(robot: Robot, options: ReviewOptions
+               ) -> tuple[list[ValidationError], dict[str, list[ValidationError]]]:
     """Return every finding of the enabled checks (at their source lines) and the refusals."""
     findings = Findings(robot)
     for check in CHECKS:
@@ -263,4 +262,3 @@ def review(robot: Robot, options: ReviewOptions | None = None) -> Review:
     result.repairable = [finding for finding in result.findings if finding.code in FIXABLE]
     result.needs = missing_defaults(robot, result.repairable, dict(options.limit_defaults))
     return result
-
