@@ -44,7 +44,7 @@ def view(path: Path, arguments: tuple[str, ...], port: int, host: str,
     """
     from urdfgenpy_ros.formats import load
     from urdfgenpy_ros.robot import Robot
-    from urdfgenpy_ros.validation.review import ReviewOptions
+    from urdfgenpy_ros.validation.checklist import ReviewOptions
     from urdfgenpy_ros.viewer.web import RobotViewer
     mappings = parse_mappings(arguments)
 

@@ -28,7 +28,7 @@ from urdfgenpy_ros.floats import fmt
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.fix import fix, Repair
-from urdfgenpy_ros.validation.review import review, ReviewOptions
+from urdfgenpy_ros.validation.checklist import review, ReviewOptions
 
 DEFAULT_RADIUS = 0.05
 """Radius (m) of the solid sphere whose tensor a link without shapes gets."""

@@ -40,7 +40,7 @@ from typing import Any
 from urdfgenpy_ros.errors import Severity, UrdfgenpyError, ValidationError
 from urdfgenpy_ros.joint import JointType
 from urdfgenpy_ros.robot import Robot
-from urdfgenpy_ros.validation.review import review, ReviewOptions, Suppressed
+from urdfgenpy_ros.validation.checklist import review, ReviewOptions, Suppressed
 from urdfgenpy_ros.viewer.scene import (
     inertia_box, joint_positions, link_matrices, MeshCache, Part, require, robot_parts)
 

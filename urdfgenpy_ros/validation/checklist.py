@@ -243,7 +243,7 @@ def review(robot: Robot, options: ReviewOptions | None = None) -> Review:
     Review ``robot``: every finding the ``options`` ask for, silenced ones apart.
 
     >>> from urdfgenpy_ros import Link, Robot
-    >>> result = review(Robot('r').add_link(Link('base_link')), ReviewOptions(ignore={'I201'}))
+    >>> result = review(Robot('r').add_link(Link('base_link')), ReviewOptions(ignore={'I209'}))
     >>> [finding.code for finding in result.findings], result.failed
     ([], False)
     """
