@@ -35,9 +35,9 @@ from urdfgenpy_ros.formats import DH_SUFFIXES, load
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET, TARGETS
+from urdfgenpy_ros.validation.checklist import Review, review, ReviewOptions
 from urdfgenpy_ros.validation.fix import carry_over, LIMIT_FIELDS
 from urdfgenpy_ros.validation.preflight import ENGINES
-from urdfgenpy_ros.validation.checklist import Review, review, ReviewOptions
 from urdfgenpy_ros.validation.xacro_source import EXPANDED
 
 

@@ -35,8 +35,8 @@ from urdfgenpy_ros.lumping import lump_fixed_joints
 from urdfgenpy_ros.report import counted
 from urdfgenpy_ros.resources import rebase_meshes
 from urdfgenpy_ros.robot import Robot
-from urdfgenpy_ros.validation.fix_output import DEFAULT_RADIUS, fix_for_output
 from urdfgenpy_ros.validation.checklist import review, ReviewOptions
+from urdfgenpy_ros.validation.fix_output import DEFAULT_RADIUS, fix_for_output
 from urdfgenpy_ros.validation.sdf_refusals import lumped_into
 
 

@@ -42,8 +42,8 @@ from urdfgenpy_ros.errors import Severity, UrdfgenpyError
 from urdfgenpy_ros.model_source import load_model
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
-from urdfgenpy_ros.validation.consumers import is_physics_only, physics_warning
 from urdfgenpy_ros.validation.checklist import review, ReviewOptions
+from urdfgenpy_ros.validation.consumers import is_physics_only, physics_warning
 from urdfgenpy_ros.validation.suppressions import parse_codes
 
 if TYPE_CHECKING:  # imported when needed: sensor_msgs brings numpy, not needed to start

@@ -25,8 +25,8 @@ from __future__ import annotations
 
 from urdfgenpy_ros.errors import UrdfgenpyError, ValidationError
 from urdfgenpy_ros.robot import Robot
-from urdfgenpy_ros.validation.fix_output import fix_for_output
 from urdfgenpy_ros.validation.checklist import review, ReviewOptions
+from urdfgenpy_ros.validation.fix_output import fix_for_output
 
 
 def preflight(robot: Robot, *, repair: bool = False, allow_errors: bool = False) -> list[str]:

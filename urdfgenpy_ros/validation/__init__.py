@@ -22,9 +22,9 @@ from os import PathLike
 from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET
-from urdfgenpy_ros.validation.codes import CODES
 from urdfgenpy_ros.validation.checklist import (
     Check, CHECKS, Review, review, ReviewOptions, run_checks, Suppressed)
+from urdfgenpy_ros.validation.codes import CODES
 
 __all__ = ['Check', 'CHECKS', 'CODES', 'review', 'Review', 'ReviewOptions', 'Suppressed',
            'validate', 'ValidationError']

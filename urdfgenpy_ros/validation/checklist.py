@@ -26,7 +26,7 @@ row of :data:`CHECKS`.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence, Set as AbstractSet
 from dataclasses import dataclass, field
 from os import PathLike
 from pathlib import Path
@@ -68,11 +68,11 @@ class ReviewOptions:
     :data:`CHECKS` (None: every row the other options enable).
     """
 
-    search_paths: tuple[str | PathLike[str], ...] = ()
+    search_paths: Sequence[str | PathLike[str]] = ()
     check_meshes: bool = True
     target: str | None = DEFAULT_TARGET
-    engines: tuple[str, ...] = ()
-    ignore: frozenset[str] = frozenset()
+    engines: Sequence[str] = ()
+    ignore: AbstractSet[str] = frozenset()
     suppressions: bool = True
     statics: bool = False
     payload: Mapping[str, object] | None = None
@@ -81,7 +81,7 @@ class ReviewOptions:
     write_sdf: bool = False
     limit_defaults: Mapping[str, float] = field(default_factory=dict)
     strict: bool = False
-    checks: tuple[str, ...] | None = None
+    checks: Sequence[str] | None = None
 
     def __post_init__(self) -> None:
         """Refuse an engine or check name that does not exist."""
@@ -250,7 +250,7 @@ def review(robot: Robot, options: ReviewOptions | None = None) -> Review:
     options = options or ReviewOptions()
     found, refused = run_checks(robot, options)
     silencing = (read_suppressions(robot, options.ignore) if options.suppressions
-                 else Suppressions(ignored=options.ignore))
+                 else Suppressions(ignored=frozenset(options.ignore)))
     result = Review(robot, options, refused=refused,
                     unknown_suppressions=list(silencing.unknown))
     for finding in found:

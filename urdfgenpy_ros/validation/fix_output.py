@@ -27,8 +27,8 @@ from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.floats import fmt
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.robot import Robot
-from urdfgenpy_ros.validation.fix import fix, Repair
 from urdfgenpy_ros.validation.checklist import review, ReviewOptions
+from urdfgenpy_ros.validation.fix import fix, Repair
 
 DEFAULT_RADIUS = 0.05
 """Radius (m) of the solid sphere whose tensor a link without shapes gets."""
