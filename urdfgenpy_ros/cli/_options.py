@@ -41,21 +41,6 @@ def parse_mappings(arguments: tuple[str, ...]) -> dict[str, str]:
     return mappings
 
 
-_LIBRARY_WORDS = (
-    ('pass its folder in search_paths / --package-path', 'pass its folder with -p/--package-path'),
-    ('pass its folder to validate(search_paths=...) or --package-path',
-     'pass its folder with -p/--package-path'),
-    ('pass its folder in search_paths', 'pass its folder with -p/--package-path'),
-)
-
-
-def in_cli_words(text: str) -> str:
-    """Return a library message with its package-folder fix said as the CLI option."""
-    for library, cli in _LIBRARY_WORDS:
-        text = text.replace(library, cli)
-    return text
-
-
 def _codes(ctx: click.Context, param: click.Parameter, values: tuple[str, ...]
            ) -> frozenset[str]:
     try:

@@ -25,7 +25,7 @@ import tempfile
 import click
 
 from urdfgenpy_ros.assembly_file import is_assembly
-from urdfgenpy_ros.cli._options import ignore_option, in_cli_words, input_options
+from urdfgenpy_ros.cli._options import ignore_option, input_options
 from urdfgenpy_ros.cli._options import parse_mappings
 from urdfgenpy_ros.cli.check_reports import FileReport, json_report, junit_report
 from urdfgenpy_ros.cli.check_reports import sarif_report
@@ -209,7 +209,7 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
 
 def _line(finding: ValidationError) -> str:
     """Return the finding's line, led by its file also when it has no line number."""
-    text, where = in_cli_words(str(finding)), finding.location
+    text, where = str(finding), finding.location
     if where.line is None and where.file and where.path:  # made by a Xacro macro
         return f'{where.file}: {text.removeprefix(f"{where}: ")}'
     return text
@@ -279,7 +279,7 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
             report.notes.append(f'{path}: note: skipped, it holds {what} only (the '
                                 f'files that include it are checked): X003 {said}')
         else:
-            report.error = in_cli_words(one_line(error))
+            report.error = one_line(error)
         report.findings, report.suppressed, report.repairs = [], [], []
     return report
 

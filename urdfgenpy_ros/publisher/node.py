@@ -41,7 +41,7 @@ from std_msgs.msg import String
 from urdfgenpy_ros.errors import Severity, UrdfgenpyError
 from urdfgenpy_ros.model_source import load_model
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
-from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
+from urdfgenpy_ros.report import boundary, FrontEnd, KNOWN_ERRORS, one_line
 from urdfgenpy_ros.validation.checklist import review, ReviewOptions
 from urdfgenpy_ros.validation.consumers import is_physics_only, physics_warning
 from urdfgenpy_ros.validation.suppressions import parse_codes
@@ -380,26 +380,36 @@ class _TfPublisher:
             for entry in self.transforms.moving(positions)]))
 
 
+EXIT_NODE_ERROR = 1
+"""The node's exit status for a user's mistake (a bad file, model or parameter)."""
+
+
+def _start() -> PublisherNode:
+    try:
+        return PublisherNode()
+    except rclpy.exceptions.InvalidParameterTypeException as error:
+        raise UrdfgenpyError(f"bad parameter: {error} (see the README for each parameter's "
+                             'type)') from None
+
+
 def main(args: list[str] | None = None) -> int:
     """Run the node until Ctrl-C; return 1 (one log line) when it cannot start."""
     rclpy.init(args=args)
     node = None
+    said = FrontEnd(None, exit_code=EXIT_NODE_ERROR,  # the logger names the node
+                    say=rclpy.logging.get_logger('urdfgenpy_publisher').error)
     try:
-        node = PublisherNode()
-        rclpy.spin(node)
+        with boundary(said):
+            node = _start()
+            rclpy.spin(node)
+    except SystemExit as stop:
+        return stop.code if isinstance(stop.code, int) else EXIT_NODE_ERROR
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
     except rclpy_implementation.RCLError:
         if rclpy.ok():
             raise
         # Ctrl-C shut the context down while a timer was publishing: a normal stop
-    except KNOWN_ERRORS as error:
-        rclpy.logging.get_logger('urdfgenpy_publisher').error(one_line(error))
-        return 1
-    except rclpy.exceptions.InvalidParameterTypeException as error:
-        rclpy.logging.get_logger('urdfgenpy_publisher').error(
-            f"bad parameter: {error} (see the README for each parameter's type)")
-        return 1
     finally:
         if node is not None:
             if node.gui is not None:

@@ -39,6 +39,7 @@ from typing import Any
 
 from urdfgenpy_ros.errors import Severity, UrdfgenpyError, ValidationError
 from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.checklist import review, ReviewOptions, Suppressed
 from urdfgenpy_ros.viewer.scene import (
@@ -384,11 +385,16 @@ class RobotViewer:
     # ---- reloading -------------------------------------------------------------------
 
     def reload(self) -> bool:
-        """Load the robot again; on failure keep the last one and show the error."""
+        """
+        Load the robot again; on a user's mistake keep the last one and show it in one line.
+
+        A bug (any other exception) is raised, with its traceback.
+        """
         try:
             robot = self._load()
-        except (UrdfgenpyError, OSError, ValueError) as error:
-            self._set_status(f'**reload failed** (showing the last good model): {error}')
+        except KNOWN_ERRORS as error:
+            self._set_status(f'**reload failed** (showing the last good model): '
+                             f'{one_line(error)}')
             return False
         self.status = f'reloaded at {time.strftime("%H:%M:%S")}'
         self.show(robot)
