@@ -115,7 +115,8 @@ class Suppressed(NamedTuple):
     finding: ValidationError
     reason: str
     source: str
-    """What silenced it: ``the ignore option`` or ``the comment at FILE:LINE``."""
+    """What silenced it: ``the ignore option``, ``an ignore-file comment`` or ``the ignore
+    comment before line N``."""
 
 
 @dataclass
