@@ -230,7 +230,7 @@ def _review(robot: Robot, path: Path, options: ReviewOptions, report: FileReport
 
 def _render(report: FileReport, found: Review) -> None:
     report.findings = found.findings
-    report.suppressed = [(finding, reason) for finding, reason, _ in found.suppressed]
+    report.suppressed = found.suppressed
 
 
 def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> FileReport:
