@@ -167,3 +167,27 @@ def test_each_check_is_one_declared_row() -> None:
     assert all(set(check.options) <= fields for check in CHECKS)
     with pytest.raises(ValueError, match="unknown engine 'bullet'"):
         ReviewOptions(engines=('bullet',))
+
+
+FRONT_ENDS = ('cli', 'publisher', 'viewer', 'scaffold')
+CHECK_CALLS = {'validate', 'preflight', 'read_suppressions', 'sdformat_findings',
+               'mujoco_findings', 'sdformat_refusals', 'fix', 'run_checks'}
+
+
+def test_no_front_end_runs_a_check_itself() -> None:
+    """The front ends import the review, never a check, and call no validate()."""
+    import ast
+    from helpers import REPO
+    offences = []
+    for folder in FRONT_ENDS:
+        for path in sorted((REPO / 'urdfgenpy_ros' / folder).glob('*.py')):
+            for node in ast.walk(ast.parse(path.read_text(), str(path))):
+                if isinstance(node, ast.ImportFrom) and (node.module or '').startswith(
+                        'urdfgenpy_ros.validation'):
+                    offences += [f'{path.name}: imports {alias.name}' for alias in node.names
+                                 if alias.name.startswith('check_')
+                                 or alias.name in CHECK_CALLS]
+                if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) \
+                        and node.func.attr == 'validate':
+                    offences.append(f'{path.name}:{node.lineno}: calls .validate()')
+    assert offences == []
