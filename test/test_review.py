@@ -151,7 +151,10 @@ def test_fix_repairs_what_the_review_calls_repairable(probe: Path) -> None:
     with_default = review(robot, ReviewOptions(suppressions=False,
                                                limit_defaults={'effort': 5.0}))
     assert with_default.needs == []
+    planned = with_default.preview()
+    assert robot.get_joint('pan').axis == (0.0, 0.0, 2.0)  # a preview changes nothing
     repairs = with_default.fix()
+    assert repairs == planned
     assert [repair.code for repair in repairs] == ['J102', 'J106']
     joint = robot.get_joint('pan')
     assert joint.axis == (0.0, 0.0, 1.0) and joint.limit.effort == 5.0

@@ -27,6 +27,7 @@ row of :data:`CHECKS`.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence, Set as AbstractSet
+import copy
 from dataclasses import dataclass, field
 from os import PathLike
 from pathlib import Path
@@ -158,6 +159,11 @@ class Review:
     def fix(self) -> list[Repair]:
         """Repair the ``repairable`` findings in ``robot``, in place; return what was done."""
         return fix(self.robot, self.repairable, dict(self.options.limit_defaults))
+
+    def preview(self) -> list[Repair]:
+        """Return what ``fix()`` would do, made on a copy: ``robot`` is left as it is."""
+        return fix(copy.deepcopy(self.robot), self.repairable,
+                   dict(self.options.limit_defaults))
 
 
 # ---- the checks -------------------------------------------------------------------------
