@@ -112,6 +112,8 @@ def test_a_bug_under_init_is_a_traceback(tmp_path: Path) -> None:
 def test_a_wrong_value_under_init_is_one_line(tmp_path: Path) -> None:
     result = _run(RUN_INIT, 'r_description', '--from', 'missing.urdf', cwd=tmp_path)
     _one_line(result, 'urdfgenpy init', '--from: missing.urdf does not exist')
+    result = _run(RUN_INIT, 'r_description', '--build-type', 'catkin', cwd=tmp_path)
+    _one_line(result, 'urdfgenpy init', "argument --build-type: invalid choice: 'catkin'")
 
 
 def test_ros2_pkg_scaffold_says_its_own_name(

@@ -125,5 +125,6 @@ def exit_status(front_end: FrontEnd, body: Callable[[], int | None]) -> int:
     try:
         with boundary(front_end):
             return body() or 0
-    except SystemExit as stop:
-        return stop.code if isinstance(stop.code, int) else front_end.exit_code
+    except SystemExit as stop:  # the boundary's, or argparse's (--help: 0)
+        return 0 if stop.code is None else stop.code if isinstance(stop.code, int) \
+            else front_end.exit_code

@@ -402,7 +402,7 @@ def main(args: list[str] | None = None) -> int:
         with boundary(said):
             node = _start()
             rclpy.spin(node)
-    except SystemExit as stop:
+    except SystemExit as stop:  # the boundary said the user's mistake
         return stop.code if isinstance(stop.code, int) else EXIT_NODE_ERROR
     except (KeyboardInterrupt, ExternalShutdownException):
         pass

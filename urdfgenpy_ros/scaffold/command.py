@@ -21,6 +21,7 @@ from collections.abc import Sequence
 import copy
 from pathlib import Path
 import sys
+from typing import NoReturn
 
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.model_source import INIT_WORDS, load_model
@@ -92,9 +93,17 @@ def _create(args: argparse.Namespace) -> int:
     return 0
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse's parser, whose usage errors are the boundary's one line."""
+
+    def error(self, message: str) -> NoReturn:
+        """Raise the usage error, naming where the options are listed."""
+        raise UrdfgenpyError(f'{message} (see {self.prog} --help)')
+
+
 def main(argv: Sequence[str] | None = None) -> int:
-    """Run the command with ``argv``."""
-    parser = argparse.ArgumentParser(prog='urdfgenpy init',
-                                     description='Create a ROS 2 description package.')
+    """Run the command with ``argv``; a usage error is one line too."""
+    parser = _Parser(prog='urdfgenpy init', description='Create a ROS 2 description package.')
     add_arguments(parser)
-    return run(parser.parse_args(argv))
+    front_end = FrontEnd(parser.prog)
+    return exit_status(front_end, lambda: run(parser.parse_args(argv), parser.prog))
