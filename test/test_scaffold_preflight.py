@@ -72,7 +72,7 @@ def test_a_robot_with_errors_is_refused_with_its_findings(
     assert _init(source, tmp_path / 'out') == 2
     err = capsys.readouterr().err.splitlines()
     assert err[0].startswith(f'{source}:') and "error I203 link 'base_link'" in err[0]
-    assert err[-1].startswith('error: the robot has 1 error (above)')
+    assert err[-1].startswith('urdfgenpy init: the robot has 1 error (above)')
     assert '--fix' in err[-1] and '--allow-errors' in err[-1]
     assert not (tmp_path / 'out').exists()
 

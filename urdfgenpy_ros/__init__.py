@@ -19,6 +19,8 @@ Build, read, check and publish robot descriptions for ROS 2.
 >>> robot = Robot('demo').add_link(Link('base_link'))
 """
 
+from typing import Any, TYPE_CHECKING
+
 from urdfgenpy_ros.errors import (
     ModelError, ParseError, Severity, SourceLocation, UrdfgenpyError, ValidationError)
 from urdfgenpy_ros.extensions import Extension
@@ -31,12 +33,24 @@ from urdfgenpy_ros.link import Collision, Link, Visual
 from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.robot import Robot
 
+if TYPE_CHECKING:  # imported on first use (see __getattr__): the checks are not needed to start
+    from urdfgenpy_ros.validation.checklist import Review, review, ReviewOptions
+
 __version__ = '0.1.0'
 
 __all__ = [
     'Box', 'Capsule', 'Collision', 'Cylinder', 'Extension', 'Geometry', 'Inertial', 'Joint',
     'JointCalibration', 'JointDynamics', 'JointLimit', 'JointMimic', 'JointType', 'Link',
-    'Material', 'Mesh', 'ModelError', 'Origin', 'ParseError', 'Robot', 'SafetyController',
-    'Severity', 'SourceLocation', 'Sphere', 'UrdfgenpyError', 'ValidationError', 'Visual',
-    '__version__',
+    'Material', 'Mesh', 'ModelError', 'Origin', 'ParseError', 'Review', 'review',
+    'ReviewOptions', 'Robot', 'SafetyController', 'Severity', 'SourceLocation', 'Sphere',
+    'UrdfgenpyError', 'ValidationError', 'Visual', '__version__',
 ]
+_REVIEW = ('Review', 'review', 'ReviewOptions')
+
+
+def __getattr__(name: str) -> Any:
+    """Return the library review's names (``review``, ``ReviewOptions``, ``Review``)."""
+    if name in _REVIEW:
+        from urdfgenpy_ros.validation import checklist
+        return getattr(checklist, name)
+    raise AttributeError(f'module {__name__!r} has no attribute {name!r}')

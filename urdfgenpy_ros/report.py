@@ -13,26 +13,69 @@
 # limitations under the License.
 
 """
-The one error boundary of every front end: the CLI, the node, init and ``ros2 pkg scaffold``.
+The one error boundary of every front end: the CLI, ``init``, the node and the viewer.
 
-A known error (this package's own, or the operating system refusing a file) is something
-the user can fix: it is shown as one line and the program exits with a documented status.
-Anything else is a bug in this package and keeps its traceback.
+``ros2 pkg scaffold`` is ``init``'s command. A user's mistake (this package's own errors,
+the operating system refusing one of their files, a front end's usage errors such as
+click's) is something the user can fix: it is shown as one line, ``prog: file:line:
+element: message (fix)``, and the program exits with its documented status (2; the node
+1). Anything else is a bug in this package and keeps its traceback. Inside the boundary,
+messages name the front end's own option for package folders (:func:`folder_fix`).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+from contextvars import ContextVar
+from dataclasses import dataclass
 import sys
 import traceback
 
 from urdfgenpy_ros.errors import UrdfgenpyError
 
 EXIT_KNOWN_ERROR = 2
-"""Exit status of the command-line tools for a known error (the node exits 1)."""
+"""Exit status of the command-line tools for a user's mistake (the node exits 1)."""
 
-KNOWN_ERRORS = (UrdfgenpyError, OSError)
+KNOWN_ERRORS: tuple[type[BaseException], ...] = (UrdfgenpyError, OSError)
+"""The user's mistakes every front end knows: this package's errors, and OSError."""
+
+
+def _to_stderr(line: str) -> None:
+    print(line, file=sys.stderr)
+
+
+@dataclass(frozen=True)
+class FrontEnd:
+    """
+    How one front end says a user's mistake: ``prog: line`` through ``say``, then exit.
+
+    ``prog`` leads the line (None: the logger names the program already); ``usage_errors``
+    are the front end's own user-error types (click's UsageError); ``package_paths`` is how
+    it names the folders ``$(find pkg)`` and ``package://`` resolve through;
+    ``verbose()`` true prints the traceback too.
+    """
+
+    prog: str | None
+    exit_code: int = EXIT_KNOWN_ERROR
+    say: Callable[[str], None] = _to_stderr
+    package_paths: str = 'in search_paths / --package-path'
+    verbose: Callable[[], bool] = lambda: False
+    usage_errors: tuple[type[BaseException], ...] = ()
+
+    def line(self, error: BaseException) -> str:
+        """Return the one line saying ``error``."""
+        return f'{self.prog}: {one_line(error)}' if self.prog else one_line(error)
+
+
+LIBRARY = FrontEnd(None)
+"""Python callers: no boundary, the library's own words."""
+_CURRENT: ContextVar[FrontEnd] = ContextVar('urdfgenpy_front_end', default=LIBRARY)
+
+
+def folder_fix() -> str:
+    """Return how the running front end says "give the folder holding the package"."""
+    return f'pass its folder {_CURRENT.get().package_paths}'
 
 
 def counted(count: int, noun: str) -> str:
@@ -44,26 +87,44 @@ def one_line(error: BaseException) -> str:
     """Return the line a user sees for a known error."""
     if isinstance(error, OSError) and error.filename is not None:
         return f'{error.filename}: {error.strerror or error}'
-    return ' '.join(str(error).split()) or type(error).__name__
+    said = getattr(error, 'format_message', None)  # click's, with the option it names
+    text = said() if callable(said) else str(error)
+    return ' '.join(text.split()) or type(error).__name__
 
 
-def _to_stderr(line: str) -> None:
-    print(line, file=sys.stderr)
+def is_user_error(error: BaseException, front_end: FrontEnd | None = None) -> bool:
+    """Return whether ``error`` is a user's mistake (one line) rather than a bug (traceback)."""
+    extra = front_end.usage_errors if front_end is not None else ()
+    return isinstance(error, (*KNOWN_ERRORS, *extra))
 
 
 @contextmanager
-def known_errors_as_one_line(prefix: str = '', exit_code: int = EXIT_KNOWN_ERROR,
-                             say: Callable[[str], None] = _to_stderr,
-                             verbose: Callable[[], bool] = lambda: False) -> Iterator[None]:
+def boundary(front_end: FrontEnd) -> Iterator[None]:
     """
-    Turn a known error inside the block into one line (via ``say``) and ``SystemExit``.
+    Say a user's mistake inside the block in one line and raise ``SystemExit``.
 
-    When ``verbose()`` is true the traceback is printed too. Other exceptions pass unchanged.
+    The lines an error carries in ``lines`` (the findings behind a refusal) come first.
+    Any other exception, a bug, passes unchanged with its traceback.
     """
+    token = _CURRENT.set(front_end)
     try:
         yield
-    except KNOWN_ERRORS as error:
-        if verbose():
+    except (*KNOWN_ERRORS, *front_end.usage_errors) as error:
+        if front_end.verbose():
             traceback.print_exc()
-        say(f'{prefix}{one_line(error)}')
-        raise SystemExit(exit_code) from None
+        for line in getattr(error, 'lines', ()):
+            front_end.say(str(line))
+        front_end.say(front_end.line(error))
+        raise SystemExit(front_end.exit_code) from None
+    finally:
+        _CURRENT.reset(token)
+
+
+def exit_status(front_end: FrontEnd, body: Callable[[], int | None]) -> int:
+    """Run ``body`` inside the boundary; return its status, or the front end's on a mistake."""
+    try:
+        with boundary(front_end):
+            return body() or 0
+    except SystemExit as stop:  # the boundary's, or argparse's (--help: 0)
+        return 0 if stop.code is None else stop.code if isinstance(stop.code, int) \
+            else front_end.exit_code

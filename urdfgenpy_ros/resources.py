@@ -26,6 +26,7 @@ from urllib.parse import unquote, urlparse
 from lxml import etree
 
 from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.report import folder_fix
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -123,7 +124,7 @@ class PackageResolver:
             directory = self.find(parsed.netloc)
             if directory is None:
                 raise ResourceError(f'package {parsed.netloc!r} of {uri!r} not found (source '
-                                    'its workspace, or pass its folder in search_paths)')
+                                    f'its workspace, or {folder_fix()})')
             path = directory / unquote(parsed.path).lstrip('/')
         elif parsed.scheme == 'file':
             relative = relative_file_uri(uri)

@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import click
 
-from urdfgenpy_ros.cli._options import in_cli_words
 from urdfgenpy_ros.cli.attach import attach
 from urdfgenpy_ros.cli.check import check
 from urdfgenpy_ros.cli.convert import convert
@@ -31,22 +30,29 @@ from urdfgenpy_ros.cli.mirror import mirror
 from urdfgenpy_ros.cli.render import render
 from urdfgenpy_ros.cli.tree import tree
 from urdfgenpy_ros.cli.view import view
-from urdfgenpy_ros.report import known_errors_as_one_line
+from urdfgenpy_ros.report import boundary, FrontEnd
 
 
 class _Group(click.Group):
-    """A group that prints known errors as one line and exits 2; bugs keep their traceback."""
+    """A group inside the one boundary: a user's mistake is one line and exit 2."""
 
     def invoke(self, ctx: click.Context) -> object:
         def verbose() -> bool:  # set by main() below, once the options are parsed
             return bool(ctx.obj and ctx.obj.get('verbose'))
 
-        with known_errors_as_one_line('urdfgenpy: ', say=_echo_error, verbose=verbose):
-            return super().invoke(ctx)
+        with boundary(FrontEnd('urdfgenpy', say=_echo_error, verbose=verbose,
+                               package_paths='with -p/--package-path',
+                               usage_errors=(click.UsageError,))):
+            try:
+                return super().invoke(ctx)
+            except click.UsageError as error:  # one line, naming where the options are
+                where = error.ctx.command_path if error.ctx is not None else 'urdfgenpy'
+                raise click.UsageError(f'{error.format_message()} (see {where} --help)'
+                                       ) from None
 
 
 def _echo_error(line: str) -> None:
-    click.echo(in_cli_words(line), err=True)
+    click.echo(line, err=True)
 
 
 @click.group(cls=_Group, context_settings={'help_option_names': ['-h', '--help']})

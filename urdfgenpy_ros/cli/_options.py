@@ -24,6 +24,7 @@ import click
 
 from urdfgenpy_ros.formats import load
 from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.validation.suppressions import parse_codes
 
 
 def parse_mappings(arguments: tuple[str, ...]) -> dict[str, str]:
@@ -40,19 +41,19 @@ def parse_mappings(arguments: tuple[str, ...]) -> dict[str, str]:
     return mappings
 
 
-_LIBRARY_WORDS = (
-    ('pass its folder in search_paths / --package-path', 'pass its folder with -p/--package-path'),
-    ('pass its folder to validate(search_paths=...) or --package-path',
-     'pass its folder with -p/--package-path'),
-    ('pass its folder in search_paths', 'pass its folder with -p/--package-path'),
-)
+def _codes(ctx: click.Context, param: click.Parameter, values: tuple[str, ...]
+           ) -> frozenset[str]:
+    try:
+        return frozenset().union(*(parse_codes(value) for value in values))
+    except ValueError as error:
+        raise click.BadParameter(str(error)) from None
 
 
-def in_cli_words(text: str) -> str:
-    """Return a library message with its package-folder fix said as the CLI option."""
-    for library, cli in _LIBRARY_WORDS:
-        text = text.replace(library, cli)
-    return text
+def ignore_option(function: Callable[..., Any]) -> Callable[..., Any]:
+    """Add ``--ignore CODES`` (repeatable): finding codes the review silences."""
+    return click.option('--ignore', 'ignored', multiple=True, callback=_codes,
+                        metavar='CODES',
+                        help='Codes to silence, e.g. I205,C401 (repeatable).')(function)
 
 
 def input_options(function: Callable[..., Any]) -> Callable[..., Any]:

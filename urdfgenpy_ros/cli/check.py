@@ -25,7 +25,8 @@ import tempfile
 import click
 
 from urdfgenpy_ros.assembly_file import is_assembly
-from urdfgenpy_ros.cli._options import in_cli_words, input_options, parse_mappings
+from urdfgenpy_ros.cli._options import ignore_option, input_options
+from urdfgenpy_ros.cli._options import parse_mappings
 from urdfgenpy_ros.cli.check_reports import FileReport, json_report, junit_report
 from urdfgenpy_ros.cli.check_reports import sarif_report
 from urdfgenpy_ros.cli.inputs import description_files
@@ -34,35 +35,17 @@ from urdfgenpy_ros.formats import DH_SUFFIXES, load
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET, TARGETS
-from urdfgenpy_ros.validation.fix import carry_over, fix, LIMIT_FIELDS
-from urdfgenpy_ros.validation.fix import missing_defaults
-from urdfgenpy_ros.validation.preflight import ENGINES, preflight
-from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions
-from urdfgenpy_ros.validation.xacro_source import EXPANDED, in_source
+from urdfgenpy_ros.validation.checklist import Review, review, ReviewOptions
+from urdfgenpy_ros.validation.fix import carry_over, LIMIT_FIELDS
+from urdfgenpy_ros.validation.preflight import ENGINES
+from urdfgenpy_ros.validation.xacro_source import EXPANDED
 
 
 @dataclass(frozen=True)
 class _Options:
-    check_meshes: bool
-    package_paths: tuple[Path, ...]
-    engines: tuple[str, ...]
-    ignored: frozenset[str]
+    review: ReviewOptions
     fix: bool
     dry_run: bool
-    limit_defaults: dict[str, float]
-    target: str = DEFAULT_TARGET
-    statics: bool = False
-    payload: dict[str, object] | None = None
-    statics_margin: float = 1.0
-    mjcf: Path | None = None
-
-
-def _codes(ctx: click.Context, param: click.Parameter, values: tuple[str, ...]
-           ) -> frozenset[str]:
-    try:
-        return frozenset().union(*(parse_codes(value) for value in values))
-    except ValueError as error:
-        raise click.BadParameter(str(error)) from None
 
 
 def _engines(ctx: click.Context, param: click.Parameter, value: str | None
@@ -123,8 +106,7 @@ def _margin(ctx: click.Context, param: click.Parameter, value: float | None
               help='Write the report to this file instead of standard output.')
 @click.option('--strict', is_flag=True, help='Fail on warnings too.')
 @click.option('--no-meshes', is_flag=True, help='Do not check that mesh files exist.')
-@click.option('--ignore', 'ignored', multiple=True, callback=_codes, metavar='CODES',
-              help='Codes to silence, e.g. I205,C401 (repeatable).')
+@ignore_option
 @click.option('--engines', callback=_engines, metavar='mujoco,gazebo',
               help='Also report what these engines change or drop when they load the file.')
 @click.option('--fix', 'repair', is_flag=True,
@@ -178,9 +160,11 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
     # a checked folder (a colcon src/) resolves the packages under it, after -p's
     package_paths += tuple(Path(item) for item in inputs
                            if ':=' not in item and Path(item).is_dir())
-    options = _Options(not no_meshes, package_paths, engines, ignored, repair, dry_run,
-                       limit_defaults, target, statics, payload,
-                       1.0 if statics_margin is None else statics_margin, mjcf)
+    options = _Options(ReviewOptions(
+        search_paths=package_paths, check_meshes=not no_meshes, target=target,
+        engines=engines, ignore=ignored, statics=statics, payload=payload,
+        statics_margin=1.0 if statics_margin is None else statics_margin, mjcf=mjcf,
+        limit_defaults=limit_defaults, strict=strict), repair, dry_run)
     text = output == 'text'
     done = 'to fix' if dry_run else 'fixed'
     lines: list[str] = []
@@ -225,52 +209,51 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
 
 def _line(finding: ValidationError) -> str:
     """Return the finding's line, led by its file also when it has no line number."""
-    text, where = in_cli_words(str(finding)), finding.location
+    text, where = str(finding), finding.location
     if where.line is None and where.file and where.path:  # made by a Xacro macro
         return f'{where.file}: {text.removeprefix(f"{where}: ")}'
     return text
 
 
-def _findings(robot: Robot, options: _Options) -> list[ValidationError]:
-    found = robot.validate(check_meshes=options.check_meshes,
-                           search_paths=options.package_paths, target=options.target,
-                           statics=options.statics, payload=options.payload,
-                           statics_margin=options.statics_margin, mjcf=options.mjcf)
-    if options.engines:
-        found += in_source(preflight(robot, options.engines, options.package_paths), robot)
-    return found
+def _review(robot: Robot, path: Path, options: ReviewOptions, report: FileReport) -> Review:
+    """Review ``robot``; without the --payload link, say so and review it without statics."""
+    try:
+        return review(robot, options)
+    except ModelError:
+        if options.payload is None or any(link.name == options.payload['link']
+                                          for link in robot.links):
+            raise
+        report.payload = (f'{path}: error: --payload: {options.payload["link"]!r} is not '
+                          'a link of this robot: its statics were not checked')
+        return review(robot, replace(options, statics=False))
+
+
+def _render(report: FileReport, found: Review) -> None:
+    report.findings = found.findings
+    report.suppressed = found.suppressed
 
 
 def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> FileReport:
-    """Read, validate, pre-flight, silence and (with --fix) repair one file."""
+    """Read and review one file; with --fix, apply the review's repairs and review again."""
     report = FileReport(str(path))
     try:
-        robot = load(path, mappings, options.package_paths)
-        suppressions = read_suppressions(robot, options.ignored)
+        robot = load(path, mappings, options.review.search_paths)
+        found = _review(robot, path, options.review, report)
         expanded = robot.source is not None and (robot.source.file or '').endswith(EXPANDED)
         report.notes += [f'{path}{"" if expanded else f":{line}"}: warning: the suppression '
                          f'comment names {word!r}, which is not a finding code: it silences '
-                         'nothing (codes look like I205)' for line, word in suppressions.unknown]
-        try:
-            found = _findings(robot, options)
-        except ModelError:
-            if options.payload is None or any(link.name == options.payload['link']
-                                              for link in robot.links):
-                raise
-            report.payload = (f'{path}: error: --payload: {options.payload["link"]!r} is not '
-                              'a link of this robot: its statics were not checked')
-            found = _findings(robot, replace(options, statics=False))
-        report.findings, report.suppressed = suppressions.split(found)
+                         'nothing (codes look like I205)'
+                         for line, word in found.unknown_suppressions]
+        _render(report, found)
         if not options.fix:
             return report
         before = robot.to_urdf()
-        repairs = fix(robot, report.findings, options.limit_defaults)
+        repairs = found.fix()
         refusal = _not_rewritable(path, robot, len(repairs))
         if refusal is not None:  # nothing is written: no word on missing defaults either
             report.refused = refusal if repairs else None
             return report
-        report.notes += [f'{path}: {line}' for line in missing_defaults(
-            robot, report.findings, options.limit_defaults)]
+        report.notes += [f'{path}: {line}' for line in found.needs]
         if not repairs:
             return report
         old = path.read_bytes().decode('utf-8', 'surrogateescape')  # other bytes stay
@@ -288,9 +271,7 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
                 f'a/{path.as_posix()}', f'b/{path.as_posix()}')), nl=False)
             return report
         _replace(path, new)
-        fixed = Robot.from_urdf_string(new, file=str(path))
-        report.findings, report.suppressed = read_suppressions(
-            fixed, options.ignored).split(_findings(fixed, options))
+        _render(report, review(Robot.from_urdf_string(new, file=str(path)), options.review))
     except KNOWN_ERRORS as error:
         said = str(getattr(error, 'message', error))
         if getattr(error, 'code', None) == 'X003':  # a macro library: checked where included
@@ -298,7 +279,7 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
             report.notes.append(f'{path}: note: skipped, it holds {what} only (the '
                                 f'files that include it are checked): X003 {said}')
         else:
-            report.error = in_cli_words(one_line(error))
+            report.error = one_line(error)
         report.findings, report.suppressed, report.repairs = [], [], []
     return report
 

@@ -25,6 +25,7 @@ from urllib.parse import quote
 from xml.etree import ElementTree
 
 from urdfgenpy_ros.errors import Severity, ValidationError
+from urdfgenpy_ros.validation.checklist import Suppressed
 from urdfgenpy_ros.validation.codes import CODES, PREFLIGHT_HINTS
 from urdfgenpy_ros.validation.fix import Repair
 from urdfgenpy_ros.validation.xacro_source import EXPANDED
@@ -40,7 +41,8 @@ class FileReport:
     path: str
     error: str | None = None
     findings: list[ValidationError] = field(default_factory=list)
-    suppressed: list[tuple[ValidationError, str]] = field(default_factory=list)
+    suppressed: list[Suppressed] = field(default_factory=list)
+    """The review's silenced findings: finding, reason (inSource, external), what said so."""
     repairs: list[Repair] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
     refused: str | None = None
@@ -57,8 +59,8 @@ def json_report(reports: list[FileReport]) -> str:
         if report.error is not None:
             entry['error'] = report.error
         entry['findings'] = [finding.as_dict() for finding in report.findings]
-        entry['suppressed'] = [{**finding.as_dict(), 'suppression': kind}
-                               for finding, kind in report.suppressed]
+        entry['suppressed'] = [{**finding.as_dict(), 'suppression': kind, 'by': source}
+                               for finding, kind, source in report.suppressed]
         entry['fixed'] = [repair.as_dict() for repair in report.repairs]
         entry['notes'] = report.notes
         entry['not_fixed'] = report.refused
@@ -126,7 +128,7 @@ def sarif_report(reports: list[FileReport]) -> str:
     that could not be read (or that --fix did not rewrite) is a tool notification.
     """
     everything = [finding for report in reports for finding in report.findings]
-    everything += [finding for report in reports for finding, _ in report.suppressed]
+    everything += [item.finding for report in reports for item in report.suppressed]
     codes = sorted({finding.code for finding in everything})
     hints: dict[str, str] = {}
     for finding in everything:
@@ -140,7 +142,8 @@ def sarif_report(reports: list[FileReport]) -> str:
     index = {code: number for number, code in enumerate(codes)}
     results = []
     for report in reports:
-        pairs = [(f, None) for f in report.findings] + list(report.suppressed)
+        pairs = [(f, None) for f in report.findings] + [
+            (item.finding, item.reason) for item in report.suppressed]
         for finding, kind in pairs:
             result: dict[str, object] = {
                 'ruleId': finding.code, 'ruleIndex': index[finding.code],
@@ -194,7 +197,7 @@ def junit_report(reports: list[FileReport], strict: bool) -> str:
             failed = finding.severity is Severity.ERROR or strict
             cases.append((_case_name(finding), 'failure' if failed else None,
                           str(finding.severity), str(finding)))
-        for finding, kind in report.suppressed:
+        for finding, kind, _ in report.suppressed:
             cases.append((_case_name(finding), 'skipped', kind, str(finding)))
         if report.refused is not None:
             cases.append(('fix', 'error', 'not fixed', report.refused))

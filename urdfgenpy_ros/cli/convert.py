@@ -29,14 +29,15 @@ from urdfgenpy_ros.cli._options import input_options, read_robot
 from urdfgenpy_ros.cli.convert_mjcf import mjcf_options, MjcfOptions, write_mjcf_file
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
-from urdfgenpy_ros.formats.sdf_inertia import refused_inertias
 from urdfgenpy_ros.formats.sdf_mass import default_mass_notes, mass_only_notes
 from urdfgenpy_ros.formats.urdf_downgrade import as_version, VERSIONS
 from urdfgenpy_ros.lumping import lump_fixed_joints
 from urdfgenpy_ros.report import counted
 from urdfgenpy_ros.resources import rebase_meshes
 from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.validation.checklist import review, ReviewOptions
 from urdfgenpy_ros.validation.fix_output import DEFAULT_RADIUS, fix_for_output
+from urdfgenpy_ros.validation.sdf_refusals import lumped_into
 
 
 @click.command()
@@ -122,7 +123,10 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
 
 def _refuse_invalid_inertia(robot: Robot, target: Path) -> None:
     """Print one line per link of ``robot`` whose inertia libsdformat refuses; then refuse."""
-    refused = refused_inertias(robot)
+    found = review(robot, ReviewOptions(check_meshes=False, write_sdf=True, suppressions=False,
+                                        checks=('inertia', 'libsdformat')))
+    refused = [(finding, lumped_into(robot, finding))
+               for finding in found.refused['libsdformat']]
     for finding, parent in refused:
         fix = (f"pass --lump-fixed (it merges the link into {parent!r}, as libsdformat's "
                'conversion does) or --fix (a tensor from its shape)'

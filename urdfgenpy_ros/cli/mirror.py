@@ -22,7 +22,7 @@ import warnings
 
 import click
 
-from urdfgenpy_ros.cli._options import in_cli_words, input_options, read_robot
+from urdfgenpy_ros.cli._options import input_options, read_robot
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.reshape.mirror import mirror_subtree, PLANES
@@ -43,7 +43,7 @@ def _renames(pairs: tuple[str, ...]) -> dict[str, str]:
 def _in_option_words(text: str) -> str:
     """Return a library message with its fix said in this command's options."""
     text = re.sub(r'pass rename= that changes them; it was \{.*\}',
-                  'pass --rename OLD:NEW that changes them', in_cli_words(text))
+                  'pass --rename OLD:NEW that changes them', text)
     return text.replace('mesh_folder=', '--mesh-folder').replace('rename=', '--rename')
 
 

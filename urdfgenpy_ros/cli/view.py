@@ -23,7 +23,7 @@ import threading
 
 import click
 
-from urdfgenpy_ros.cli._options import input_options, parse_mappings
+from urdfgenpy_ros.cli._options import ignore_option, input_options, parse_mappings
 
 
 @click.command()
@@ -32,12 +32,19 @@ from urdfgenpy_ros.cli._options import input_options, parse_mappings
 @click.option('--port', default=8080, show_default=True, help='The port to serve on.')
 @click.option('--host', default='127.0.0.1', show_default=True,
               help='The address to serve on (0.0.0.0: every interface).')
+@ignore_option
 @input_options
 def view(path: Path, arguments: tuple[str, ...], port: int, host: str,
-         package_paths: tuple[Path, ...]) -> None:
-    """Show PATH on a local web page; reload when it or a file it includes changes."""
+         package_paths: tuple[Path, ...], ignored: frozenset[str] = frozenset()) -> None:
+    """
+    Show PATH on a local web page; reload when it or a file it includes changes.
+
+    The findings are those of urdfgenpy check with the same --ignore and -p, the file's
+    suppression comments included.
+    """
     from urdfgenpy_ros.formats import load
     from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.validation.checklist import ReviewOptions
     from urdfgenpy_ros.viewer.web import RobotViewer
     mappings = parse_mappings(arguments)
 
@@ -48,7 +55,8 @@ def view(path: Path, arguments: tuple[str, ...], port: int, host: str,
         return sorted({str(path.resolve()), *robot.included_files})
 
     viewer = RobotViewer(read, host=host, port=port, search_paths=package_paths,
-                         watched=watched)
+                         watched=watched, review_options=ReviewOptions(
+                             search_paths=package_paths, ignore=ignored))
     viewer.watch()
     click.echo(f'urdfgenpy view: {viewer.url} shows {viewer.robot.name!r} '
                f'({len(viewer.findings)} findings); Ctrl-C stops')

@@ -24,16 +24,9 @@ passes (MuJoCo's limit, finding I202, is stricter).
 from __future__ import annotations
 
 import sys
-from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.errors import Severity, SourceLocation, ValidationError
 from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.lumping import lumps, WORLD
 from urdfgenpy_ros.transforms import symmetric_eigenvalues
-from urdfgenpy_ros.validation.findings import link_path
-
-if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
 
 _TOLERANCE = 10.0  # gz-math's IGN_MASSMATRIX3_DEFAULT_TOLERANCE
 
@@ -42,7 +35,7 @@ def _epsilon(moments: tuple[float, float, float]) -> float:
     return _TOLERANCE * sys.float_info.epsilon * 2.0 * max(moments)
 
 
-def _problem(inertial: Inertial) -> tuple[str, str] | None:
+def refusal(inertial: Inertial) -> tuple[str, str] | None:
     """Return the finding code and problem libsdformat refuses ``inertial`` for, or None."""
     (ixx, ixy, ixz), (_, iyy, iyz), (_, _, izz) = inertial.tensor
     epsilon = _epsilon((ixx, iyy, izz))
@@ -63,39 +56,4 @@ def _problem(inertial: Inertial) -> tuple[str, str] | None:
 
 def sdformat_refuses(inertial: Inertial) -> bool:
     """Return whether libsdformat refuses a link with ``inertial``, as gz-math judges it."""
-    return _problem(inertial) is not None
-
-
-def refused_inertias(robot: Robot, lump_fixed: bool = False
-                     ) -> list[tuple[ValidationError, str | None]]:
-    """
-    Return an I202/I203 finding for each link SDF export writes that libsdformat refuses.
-
-    The validator's finding when it has one (with the file and line), else one made here.
-    Each comes with the parent of the link when ``lump_fixed`` would merge the link into it
-    (as libsdformat's own URDF conversion does), else None.
-    """
-    from urdfgenpy_ros.lumping import lump_fixed_joints
-    from urdfgenpy_ros.validation import validate
-    written = lump_fixed_joints(robot) if lump_fixed else robot
-    refused = {f'link {link.name!r}': link for link in written.links
-               if link.name != WORLD and link.inertial is not None
-               and sdformat_refuses(link.inertial)}
-    if not refused:
-        return []
-    findings = {finding.element: finding for finding in validate(written, check_meshes=False)
-                if finding.code in ('I202', 'I203') and finding.element in refused}
-    found = []
-    for element, link in refused.items():
-        assert link.inertial is not None
-        finding = findings.get(element)
-        if finding is None:
-            code, problem = _problem(link.inertial) or ('I202', '')
-            source = link.inertial.source
-            where = (source if source is not None and source.line is not None
-                     else SourceLocation(path=link_path(link.name) + '/inertial/inertia'))
-            finding = ValidationError(code, Severity.ERROR, element, where, problem,
-                                      'libsdformat refuses it')
-        joint = written.parent_joint(link.name)
-        found.append((finding, joint.parent if joint is not None and lumps(joint) else None))
-    return found
+    return refusal(inertial) is not None

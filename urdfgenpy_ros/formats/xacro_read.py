@@ -30,6 +30,7 @@ from urdfgenpy_ros.errors import (
     MissingDependencyError, ParseError, ReadWarning, SourceLocation)
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
 from urdfgenpy_ros.formats.xacro_args import unknown_arguments
+from urdfgenpy_ros.report import folder_fix
 from urdfgenpy_ros.resources import PackageResolver
 
 if TYPE_CHECKING:
@@ -86,7 +87,7 @@ def _finding_with(resolver: PackageResolver) -> Iterator[None]:
         except Exception:  # noqa: B902 - ament's, rospkg's or an unset AMENT_PREFIX_PATH
             raise _PackageMissing(
                 f'$(find {package}): package {package!r} not found (source the workspace '
-                'that holds it, or pass its folder in search_paths / --package-path)'
+                f'that holds it, or {folder_fix()})'
             ) from None
 
     substitution_args._eval_find = find

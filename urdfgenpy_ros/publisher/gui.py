@@ -38,6 +38,7 @@ class NodeGui:
         self.viewer = RobotViewer(
             lambda: node.robot, host=host, port=port,
             search_paths=node.values['package_paths'], on_positions=self._moved,
+            review_options=node.review_options,
             initial={name: joint.position for name, joint in states.free.items()})
         self._seen = (states, states.version)
         node.create_timer(0.1, self._follow)

@@ -41,9 +41,10 @@ from std_msgs.msg import String
 from urdfgenpy_ros.errors import Severity, UrdfgenpyError
 from urdfgenpy_ros.model_source import load_model
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
-from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
+from urdfgenpy_ros.report import boundary, FrontEnd, KNOWN_ERRORS, one_line
+from urdfgenpy_ros.validation.checklist import review, ReviewOptions
 from urdfgenpy_ros.validation.consumers import is_physics_only, physics_warning
-from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions
+from urdfgenpy_ros.validation.suppressions import parse_codes
 
 if TYPE_CHECKING:  # imported when needed: sensor_msgs brings numpy, not needed to start
     from sensor_msgs.msg import JointState
@@ -139,6 +140,9 @@ class PublisherNode(Node):
             self.ignored = parse_codes(' '.join(self.values['ignore']))
         except ValueError as error:
             raise UrdfgenpyError(f"parameter 'ignore': {error}") from None
+        # what the node's review checks and silences (its gui's viewer shows the same)
+        self.review_options = ReviewOptions(search_paths=tuple(self.values['package_paths']),
+                                            target=self.values['target'], ignore=self.ignored)
         rate = self.values['rate']
         if isinstance(rate, bool) or not isinstance(rate, (int, float)) or not rate > 0:
             raise UrdfgenpyError(f"parameter 'rate': {rate!r} is not a positive number of Hz")
@@ -193,10 +197,9 @@ class PublisherNode(Node):
     def _load(self) -> tuple[Robot, list[str]]:
         robot, watched = load_model(self.values['model'], self.values['xacro_args'],
                                     self.values['package_paths'])
-        found = robot.validate(search_paths=self.values['package_paths'],
-                               target=self.values['target'])
-        # the file's own suppression comments, as `urdfgenpy check` reads them, and 'ignore'
-        findings, silenced = read_suppressions(robot, self.ignored).split(found)
+        # the file's own suppression comments count, as in `urdfgenpy check`, and 'ignore'
+        found = review(robot, self.review_options)
+        findings, silenced = found.findings, found.suppressed
         strict = self.values['strict']
         errors = [finding for finding in findings if finding.severity is Severity.ERROR
                   and (strict or not is_physics_only(finding))]
@@ -208,7 +211,7 @@ class PublisherNode(Node):
             else:
                 self.get_logger().warning(str(finding))
         if silenced:
-            codes = ', '.join(sorted({finding.code for finding, _ in silenced}))
+            codes = ', '.join(sorted({item.finding.code for item in silenced}))
             self.get_logger().info(f'{len(silenced)} finding(s) ignored ({codes}): parameter '
                                    "'ignore' or suppression comments in the file")
         if errors:
@@ -377,26 +380,36 @@ class _TfPublisher:
             for entry in self.transforms.moving(positions)]))
 
 
+EXIT_NODE_ERROR = 1
+"""The node's exit status for a user's mistake (a bad file, model or parameter)."""
+
+
+def _start() -> PublisherNode:
+    try:
+        return PublisherNode()
+    except rclpy.exceptions.InvalidParameterTypeException as error:
+        raise UrdfgenpyError(f"bad parameter: {error} (see the README for each parameter's "
+                             'type)') from None
+
+
 def main(args: list[str] | None = None) -> int:
     """Run the node until Ctrl-C; return 1 (one log line) when it cannot start."""
     rclpy.init(args=args)
     node = None
+    said = FrontEnd(None, exit_code=EXIT_NODE_ERROR,  # the logger names the node
+                    say=rclpy.logging.get_logger('urdfgenpy_publisher').error)
     try:
-        node = PublisherNode()
-        rclpy.spin(node)
+        with boundary(said):
+            node = _start()
+            rclpy.spin(node)
+    except SystemExit as stop:  # the boundary said the user's mistake
+        return stop.code if isinstance(stop.code, int) else EXIT_NODE_ERROR
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
     except rclpy_implementation.RCLError:
         if rclpy.ok():
             raise
         # Ctrl-C shut the context down while a timer was publishing: a normal stop
-    except KNOWN_ERRORS as error:
-        rclpy.logging.get_logger('urdfgenpy_publisher').error(one_line(error))
-        return 1
-    except rclpy.exceptions.InvalidParameterTypeException as error:
-        rclpy.logging.get_logger('urdfgenpy_publisher').error(
-            f"bad parameter: {error} (see the README for each parameter's type)")
-        return 1
     finally:
         if node is not None:
             if node.gui is not None:

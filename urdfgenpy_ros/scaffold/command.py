@@ -21,10 +21,11 @@ from collections.abc import Sequence
 import copy
 from pathlib import Path
 import sys
+from typing import NoReturn
 
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.model_source import INIT_WORDS, load_model
-from urdfgenpy_ros.report import EXIT_KNOWN_ERROR, KNOWN_ERRORS, one_line
+from urdfgenpy_ros.report import exit_status, FrontEnd
 from urdfgenpy_ros.scaffold.preflight import preflight
 from urdfgenpy_ros.scaffold.render import create_package
 from urdfgenpy_ros.scaffold.spec import BUILD_TYPES, PackageSpec
@@ -57,31 +58,34 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              'will report them)')
 
 
-def run(args: argparse.Namespace) -> int:
-    """Create the package; print one line per problem on stderr; return the exit code."""
-    try:
-        spec = PackageSpec(args.package_name, args.build_type, args.destination_directory,
-                           args.maintainer_name, args.maintainer_email, args.license,
-                           args.description, list(args.dependencies))
-        for folder in args.package_path:  # as urdfgenpy check refuses it
-            if not Path(folder).is_dir():
-                raise UrdfgenpyError(f'--package-path {folder}: no such folder (give a folder '
-                                     'holding ROS packages)')
-        robot, _ = load_model(args.source, args.xacro_args, args.package_path, INIT_WORDS)
-        for note in robot.read_warnings:  # e.g. X101: a .urdf file expanded as Xacro
-            print(note, file=sys.stderr)
-        if args.fix:
-            robot = copy.deepcopy(robot)
-        for line in preflight(robot, repair=args.fix, allow_errors=args.allow_errors):
-            print(line, file=sys.stderr)
-        written, warnings = create_package(
-            spec, robot, force=args.force, source=args.source or 'the built-in example',
-            search_paths=args.package_path)
-    except KNOWN_ERRORS as error:
-        for line in getattr(error, 'lines', ()):  # the findings behind a refusal
-            print(line, file=sys.stderr)
-        print(f'error: {one_line(error)}', file=sys.stderr)
-        return EXIT_KNOWN_ERROR
+def run(args: argparse.Namespace, prog: str = 'urdfgenpy init') -> int:
+    """
+    Create the package; return the exit code.
+
+    A user's mistake is one line on stderr, ``prog: message (fix)``, after the findings
+    behind it, and status 2 (the boundary every front end uses); a bug keeps its traceback.
+    """
+    return exit_status(FrontEnd(prog), lambda: _create(args))
+
+
+def _create(args: argparse.Namespace) -> int:
+    spec = PackageSpec(args.package_name, args.build_type, args.destination_directory,
+                       args.maintainer_name, args.maintainer_email, args.license,
+                       args.description, list(args.dependencies))
+    for folder in args.package_path:  # as urdfgenpy check refuses it
+        if not Path(folder).is_dir():
+            raise UrdfgenpyError(f'--package-path {folder}: no such folder (give a folder '
+                                 'holding ROS packages)')
+    robot, _ = load_model(args.source, args.xacro_args, args.package_path, INIT_WORDS)
+    for note in robot.read_warnings:  # e.g. X101: a .urdf file expanded as Xacro
+        print(note, file=sys.stderr)
+    if args.fix:
+        robot = copy.deepcopy(robot)
+    for line in preflight(robot, repair=args.fix, allow_errors=args.allow_errors):
+        print(line, file=sys.stderr)
+    written, warnings = create_package(
+        spec, robot, force=args.force, source=args.source or 'the built-in example',
+        search_paths=args.package_path)
     for warning in warnings:
         print(f'warning: {warning}', file=sys.stderr)
     print(f'created {spec.root} ({len(written)} files, {spec.build_type}): '
@@ -89,9 +93,17 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse's parser, whose usage errors are the boundary's one line."""
+
+    def error(self, message: str) -> NoReturn:
+        """Raise the usage error, naming where the options are listed."""
+        raise UrdfgenpyError(f'{message} (see {self.prog} --help)')
+
+
 def main(argv: Sequence[str] | None = None) -> int:
-    """Run the command with ``argv``."""
-    parser = argparse.ArgumentParser(prog='urdfgenpy init',
-                                     description='Create a ROS 2 description package.')
+    """Run the command with ``argv``; a usage error is one line too."""
+    parser = _Parser(prog='urdfgenpy init', description='Create a ROS 2 description package.')
     add_arguments(parser)
-    return run(parser.parse_args(argv))
+    front_end = FrontEnd(parser.prog)
+    return exit_status(front_end, lambda: run(parser.parse_args(argv), parser.prog))

@@ -23,8 +23,9 @@ scaffold them as they are (``--allow-errors``).
 
 from __future__ import annotations
 
-from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.errors import UrdfgenpyError, ValidationError
 from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.validation.checklist import review, ReviewOptions
 from urdfgenpy_ros.validation.fix_output import fix_for_output
 
 
@@ -61,6 +62,6 @@ class ScaffoldRefused(UrdfgenpyError):
         self.lines = lines
 
 
-def _errors(robot: Robot) -> list:
-    return [finding for finding in robot.validate(check_meshes=False)
-            if str(finding.severity) == 'error']
+def _errors(robot: Robot) -> list[ValidationError]:
+    """Return the errors the package's test reports: validate(check_meshes=False)'s."""
+    return review(robot, ReviewOptions(check_meshes=False, suppressions=False)).errors

@@ -43,4 +43,4 @@ class ScaffoldVerb(VerbExtension):
 
     def main(self, *, args: argparse.Namespace) -> int:
         """Create the package; return the exit code."""
-        return run(args)
+        return run(args, 'ros2 pkg scaffold')

@@ -43,6 +43,8 @@ class Findings:
     def __init__(self, robot: Robot) -> None:
         self.robot = robot
         self.items: list[ValidationError] = []
+        self.refused: dict[str, list[ValidationError]] = {}
+        """Consumer -> the findings for which it refuses the robot (``Review.refused``)."""
         self._lines: dict[str, list[str] | None] = {}
 
     def add(self, code: str, source: Any, element: str, path: str, message: str,

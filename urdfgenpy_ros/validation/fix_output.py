@@ -28,7 +28,8 @@ from typing import TYPE_CHECKING
 from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.floats import fmt
 from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.validation.fix import fix, FIXABLE, Repair
+from urdfgenpy_ros.validation.checklist import review, ReviewOptions
+from urdfgenpy_ros.validation.fix import fix, Repair
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -40,9 +41,8 @@ _TENSORS = ('I202', 'I203')
 
 def fix_for_output(robot: Robot, radius: float = DEFAULT_RADIUS) -> list[str]:
     """Repair ``robot``'s fixable errors in place; return one line per repair (or refusal)."""
-    from urdfgenpy_ros.validation import validate
-    errors = [finding for finding in validate(robot, check_meshes=False)
-              if finding.severity is Severity.ERROR and finding.code in FIXABLE]
+    found = review(robot, ReviewOptions(check_meshes=False, suppressions=False))
+    errors = [finding for finding in found.repairable if finding.severity is Severity.ERROR]
     repairs = fix(robot, errors)
     done = {(repair.code, repair.element) for repair in repairs}
     lines = [str(repair) for repair in repairs]

@@ -70,20 +70,30 @@ class Suppressions:
 
     def reason(self, finding: ValidationError) -> str | None:
         """Return why ``finding`` is silenced (``'inSource'``, ``'external'``) or None."""
+        found = self.silencer(finding)
+        return found[0] if found is not None else None
+
+    def source(self, finding: ValidationError) -> str:
+        """Return what silences ``finding`` (the ignore option, or which comment)."""
+        found = self.silencer(finding)
+        return found[1] if found is not None else ''
+
+    def silencer(self, finding: ValidationError) -> tuple[str, str] | None:
+        """Return (reason, what silences it) for a silenced ``finding``, else None."""
         if finding.code in self.ignored:
-            return 'external'
+            return 'external', 'the ignore option'
         if finding.code in self.file_codes:
-            return 'inSource'
+            return 'inSource', 'an ignore-file comment'
         where = finding.location
         for scope in self.scopes:
             if finding.code not in scope.codes:
                 continue
             if where.path is not None and (where.path == scope.path
                                            or where.path.startswith(scope.path + '/')):
-                return 'inSource'
+                return 'inSource', f'the ignore comment before line {scope.first}'
             if where.path is None and where.line is not None \
                     and scope.first <= where.line <= scope.last:
-                return 'inSource'
+                return 'inSource', f'the ignore comment before line {scope.first}'
         return None
 
     def split(self, findings: Iterable[ValidationError]

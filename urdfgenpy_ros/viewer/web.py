@@ -19,8 +19,10 @@ The robot in the browser: a ``viser`` page with joint sliders, display toggles a
 ``RobotViewer`` serves one page on ``http://HOST:PORT``. The scene is built from the
 package's own model and kinematics (not from a URDF re-parsed by another library): each
 link is a frame posed by forward kinematics, holding its visuals, collisions (hidden until
-asked), the centre of mass and the inertia box Gazebo would show. Validation findings are
-buttons that select the link or joint they name. ``watch()`` reloads when a file changes.
+asked), the centre of mass and the inertia box Gazebo would show. The findings of the
+library review (``review_options``: the same as ``check``'s or the node's, suppression
+comments included) are buttons that select the link or joint they name; the silenced ones
+are counted. ``watch()`` reloads when a file changes.
 """
 
 from __future__ import annotations
@@ -37,7 +39,9 @@ from typing import Any
 
 from urdfgenpy_ros.errors import Severity, UrdfgenpyError, ValidationError
 from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.validation.checklist import review, ReviewOptions, Suppressed
 from urdfgenpy_ros.viewer.scene import (
     inertia_box, joint_positions, link_matrices, MeshCache, Part, require, robot_parts)
 
@@ -86,13 +90,16 @@ class RobotViewer:
     ``load`` returns the robot (called again by ``reload``); ``watched`` the files whose
     change triggers a reload; ``on_positions`` hears every slider move (the node's GUI
     mode publishes them). ``positions`` holds the current value of every movable joint.
+    ``review_options`` say what the findings are (default: every check, meshes through
+    ``search_paths``); ``findings`` and ``suppressed`` are the last review's.
     """
 
     def __init__(self, load: Callable[[], Robot], *, host: str = '127.0.0.1',
                  port: int = 8080, search_paths: Iterable[str | PathLike[str]] = (),
                  watched: Callable[[Robot], list[str]] | None = None,
                  on_positions: Callable[[dict[str, float]], None] | None = None,
-                 initial: Mapping[str, float] | None = None, validate: bool = True) -> None:
+                 initial: Mapping[str, float] | None = None, validate: bool = True,
+                 review_options: ReviewOptions | None = None) -> None:
         self.viser = require('viser', 'view', 'The robot viewer')
         require('trimesh', 'view', 'The robot viewer')
         self._load = load
@@ -100,6 +107,8 @@ class RobotViewer:
         self._watched = watched
         self._on_positions = on_positions
         self._validate = validate
+        self._review_options = review_options or ReviewOptions(
+            search_paths=tuple(self._search_paths))
         self._lock = threading.RLock()
         self._stop = threading.Event()
         self._gui: list[Any] = []
@@ -110,6 +119,7 @@ class RobotViewer:
         self._highlight: list[Any] = []
         self.robot = load()
         self.findings: list[ValidationError] = []
+        self.suppressed: list[Suppressed] = []
         self.selected: str | None = None
         self.status = ''
         self.version = 0  # counts scene rebuilds (loads and reloads)
@@ -141,7 +151,8 @@ class RobotViewer:
             self._highlight = []
             self.robot, self.selected = robot, None
             if self._validate:
-                self.findings = robot.validate(search_paths=self._search_paths)
+                found = review(robot, self._review_options)
+                self.findings, self.suppressed = found.findings, found.suppressed
             self._cache = MeshCache(robot, self._search_paths)
             visuals = robot_parts(robot, 'visual', self._cache)
             shown = visuals or robot_parts(robot, 'collision', self._cache)
@@ -259,8 +270,9 @@ class RobotViewer:
     def _add_findings(self) -> None:
         gui = self.server.gui
         errors = sum(1 for f in self.findings if f.severity is Severity.ERROR)
+        silenced = f', {len(self.suppressed)} suppressed' if self.suppressed else ''
         folder = gui.add_folder(f'Findings ({errors} errors, '
-                                f'{len(self.findings) - errors} warnings)')
+                                f'{len(self.findings) - errors} warnings{silenced})')
         self._gui.append(folder)
         with folder:
             if not self.findings:
@@ -373,11 +385,16 @@ class RobotViewer:
     # ---- reloading -------------------------------------------------------------------
 
     def reload(self) -> bool:
-        """Load the robot again; on failure keep the last one and show the error."""
+        """
+        Load the robot again; on a user's mistake keep the last one and show it in one line.
+
+        A bug (any other exception) is raised, with its traceback.
+        """
         try:
             robot = self._load()
-        except (UrdfgenpyError, OSError, ValueError) as error:
-            self._set_status(f'**reload failed** (showing the last good model): {error}')
+        except KNOWN_ERRORS as error:
+            self._set_status(f'**reload failed** (showing the last good model): '
+                             f'{one_line(error)}')
             return False
         self.status = f'reloaded at {time.strftime("%H:%M:%S")}'
         self.show(robot)

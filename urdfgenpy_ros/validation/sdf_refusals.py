@@ -1,0 +1,61 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""The review's ``libsdformat`` check: the links whose inertia an SDF loader refuses."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from urdfgenpy_ros.errors import Severity, SourceLocation, ValidationError
+from urdfgenpy_ros.formats.sdf_inertia import refusal
+from urdfgenpy_ros.lumping import lumps, WORLD
+from urdfgenpy_ros.validation.findings import Findings, link_path
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
+
+
+def sdformat_refusals(robot: Robot, findings: Findings) -> list[ValidationError]:
+    """
+    Return an I202/I203 finding for each link of ``robot`` libsdformat refuses.
+
+    The inertia check's finding when it made one (with the file and line: that check runs
+    first), else one made here, at the ``<inertia>``.
+    """
+    made = {(finding.element, finding.code): finding for finding in findings.items}
+    refused = []
+    for link in robot.links:
+        problem = refusal(link.inertial) if link.inertial is not None and \
+            link.name != WORLD else None
+        if problem is None:
+            continue
+        element = f'link {link.name!r}'
+        found = made.get((element, 'I202')) or made.get((element, 'I203'))
+        if found is None:
+            code, message = problem
+            source = link.inertial.source if link.inertial is not None else None
+            where = (source if source is not None and source.line is not None
+                     else SourceLocation(path=link_path(link.name) + '/inertial/inertia'))
+            found = ValidationError(code, Severity.ERROR, element, where, message,
+                                    'libsdformat refuses it')
+        refused.append(found)
+    return refused
+
+
+def lumped_into(robot: Robot, finding: ValidationError) -> str | None:
+    """Return the link a fixed joint would lump the finding's link into, or None."""
+    name = finding.element.split("'", 2)[1]
+    joint = robot.parent_joint(name) if robot.has_link(name) else None
+    return joint.parent if joint is not None and lumps(joint) else None
