@@ -30,8 +30,7 @@ from typing import Any, TYPE_CHECKING
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.floats import fmt, fmt_vec
-from urdfgenpy_ros.formats._xml import esc, write_text
-from urdfgenpy_ros.formats.start_tags import tag_end
+from urdfgenpy_ros.formats._xml import esc, tag_end, write_text
 from urdfgenpy_ros.formats.urdf import UrdfWriter
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.link import Link
