@@ -30,7 +30,7 @@ from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.joint import Joint
 from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.material import Material
-from urdfgenpy_ros.preserved import Preserved
+from urdfgenpy_ros.preserved import SourceDocument
 
 
 def _suggest(name: str, known: Any) -> str:
@@ -54,7 +54,7 @@ class Robot:
         self.extensions: list[Extension] = []
         self.source: SourceLocation | None = None
         self.urdf_version: str | None = None  # the <robot version=...> given (None: 1.0)
-        self.extras: Preserved | None = None
+        self.extras: SourceDocument | None = None  # the record of the file read, if any
         self.read_warnings: list[ReadWarning] = []
         self.included_files: list[str] = []
 

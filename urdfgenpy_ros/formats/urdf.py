@@ -25,6 +25,7 @@ Elements built in Python are written in the file's indentation and quotes.
 
 from __future__ import annotations
 
+from functools import partial
 from itertools import chain
 from os import PathLike
 import re
@@ -182,15 +183,14 @@ class UrdfWriter(ElementWriter):
                     item = by_node.get(id(node), item)
                 if id(item) in present and id(item) not in written:
                     written.add(id(item))
-                    items.append((whitespace, checked(
-                        item, lambda item=item: self.write_item(item, unit))))
+                    items.append((whitespace, checked(item, partial(self.write_item, item, unit))))
                 elif not isinstance(item, (Material, Link, Joint, Extension)):
                     items.append((whitespace, self.source_text(node)))
                 whitespace = node.tail or ''
             trailing = whitespace if not whitespace.strip() else '\n'
-        items += [(fresh, checked(item, lambda item=item: self.write_item(item, unit)))
+        items += [(fresh, checked(item, partial(self.write_item, item, unit)))
                   for item in materials if id(item) not in written]
-        items += [(fresh, checked(item, lambda item=item: self.object_text(item, unit)))
+        items += [(fresh, checked(item, partial(self.object_text, item, unit)))
                   for item in links if id(item) not in written]
         owners: list[Link | Joint] = [*links, *joints]
         for owner in owners:
@@ -198,7 +198,7 @@ class UrdfWriter(ElementWriter):
                       if id(block) not in written]
             items += [(fresh, self.write_extension(_sensor_block(sensor, owner.name), unit))
                       for sensor in owner.sensors]
-        items += [(fresh, checked(item, lambda item=item: self.object_text(item, unit)))
+        items += [(fresh, checked(item, partial(self.object_text, item, unit)))
                   for item in joints if id(item) not in written]
         items += [(fresh, self.write_item(block, unit)) for block in self.extensions
                   if id(block) not in written]

@@ -55,8 +55,8 @@ def block_edited(document: SourceDocument, block: Extension) -> bool:
 
 def owners_of_blocks(robot: Robot) -> dict[int, Link | Joint]:
     """Return the link or joint holding each block, by the block's id."""
-    owners: list[Link | Joint] = [*robot.links, *robot.joints]
-    return {id(block): owner for owner in owners for block in owner.extensions}
+    holders: list[Link | Joint] = [*robot.links, *robot.joints]
+    return {id(block): owner for owner in holders for block in owner.extensions}
 
 
 def is_as_read(robot: Robot) -> bool:
@@ -68,8 +68,8 @@ def is_as_read(robot: Robot) -> bool:
     if node.get('name') != robot.name or node.get('version') != robot.urdf_version:
         return False
     owners = owners_of_blocks(robot)
-    blocks = [*robot.extensions, *(block for owner in [*robot.links, *robot.joints]
-                                   for block in owner.extensions)]
+    holders: list[Link | Joint] = [*robot.links, *robot.joints]
+    blocks = [*robot.extensions, *(block for owner in holders for block in owner.extensions)]
     items: list[Any] = [*robot.materials, *robot.links, *robot.joints, *blocks]
     read = [item for item in document.order
             if isinstance(item, (Material, Link, Joint, Extension))]
@@ -83,4 +83,4 @@ def is_as_read(robot: Robot) -> bool:
                 return False
         elif is_edited(item):
             return False
-    return not any(owner.sensors for owner in [*robot.links, *robot.joints])
+    return not any(owner.sensors for owner in holders)

@@ -33,10 +33,10 @@ from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import esc, without_declared
 from urdfgenpy_ros.formats.urdf_edits import is_edited
 from urdfgenpy_ros.formats.urdf_fresh import FRESH
-from urdfgenpy_ros.formats.urdf_splice import in_quotes, prefixed, Splice
 from urdfgenpy_ros.formats.urdf_schema import (
     Child, Element, ELEMENTS, FLOAT, INERTIAL, MATERIAL, OF_CLASS, REQUIRED, slot_of, SLOTS,
     TEXT)
+from urdfgenpy_ros.formats.urdf_splice import in_quotes, prefixed, Splice
 from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Origin, quaternion_rpy, Sphere
 from urdfgenpy_ros.material import Material
 
