@@ -31,10 +31,11 @@ from urdfgenpy_ros.cli.check_reports import sarif_report
 from urdfgenpy_ros.cli.inputs import description_files
 from urdfgenpy_ros.errors import ModelError, Severity, ValidationError
 from urdfgenpy_ros.formats import DH_SUFFIXES, load
+from urdfgenpy_ros.formats.urdf import urdf_file_bytes
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET, TARGETS
-from urdfgenpy_ros.validation.fix import carry_over, fix, LIMIT_FIELDS
+from urdfgenpy_ros.validation.fix import fix, LIMIT_FIELDS
 from urdfgenpy_ros.validation.fix import missing_defaults
 from urdfgenpy_ros.validation.preflight import ENGINES, preflight
 from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions
@@ -263,7 +264,6 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
         report.findings, report.suppressed = suppressions.split(found)
         if not options.fix:
             return report
-        before = robot.to_urdf()
         repairs = fix(robot, report.findings, options.limit_defaults)
         refusal = _not_rewritable(path, robot, len(repairs))
         if refusal is not None:  # nothing is written: no word on missing defaults either
@@ -274,11 +274,8 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
         if not repairs:
             return report
         old = path.read_bytes().decode('utf-8', 'surrogateescape')  # other bytes stay
-        new = carry_over(old, before, robot.to_urdf())
-        if new is None:
-            report.notes.append(f'{path}: not fixed: the repaired lines could not be placed '
-                                'in the file as it is written (please report this)')
-            return report
+        # the writer copies all the repairs left alone from the file as it is
+        new = urdf_file_bytes(robot, mend=False).decode('utf-8', 'surrogateescape')
         if new == old:
             return report
         report.repairs = repairs

@@ -25,6 +25,7 @@ Elements built in Python are written in the file's indentation and quotes.
 
 from __future__ import annotations
 
+import codecs
 from functools import partial
 from itertools import chain
 from os import PathLike
@@ -33,7 +34,7 @@ from typing import Any, Callable, TYPE_CHECKING
 
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.extensions import Extension
-from urdfgenpy_ros.formats._xml import fragment, write_text
+from urdfgenpy_ros.formats._xml import fragment, write_text, xml_bytes
 from urdfgenpy_ros.formats.sdf import sensor_element
 from urdfgenpy_ros.formats.urdf_edits import block_edited, is_as_read, owners_of_blocks
 from urdfgenpy_ros.formats.urdf_element import ElementWriter
@@ -81,8 +82,9 @@ class UrdfWriter(ElementWriter):
 
     declaration = '<?xml version="1.0"?>'
 
-    def __init__(self, robot: Robot) -> None:
+    def __init__(self, robot: Robot, *, mend: bool = True) -> None:
         document = robot.extras if isinstance(robot.extras, SourceDocument) else None
+        self.mend = mend  # write a wrapped <robot> unwrapped, a malformed declaration mended
         self.document_record = document
         self.newline, quote, unit = _layout(document)
         self.bom = document is not None and document.bom
@@ -103,14 +105,18 @@ class UrdfWriter(ElementWriter):
         document = self.document_record
         if document is None:
             return ''.join([self.declaration, '\n', self.write_robot(), '\n'])
-        if self.verbatim and not document.mended and document.node.getparent() is None \
+        mend = self.mend
+        if self.verbatim and (not mend or (not document.mended and
+                                           document.node.getparent() is None)) \
                 and not self.prologue() and is_as_read(self.robot):
-            return document.text.rstrip('\x00')  # nothing edited: the file as it is
+            return document.text.rstrip('\x00') if mend else document.text  # as it is
         splice = self.splice = Splice(document, self.newline, self.quote, self.declared)
         text = splice.text
         node = document.node
         span = splice.span(node)
-        if span is None or node.getparent() is not None:  # a wrapped <robot> is unwrapped
+        if span is not None and not mend:
+            before, after = text[:span.start], text[span.end:]
+        elif span is None or node.getparent() is not None:  # a wrapped <robot> is unwrapped
             match = _DECLARATION.match(text)
             before = (match.group(1) if match is not None and not document.mended
                       else self.declaration) + '\n'
@@ -232,9 +238,10 @@ class UrdfWriter(ElementWriter):
                 given.append((prefixed(node, key), value))
         text = splice.attributes(node, given)
         added = [(key, value) for key, value in attrs if key not in node.attrib]
-        for prefix, uri in node.nsmap.items():  # a wrapper's declarations come along
-            if prefix:
-                added.append((f'xmlns:{prefix}', uri))
+        if self.mend:
+            for prefix, uri in node.nsmap.items():  # a wrapper's declarations come along
+                if prefix:
+                    added.append((f'xmlns:{prefix}', uri))
         text += splice.written([(key, value) for key, value in added
                                 if f' {key}=' not in text and f'\n{key}=' not in text
                                 and f'\t{key}=' not in text])
@@ -286,6 +293,21 @@ class UrdfWriter(ElementWriter):
     def write_material(self, material: Material, pad: str) -> str:
         """Return a ``<material>`` definition or reference, indented by ``pad``."""
         return pad + self.write_object(MATERIAL, material, pad)
+
+
+def urdf_file_bytes(robot: Robot, *, mend: bool = True) -> bytes:
+    """
+    Return the bytes of the URDF file of ``robot``: in its declared encoding, with its BOM.
+
+    ``mend=False`` keeps what the reader mended as the file has it (a ``<robot>`` wrapped
+    in another element, a malformed XML declaration): ``check --fix`` changes nothing
+    but the repaired lines.
+    """
+    writer = UrdfWriter(robot, mend=mend)
+    text = writer.document()
+    data = xml_bytes(text)
+    utf8 = data == text.encode('utf-8', 'surrogateescape')
+    return codecs.BOM_UTF8 + data if writer.bom and utf8 else data
 
 
 def write_urdf(robot: Robot, path: str | PathLike[str] | None = None) -> str:
