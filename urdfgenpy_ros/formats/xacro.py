@@ -22,6 +22,7 @@ operation, so the real ``xacro`` expands them to exactly the floats ``to_urdf()`
 from __future__ import annotations
 
 from collections.abc import Sequence
+from functools import partial
 from os import PathLike
 from pathlib import Path
 import re
@@ -135,8 +136,10 @@ class XacroWriter(UrdfWriter):
         if self.mass_names:
             lines.append('<!-- Link masses in kg. -->')
             for link_name, prop in self.mass_names.items():
-                mass = self.robot.get_link(link_name).inertial.mass  # type: ignore[union-attr]
-                lines.append(f'<xacro:property name="{prop}" value="{fmt(mass)}"/>')
+                link = self.robot.get_link(link_name)
+                mass = link.inertial.mass  # type: ignore[union-attr]
+                value = self.checked(link, partial(fmt, mass))
+                lines.append(f'<xacro:property name="{prop}" value="{value}"/>')
         if self.kinds:
             lines.append('<!-- Inertia of solid bodies about their centre of mass. -->')
             lines.extend(_macro(kind, self.unit, self.unit) for kind in self.kinds)
