@@ -17,8 +17,9 @@
 URDF reader: the model of a file, following the declarations of :mod:`.urdf_schema`.
 
 Every element read keeps its source node and a by-value snapshot of the fields it gave
-(:class:`~urdfgenpy_ros.preserved.Preserved`), so that writers can put back, in place,
-whatever nobody edited and everything the model does not hold.
+(:class:`~urdfgenpy_ros.preserved.Preserved`), and the robot the file's text
+(:class:`~urdfgenpy_ros.preserved.SourceDocument`), so that writers can copy whatever
+nobody edited and keep everything the model does not hold.
 """
 
 from __future__ import annotations
