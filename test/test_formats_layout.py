@@ -388,7 +388,7 @@ def test_every_node_of_a_real_file_has_the_span_lxml_reads_back() -> None:
     """The scanner's span of each element, parsed by lxml on its own, is that element."""
     from lxml import etree
 
-    from urdfgenpy_ros.formats.source_record import pair
+    from urdfgenpy_ros.formats.source_record import Spans
 
     compared = 0
     for path in _REAL_URDFS:
@@ -398,14 +398,14 @@ def test_every_node_of_a_real_file_has_the_span_lxml_reads_back() -> None:
             continue
         document = robot.extras
         top = document.node.getroottree().getroot()
-        spans, loose = pair(document.text, top)
-        assert not loose, path
+        spans = Spans(document.text, top)
         nodes = [*top.itersiblings(preceding=True), *top.iter(), *top.itersiblings()]
-        assert all(node in spans for node in nodes), path
+        assert all(spans.get(node) is not None for node in nodes), path
+        assert not spans.loose, path
         for node in top.iter(etree.Element):
             if not _plain_subtree(node):
                 continue
-            span = spans[node]
+            span = spans.get(node)
             alone = etree.fromstring(document.text[span.start:span.end].encode())
             copy = etree.fromstring(etree.tostring(node, with_tail=False))
             assert etree.tostring(alone, method='c14n', exclusive=True) == \

@@ -57,7 +57,7 @@ class Span:
         self.start = start
         self.head = head  # just after the start tag's '>'
         self.end = head  # just after the end tag's '>' (or the '/>')
-        self.children: list[Span] = []
+        self.children: list[Span] | None = []  # None: not scanned yet
 
     @property
     def empty(self) -> bool:
@@ -69,25 +69,103 @@ class Span:
         return f'Span({self.kind} {self.name!r} {self.start}:{self.end})'
 
 
-def scan(text: str) -> list[Span]:
-    """Return the top-level nodes of ``text`` (elements, comments, PIs) with their spans."""
+def scan(text: str, start: int = 0, end: int | None = None) -> tuple[list[Span], int]:
+    """
+    Return the nodes of ``text[start:end]`` (elements, comments, PIs), nested, with spans.
+
+    The scan stops after an end tag that closes no node of the region (its parent's):
+    also returned is where it stopped.
+    """
     top: list[Span] = []
     stack: list[Span] = []
-    for match in _TOKEN.finditer(text):
+    stop = len(text) if end is None else end
+    for match in _TOKEN.finditer(text, start, stop):
         siblings = stack[-1].children if stack else top
+        assert siblings is not None
         if match.group(6) is not None:
             span = Span(ELEMENT, match.group(6), match.start(), match.end())
             siblings.append(span)
             if not match.group(7):
                 stack.append(span)
         elif match.group(5) is not None:
-            if stack:
-                stack.pop().end = match.end()
+            if not stack:
+                return top, match.end()
+            stack.pop().end = match.end()
         elif match.group(1) is not None:
             siblings.append(_leaf(COMMENT, match))
         elif match.group(3) is not None and not _XML_DECLARATION.match(match.group(3)):
             siblings.append(_leaf(PI, match))
-    return top
+    return top, stop
+
+
+def shallow(text: str, start: int, end: int, last: bool = False) -> list[Span]:
+    """
+    Return the nodes of ``text[start:end]``, their children left to be scanned when asked.
+
+    An element's end is its first end tag of that name unless a comment, CDATA, PI or an
+    element of the same name comes before it, when the element is scanned through.
+    ``last``: the document's level, where an element's end is the last such end tag.
+    """
+    found: list[Span] = []
+    position = start
+    search = _TOKEN.search
+    while True:
+        match = search(text, position, end)
+        if match is None:
+            return found
+        name = match.group(6)
+        if name is not None:
+            span = Span(ELEMENT, name, match.start(), match.end())
+            if not match.group(7):
+                close = _close(text, name, span.head, end, last)
+                if close is None:
+                    span.children, span.end = scan(text, span.head, end)
+                else:
+                    span.children, span.end = None, close
+            found.append(span)
+            position = span.end
+            continue
+        if match.group(5) is not None:
+            return found  # the end of the region's parent
+        if match.group(1) is not None:
+            found.append(_leaf(COMMENT, match))
+        elif match.group(3) is not None and not _XML_DECLARATION.match(match.group(3)):
+            found.append(_leaf(PI, match))
+        position = match.end()
+
+
+_AFTER_NAME = ' \t\r\n/>'
+
+
+def _close(text: str, name: str, head: int, end: int, last: bool) -> int | None:
+    """Return the end of the element whose start tag ends at ``head``, if simply found."""
+    closing = '</' + name
+    if last:
+        found = text.rfind(closing, head, end)
+    else:
+        found = text.find(closing, head, end)
+        while found >= 0 and text[found + len(closing):found + len(closing) + 1] \
+                not in ('>', ' ', '\t', '\r', '\n'):
+            found = text.find(closing, found + 1, end)
+    if found < 0:
+        return None
+    if not last and (text.find('<!', head, found) >= 0 or text.find('<?', head, found) >= 0):
+        return None
+    opening = '<' + name
+    nested = text.find(opening, head, found)
+    while nested >= 0:
+        if text[nested + len(opening):nested + len(opening) + 1] in _AFTER_NAME:
+            return None
+        nested = text.find(opening, nested + 1, found)
+    closed = text.find('>', found, end)
+    return None if closed < 0 else closed + 1
+
+
+def children(text: str, span: Span) -> list[Span]:
+    """Return the children of an element's span, scanning them on first use."""
+    if span.children is None:
+        span.children = shallow(text, span.head, span.end)
+    return span.children
 
 
 def _leaf(kind: str, match: Any) -> Span:
@@ -107,23 +185,57 @@ def _fits(span: Span, node: Any) -> bool:
     return span.kind == PI and tag is etree.PI
 
 
-def pair(text: str, top: Any) -> tuple[dict[Any, Span], set[Any]]:
+class Spans:
     """
-    Return the span of each node of the document whose top element is ``top``.
+    The span of each node of a document, found level by level as the writer asks.
 
     Nodes added since the text was read have none. Where a parent's children changed in
-    number, the others are paired by their order and names: those (and what is in them)
-    are also returned in the set of nodes whose span may be another's of the same name.
+    number, the others are paired by their order, names and attribute values: those (and
+    what is in them) are ``loose``, their span possibly another's of the same name.
     """
-    spans: dict[Any, Span] = {}
-    loose: set[Any] = set()
-    nodes = [*reversed(list(top.itersiblings(preceding=True))), top, *top.itersiblings()]
-    found = scan(text)
-    if len(found) != len(nodes):  # a copy of the tree has no siblings: its element only
-        found = [span for span in found if span.kind == ELEMENT][:1]
-        nodes = [top]
-    _pair(text, found, nodes, spans, loose, False)
-    return spans, loose
+
+    def __init__(self, text: str, top: Any) -> None:
+        self.text = text
+        self.known: dict[Any, Span] = {}
+        self.loose: set[Any] = set()
+        self.expanded: set[Any] = set()  # the nodes whose children were paired
+        nodes = [*reversed(list(top.itersiblings(preceding=True))), top, *top.itersiblings()]
+        found = shallow(text, 0, len(text), last=True)
+        if len(found) != len(nodes):  # a copy of the tree has no siblings: its element only
+            found = [span for span in found if span.kind == ELEMENT][:1]
+            nodes = [top]
+        self._pair(found, nodes, False)
+
+    def get(self, node: Any) -> Span | None:
+        """Return the span of ``node``, or None."""
+        span = self.known.get(node)
+        if span is not None:
+            return span
+        parent = node.getparent()
+        if parent is None or parent in self.expanded:
+            return None
+        outer = self.get(parent)
+        self.expanded.add(parent)
+        if outer is None or outer.kind != ELEMENT:
+            return None
+        self._pair(children(self.text, outer), list(parent), parent in self.loose)
+        return self.known.get(node)
+
+    def _pair(self, found: list[Span], nodes: list[Any], moved: bool) -> None:
+        if len(found) == len(nodes) and all(_fits(span, node)
+                                            for span, node in zip(found, nodes)):
+            pairs = list(zip(found, nodes))
+        else:
+            moved = True
+            matcher = SequenceMatcher(None, [_key(self.text, span) for span in found],
+                                      [_node_key(node) for node in nodes], autojunk=False)
+            pairs = [(found[block.a + k], nodes[block.b + k])
+                     for block in matcher.get_matching_blocks() for k in range(block.size)]
+        known = self.known
+        for span, node in pairs:
+            known[node] = span
+        if moved:
+            self.loose.update(node for _, node in pairs)
 
 
 def _key(text: str, span: Span) -> str:
@@ -140,24 +252,6 @@ def _node_key(node: Any) -> str:
     if isinstance(tag, str):
         return ' '.join([ELEMENT, _local(tag), *node.attrib.values()])
     return COMMENT if tag is etree.Comment else PI
-
-
-def _pair(text: str, found: list[Span], nodes: list[Any], spans: dict[Any, Span],
-          loose: set[Any], moved: bool) -> None:
-    if len(found) == len(nodes) and all(_fits(span, node) for span, node in zip(found, nodes)):
-        pairs = list(zip(found, nodes))
-    else:
-        moved = True
-        matcher = SequenceMatcher(None, [_key(text, span) for span in found],
-                                  [_node_key(node) for node in nodes], autojunk=False)
-        pairs = [(found[block.a + k], nodes[block.b + k])
-                 for block in matcher.get_matching_blocks() for k in range(block.size)]
-    for span, node in pairs:
-        spans[node] = span
-        if moved:
-            loose.add(node)
-        if span.children or len(node):
-            _pair(text, span.children, list(node), spans, loose, moved)
 
 
 # ---- what the text says ----------------------------------------------------------------
@@ -212,7 +306,7 @@ def gaps(text: str, span: Span) -> list[str]:
         return ['']
     position = span.head
     result = []
-    for child in span.children:
+    for child in children(text, span):
         result.append(text[position:child.start])
         position = child.end
     close = text.rfind('</', position, span.end)
@@ -220,12 +314,12 @@ def gaps(text: str, span: Span) -> list[str]:
     return result
 
 
-def unchanged(text: str, span: Span, node: Any, spans: dict[Any, Span]) -> bool:
+def unchanged(text: str, span: Span, node: Any, spans: Spans) -> bool:
     """Return whether ``node`` and everything in it are still what the text says."""
     if not isinstance(node.tag, str):
         return text_value(text[span.start + 4:span.end - 3]) == node.text \
             if span.kind == COMMENT else True
-    if not same_attributes(text, span, node) or len(node) != len(span.children):
+    if not same_attributes(text, span, node) or len(node) != len(children(text, span)):
         return False
     between = gaps(text, span)
     if text_value(between[0]) != node.text:

@@ -31,7 +31,7 @@ from lxml import etree
 
 from urdfgenpy_ros.formats._xml import esc, escape_text, without_declared
 from urdfgenpy_ros.formats.source_record import (
-    attribute_value, attributes, gaps, pair, Span, text_value, unchanged)
+    attribute_value, attributes, children, gaps, Span, Spans, text_value, unchanged)
 from urdfgenpy_ros.preserved import SourceDocument
 
 _DOUBLE_QUOTED = re.compile(r'(\s[^\s=<>]+=)"([^"\']*)"')
@@ -68,7 +68,7 @@ class Splice:
         self.quote = quote
         self.declared = declared
         self.top = document.node.getroottree().getroot()
-        self.spans, self.loose = pair(text, self.top)
+        self.spans = Spans(text, self.top)
 
     def span(self, node: Any) -> Span | None:
         """Return the span of a node of the document, if it has one."""
@@ -89,7 +89,7 @@ class Splice:
         span = self.spans.get(node)
         if span is None:
             return self.fresh(node)
-        if (as_read and node not in self.loose) or \
+        if (as_read and node not in self.spans.loose) or \
                 unchanged(self.text, span, node, self.spans):
             return self.copy(span)
         if not isinstance(node.tag, str):
@@ -107,13 +107,13 @@ class Splice:
         name = text[span.start + 1:span.start + 1 + len(span.name)]
         attrs = self.attributes(node, [(prefixed(node, key), value)
                                        for key, value in node.attrib.items()])
-        children = list(node)
-        if not children and node.text is None:
+        kids = list(node)
+        if not kids and node.text is None:
             return self.empty(name, attrs, span)
         between = gaps(text, span)
-        after = {id(place): gap for place, gap in zip(span.children, between[1:])}
+        after = {id(place): gap for place, gap in zip(children(text, span), between[1:])}
         parts = [f'<{name}{attrs}>', _text(node.text, between[0])]
-        for child in children:
+        for child in kids:
             parts.append(self.node_text(child))
             place = self.spans.get(child)
             parts.append(_text(child.tail, after.get(id(place))))
