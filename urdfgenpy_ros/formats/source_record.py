@@ -135,21 +135,28 @@ def shallow(text: str, start: int, end: int, last: bool = False) -> list[Span]:
 
 
 _AFTER_NAME = ' \t\r\n/>'
+_CLOSERS: dict[str, re.Pattern[str]] = {}  # per element name (a bounded table of regexes)
+
+
+def _closer(name: str) -> re.Pattern[str]:
+    """Return the regex finding the first end tag of ``name``, opening of it, or ``<!``/``<?``."""
+    pattern = _CLOSERS.get(name)
+    if pattern is None:
+        if len(_CLOSERS) > 256:
+            _CLOSERS.clear()
+        quoted = re.escape(name)
+        pattern = _CLOSERS[name] = re.compile(rf'</{quoted}\s*>|<{quoted}[\s/>]|<[!?]')
+    return pattern
 
 
 def _close(text: str, name: str, head: int, end: int, last: bool) -> int | None:
     """Return the end of the element whose start tag ends at ``head``, if simply found."""
+    if not last:
+        match = _closer(name).search(text, head, end)
+        return match.end() if match is not None and match.group()[1] == '/' else None
     closing = '</' + name
-    if last:
-        found = text.rfind(closing, head, end)
-    else:
-        found = text.find(closing, head, end)
-        while found >= 0 and text[found + len(closing):found + len(closing) + 1] \
-                not in ('>', ' ', '\t', '\r', '\n'):
-            found = text.find(closing, found + 1, end)
+    found = text.rfind(closing, head, end)
     if found < 0:
-        return None
-    if not last and (text.find('<!', head, found) >= 0 or text.find('<?', head, found) >= 0):
         return None
     opening = '<' + name
     nested = text.find(opening, head, found)
