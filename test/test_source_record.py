@@ -85,3 +85,18 @@ def test_the_record_is_the_text_read_not_the_file_now(tmp_path: Path) -> None:
     robot.links[0].inertial.mass = 3.5
     removed, added = _changed(source.read_text(), robot.to_urdf())
     assert len(removed) == len(added) == 1 and '3.5' in added[0]
+
+
+def test_comments_and_instructions_in_a_block_keep_their_text_or_their_edit() -> None:
+    """A comment's text is as written (``&amp;`` is no reference there); an edit is written."""
+    from lxml import etree
+    source = ('<robot name="r">\n  <link name="a"/>\n  <gazebo reference="a">\n'
+              '    <!-- a &amp; b -->\n    <?pi x  y?>\n    <p>1</p>\n  </gazebo>\n</robot>\n')
+    robot = Robot.from_urdf_string(source)
+    block = robot.get_link('a').extensions[0].element
+    block[2].text = '2'
+    assert _changed(source, robot.to_urdf()) == (['    <p>1</p>'], ['    <p>2</p>'])
+    block[0].text = ' c '
+    block[1].text = 'z'
+    written = etree.fromstring(robot.to_urdf().encode()).find('gazebo')
+    assert [written[0].text, written[1].text, written[2].text] == [' c ', 'z', '2']

@@ -323,9 +323,11 @@ def gaps(text: str, span: Span) -> list[str]:
 
 def unchanged(text: str, span: Span, node: Any, spans: Spans) -> bool:
     """Return whether ``node`` and everything in it are still what the text says."""
-    if not isinstance(node.tag, str):
-        return text_value(text[span.start + 4:span.end - 3]) == node.text \
-            if span.kind == COMMENT else True
+    if not isinstance(node.tag, str):  # a comment's text is as written, entities and all
+        source = text[span.start:span.end].replace('\r\n', '\n')
+        if span.kind == COMMENT:
+            return source[4:-3] == node.text
+        return source == etree.tostring(node, encoding='unicode', with_tail=False)
     if not same_attributes(text, span, node) or len(node) != len(children(text, span)):
         return False
     between = gaps(text, span)
