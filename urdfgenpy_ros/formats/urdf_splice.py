@@ -64,7 +64,6 @@ class Splice:
         if newline != '\n':
             text = text.replace(newline, '\n')  # the writer puts the file's ends back
         self.text = text
-        self.document = document
         self.quote = quote
         self.declared = declared
         self.top = document.node.getroottree().getroot()
