@@ -34,7 +34,14 @@ reads a link's or joint's body only when asked) which still finds every error at
 time: "lazy floor" checks the file against ``lazy_floor.xsd`` in C (libxml2) and makes a
 named shell per link and joint, nothing more.
 
-    python bench/bench_io.py [--corpus DIR] [--repeat 5] [--per-file]
+With ``--baseline DIR`` (a checkout of another version of the package, e.g. ``git
+archive <commit> urdfgenpy_ros | tar -x -C DIR``), urdfgenpy_ros's read, write, read+write
+and read-a-file are also timed for this checkout and for DIR, each in a subprocess with
+its package first on ``PYTHONPATH``, alternately (``--rounds`` each; a file's figure is
+the lowest of its rounds), on the same files, each against lxml in its own process; the
+table gives both and this checkout's time over DIR's per file (median and p90).
+
+    python bench/bench_io.py [--corpus DIR] [--repeat 5] [--per-file] [--baseline DIR]
 """
 
 from __future__ import annotations
@@ -44,6 +51,7 @@ import contextlib
 import gc
 import importlib
 import io
+import json
 import logging
 import os
 from pathlib import Path
@@ -52,6 +60,7 @@ import shutil
 import site
 import statistics
 import subprocess
+import sys
 import tempfile
 import time
 import tracemalloc
@@ -209,6 +218,87 @@ def seconds(function: Callable[[], Any], repeat: int, sample: float) -> float:
     return statistics.median(times)
 
 
+KINDS = ('read', 'write', 'read+write', 'read a file')
+COMPARED = (*KINDS, 'write edited')  # one mass (or the robot's name) changed, then written
+
+
+def _edited(model: Any) -> Any:
+    """Return ``model`` with one value changed: the first mass, or else the robot's name."""
+    link = next((link for link in model.links if link.inertial is not None), None)
+    if link is None:
+        model.name = model.name + '_edited'
+    else:
+        link.inertial.mass = link.inertial.mass + 0.125
+    return model
+
+
+def ours_over_lxml(files: list[tuple[str, str]], repeat: int, sample: float
+                   ) -> dict[str, list[float]]:
+    """Return, per file, urdfgenpy_ros's times over lxml's for each of COMPARED."""
+    from lxml import etree
+
+    from urdfgenpy_ros import Robot
+    figures = {}
+    for name, copy in files:
+        text = re.sub(rb'^\s*<\?xml[^>]*\?>', b'', Path(name).read_bytes())
+        tree = etree.fromstring(text)
+        model = Robot.from_urdf_string(text)
+        edited = _edited(Robot.from_urdf_string(text))
+        written = seconds(lambda: etree.tostring(tree), repeat, sample)
+        floor = (seconds(lambda: etree.fromstring(text), repeat, sample), written,
+                 seconds(lambda: etree.tostring(etree.fromstring(text)), repeat, sample),
+                 seconds(lambda: etree.parse(copy), repeat, sample), written)
+        ours = (seconds(lambda: Robot.from_urdf_string(text), repeat, sample),
+                seconds(lambda: model.to_urdf(), repeat, sample),
+                seconds(lambda: Robot.from_urdf_string(text).to_urdf(), repeat, sample),
+                seconds(lambda: Robot.from_urdf(copy), repeat, sample),
+                seconds(lambda: edited.to_urdf(), repeat, sample))
+        figures[name] = [mine / base for mine, base in zip(ours, floor)]
+    return figures
+
+
+def _worker(request: Path) -> None:
+    """Print ours_over_lxml for the files and settings of a JSON request, as JSON."""
+    asked = json.loads(request.read_text())
+    print(json.dumps(ours_over_lxml(asked['files'], asked['repeat'], asked['sample'])))
+
+
+def compare(files: list[tuple[str, str]], baseline: Path, repeat: int, sample: float,
+            rounds: int) -> None:
+    """Print this checkout's figures, ``baseline``'s, and their ratio per file."""
+    here = Path(__file__).resolve().parent.parent
+    request = Path(tempfile.mkdtemp(prefix='bench_io_request_')) / 'files.json'
+    request.write_text(json.dumps({'files': files, 'repeat': repeat, 'sample': sample}))
+    checkouts = {'this checkout': here, f'baseline {baseline}': baseline.resolve()}
+    best: dict[str, dict[str, list[float]]] = {name: {} for name in checkouts}
+    for _ in range(rounds):
+        for name, folder in checkouts.items():  # alternately: the machine's load is shared
+            environment = dict(os.environ, PYTHONPATH=str(folder))
+            done = subprocess.run([sys.executable, str(Path(__file__).resolve()), '--worker',
+                                   str(request)],
+                                  capture_output=True, text=True, check=True,
+                                  env=environment, cwd=str(folder))
+            for path, figures in json.loads(done.stdout).items():
+                known = best[name].setdefault(path, figures)
+                best[name][path] = [min(a, b) for a, b in zip(known, figures)]
+    shutil.rmtree(request.parent)
+    names = list(checkouts)
+    print(f'\n## urdfgenpy_ros against {baseline} ({len(files)} files, best of {rounds} '
+          'alternating rounds), ratio to lxml per file\n')
+    print('| code | ' + ' | '.join(f'{kind} median | {kind} p90' for kind in COMPARED) +
+          ' |\n|---|' + '---:|' * (2 * len(COMPARED)))
+    for name in names:
+        columns = list(zip(*best[name].values()))
+        print(f'| {name} | ' + ' | '.join(
+            f'{statistics.median(values):.2f}x | {p90(list(values)):.2f}x'
+            for values in columns) + ' |')
+    paths = list(best[names[0]])
+    ratios = [[best[names[0]][path][index] / best[names[1]][path][index] for path in paths]
+              for index in range(len(COMPARED))]
+    print('| this / baseline, per file | ' + ' | '.join(
+        f'{statistics.median(values):.2f} | {p90(values):.2f}' for values in ratios) + ' |')
+
+
 def main() -> None:
     """Print the per-file ratio table (and per-file figures on request)."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
@@ -218,7 +308,17 @@ def main() -> None:
     parser.add_argument('--repeat', type=int, default=5)
     parser.add_argument('--sample', type=float, default=0.02)
     parser.add_argument('--per-file', action='store_true')
+    parser.add_argument('--baseline', type=Path,
+                        help='a checkout of another version: compare with it (see above)')
+    parser.add_argument('--rounds', type=int, default=2,
+                        help='alternating rounds per checkout with --baseline')
+    parser.add_argument('--baseline-only', action='store_true',
+                        help='with --baseline, leave out the table of all libraries')
+    parser.add_argument('--worker', type=Path, help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.worker is not None:
+        _worker(args.worker)
+        return
     libraries = _libraries()
     files = (corpus_files(args.corpus) if args.corpus else []) + package_files()
     data = {path: re.sub(rb'^\s*<\?xml[^>]*\?>', b'', path.read_bytes()) for path in files}
@@ -242,7 +342,14 @@ def main() -> None:
                 read_file(copies[path])
             except Exception:  # noqa: B902 - left out of that library's file column
                 unreadable[name].add(path)
-    kinds = ('read', 'write', 'read+write', 'read a file')
+    if args.baseline is not None:
+        compare([(str(path), copies[path]) for path in usable
+                 if path not in unreadable['urdfgenpy_ros']],
+                args.baseline, args.repeat, args.sample, args.rounds)
+        if args.baseline_only:
+            shutil.rmtree(folder)
+            return
+    kinds = KINDS
     ratios: dict[str, dict[str, list[float]]] = {
         name: {kind: [] for kind in kinds} for name in libraries}
     rows = []

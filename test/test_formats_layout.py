@@ -362,13 +362,12 @@ def test_an_element_added_before_the_first_write_moves_no_tag_onto_another() -> 
         ('new', {}), ('p', {'k': '1'}), ('q', {'k': '1'})]
 
 
-def test_an_edit_after_the_layout_is_worked_out_is_written() -> None:
-    """The text lxml made while working out the layout serves only the write that made it."""
-    for touch in (lambda robot: robot.extras.layout, lambda robot: robot.to_urdf()):
-        robot = Robot.from_urdf_string(_ATTRIBUTES_ON_LINES)
-        touch(robot)
-        robot.get_link('arm').extensions[0].element.set('name', 'tip')
-        assert '<gazebo reference="arm" name="tip">' in robot.to_urdf()
+def test_an_edit_after_a_write_is_written() -> None:
+    """A write leaves nothing behind that a later write of an edited robot would reuse."""
+    robot = Robot.from_urdf_string(_ATTRIBUTES_ON_LINES)
+    assert robot.to_urdf() == _ATTRIBUTES_ON_LINES
+    robot.get_link('arm').extensions[0].element.set('name', 'tip')
+    assert '<gazebo reference="arm" name="tip">' in robot.to_urdf()
 
 
 _REAL_URDFS = [*(path for path in sorted((FIXTURES.parent).rglob('*.urdf'))
@@ -377,11 +376,19 @@ _REAL_URDFS = [*(path for path in sorted((FIXTURES.parent).rglob('*.urdf'))
                *(sorted(CORPUS.rglob('*.urdf')) if CORPUS.is_dir() else [])]
 
 
-def test_start_tags_put_back_by_place_match_a_full_reading() -> None:
-    """Skipping to each recorded tag gives what reading every start tag gives, on real files."""
+def _plain_subtree(node) -> bool:
+    """Return whether no tag or attribute below ``node`` has a namespace."""
+    from lxml import etree
+    return all(isinstance(item.tag, str) and '{' not in item.tag and ':' not in item.tag
+               and not any('{' in key or ':' in key for key in item.attrib)
+               for item in node.iter(etree.Element))
+
+
+def test_every_node_of_a_real_file_has_the_span_lxml_reads_back() -> None:
+    """The scanner's span of each element, parsed by lxml on its own, is that element."""
     from lxml import etree
 
-    from urdfgenpy_ros.formats import start_tags
+    from urdfgenpy_ros.formats.source_record import Spans
 
     compared = 0
     for path in _REAL_URDFS:
@@ -389,28 +396,35 @@ def test_start_tags_put_back_by_place_match_a_full_reading() -> None:
             robot = Robot.from_urdf(path)
         except (ParseError, OSError):
             continue
-        extras = robot.extras
-        tags = extras.start_tags
-        if not tags:
-            continue
-        for node in [extras.node, *extras.node]:
-            serialized = etree.tostring(node, encoding='unicode', with_tail=False)
-            elements = list(node.iter(etree.Element))
-            assert start_tags._restore_few(serialized, elements, tags) == \
-                start_tags._restore(serialized, elements, tags), (path, node.tag)
+        document = robot.extras
+        top = document.node.getroottree().getroot()
+        spans = Spans(document.text, top)
+        nodes = [*top.itersiblings(preceding=True), *top.iter(), *top.itersiblings()]
+        assert all(spans.get(node) is not None for node in nodes), path
+        assert not spans.loose, path
+        for node in top.iter(etree.Element):
+            if not _plain_subtree(node):
+                continue
+            span = spans.get(node)
+            alone = etree.fromstring(document.text[span.start:span.end].encode())
+            copy = etree.fromstring(etree.tostring(node, with_tail=False))
+            assert etree.tostring(alone, method='c14n', exclusive=True) == \
+                etree.tostring(copy, method='c14n', exclusive=True), (path, node.sourceline)
             compared += 1
-    assert compared > 10  # the fixtures alone have unusual start tags
+    assert compared > 1000
 
 
-def test_many_unusual_start_tags_are_all_put_back() -> None:
-    """A file whose every tag is unusual (more than are found one by one) is written as read."""
-    from urdfgenpy_ros.formats import start_tags
+def test_many_unusual_start_tags_are_all_kept() -> None:
+    """A file whose every tag is unusual (spaces, single quotes) is written as read; edits too."""
     links = ''.join(f"  <link  name='l{index}'>\n    <visual>\n      <geometry><box size='1 1 1'"
                     f'/></geometry>\n    </visual>\n  </link>\n' for index in range(40))
     source = "<robot  name='r'>\n" + links + '</robot>\n'
     robot = Robot.from_urdf_string(source)
-    assert len(robot.extras.start_tags) > start_tags._FEW
     assert robot.to_urdf() == source
+    robot.get_link('l7').visuals[0].geometry = Box(1.0, 1.0, 2.0)
+    assert _changed(source, robot.to_urdf()) == (
+        ["      <geometry><box size='1 1 1'/></geometry>"],
+        ["      <geometry><box size='1 1 2'/></geometry>"])
 
 
 def test_an_unedited_file_keeps_its_own_spelling_of_characters() -> None:

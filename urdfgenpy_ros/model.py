@@ -34,7 +34,7 @@ from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.joint import Joint
 from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.material import Material
-from urdfgenpy_ros.preserved import Preserved
+from urdfgenpy_ros.preserved import SourceDocument
 
 if TYPE_CHECKING:
     from typing_extensions import Self
@@ -64,7 +64,7 @@ class RobotModel:
         self.extensions: list[Extension] = []
         self.source: SourceLocation | None = None
         self.urdf_version: str | None = None  # the <robot version=...> given (None: 1.0)
-        self.extras: Preserved | None = None
+        self.extras: SourceDocument | None = None  # the record of the file read, if any
         self.read_warnings: list[ReadWarning] = []
         self.included_files: list[str] = []
 

@@ -32,11 +32,12 @@ from urdfgenpy_ros.cli.check_reports import sarif_report
 from urdfgenpy_ros.cli.inputs import description_files
 from urdfgenpy_ros.errors import ModelError, Severity, ValidationError
 from urdfgenpy_ros.formats import DH_SUFFIXES, load
+from urdfgenpy_ros.formats.urdf import urdf_file_bytes
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET, TARGETS
 from urdfgenpy_ros.validation.checklist import Review, review, ReviewOptions
-from urdfgenpy_ros.validation.fix import carry_over, LIMIT_FIELDS
+from urdfgenpy_ros.validation.fix import LIMIT_FIELDS
 from urdfgenpy_ros.validation.preflight import ENGINES
 from urdfgenpy_ros.validation.xacro_source import EXPANDED
 
@@ -247,7 +248,6 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
         _render(report, found)
         if not options.fix:
             return report
-        before = robot.to_urdf()
         repairs = found.fix()
         refusal = _not_rewritable(path, robot, len(repairs))
         if refusal is not None:  # nothing is written: no word on missing defaults either
@@ -257,11 +257,8 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
         if not repairs:
             return report
         old = path.read_bytes().decode('utf-8', 'surrogateescape')  # other bytes stay
-        new = carry_over(old, before, robot.to_urdf())
-        if new is None:
-            report.notes.append(f'{path}: not fixed: the repaired lines could not be placed '
-                                'in the file as it is written (please report this)')
-            return report
+        # the writer copies all the repairs left alone from the file as it is
+        new = urdf_file_bytes(robot, mend=False).decode('utf-8', 'surrogateescape')
         if new == old:
             return report
         report.repairs = repairs

@@ -27,8 +27,8 @@ from lxml import etree
 
 from urdfgenpy_ros.floats import fmt, fmt_vec
 
-__all__ = ['esc', 'escape_text', 'fmt', 'fmt_vec', 'fragment', 'INDENT', 'without_declared',
-           'write_text', 'xml_bytes']
+__all__ = ['esc', 'escape_text', 'fmt', 'fmt_vec', 'fragment', 'INDENT', 'tag_end',
+           'without_declared', 'write_text', 'xml_bytes']
 
 INDENT = '  '
 
@@ -44,6 +44,15 @@ def esc(text: str) -> str:
 def escape_text(text: str) -> str:
     """Escape text content."""
     return text.replace('&', '&amp;').replace('<', '&lt;').replace('>', '&gt;')
+
+
+_TAG_REST = re.compile(r'(?:"[^"]*"|\'[^\']*\'|[^>"\'])*+>')  # a start tag after its '<'
+
+
+def tag_end(text: str, start: int) -> int:
+    """Return the index just after the ``>`` closing the start tag at ``start``."""
+    match = _TAG_REST.match(text, start + 1)
+    return len(text) if match is None else match.end()
 
 
 _DECLARATION = re.compile(r' xmlns(?::([\w.-]+))?="([^"]*)"')

@@ -16,48 +16,44 @@
 """
 URDF writer, driven by the declarations of :mod:`.urdf_schema`.
 
-An element read from a file whose fields still equal its snapshot is written as it was
-read. An edited one is written from its declaration in the layout of its source: the
-whitespace around its children, its attribute order, unknown attributes and children,
-comments, and the original text of every value that did not change all stay, so one edit
-is one changed line. Elements built in Python are written in the file's indentation.
+A robot read from a file and not edited since is the file's text. An edited one is
+written from the text too (:mod:`.urdf_splice`): every element nobody edited is copied as
+it stands in the file; an edited one keeps its start tag, with only the values that
+changed replaced in place, and its unedited children and the text between them.
+Elements built in Python are written in the file's indentation and quotes.
 """
 
 from __future__ import annotations
 
+import codecs
+from functools import partial
 from itertools import chain
 from os import PathLike
 import re
-from typing import Any, TYPE_CHECKING
+from typing import Any, Callable, TYPE_CHECKING
 
-from lxml import etree
-
-from urdfgenpy_ros.errors import ModelError, UrdfgenpyError
+from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.extensions import Extension
-from urdfgenpy_ros.formats._xml import esc, fragment, write_text
+from urdfgenpy_ros.formats._xml import fragment, write_text, xml_bytes
 from urdfgenpy_ros.formats.sdf import sensor_element
-from urdfgenpy_ros.formats.start_tags import as_source, tag_end
-from urdfgenpy_ros.formats.urdf_element import ElementWriter, prefixed
-from urdfgenpy_ros.formats.urdf_schema import MATERIAL, OF_CLASS, values
+from urdfgenpy_ros.formats.urdf_edits import block_edited, is_as_read, owners_of_blocks
+from urdfgenpy_ros.formats.urdf_element import ElementWriter
+from urdfgenpy_ros.formats.urdf_schema import MATERIAL, OF_CLASS
+from urdfgenpy_ros.formats.urdf_splice import in_quotes, prefixed, Splice
 from urdfgenpy_ros.joint import Joint
 from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.material import Material
-from urdfgenpy_ros.preserved import Layout
+from urdfgenpy_ros.preserved import SourceDocument
 from urdfgenpy_ros.urdf_versions import needed_version, version_text
 from urdfgenpy_ros.value_kinds import wrong_kind
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
 
-_ROBOT_NAME = re.compile(r'(\sname\s*=\s*)(["\'])(.*?)\2', re.DOTALL)
-_ROBOT_VERSION = re.compile(r'(\sversion\s*=\s*)(["\'])(.*?)\2', re.DOTALL)
+_DECLARATION = re.compile(r'\s*(<\?xml\b[^>]*\?>)')
 
-
-def _single_quotes(text: str) -> str:
-    """Write attributes with single quotes, as a file that used them did."""
-    def tag(match: Any) -> str:
-        return re.sub(r'="([^"\']*)"', r"='\1'", match.group(0))
-    return re.sub(r'<[^<>!?][^<>]*>', tag, text)
+# What writing a value of the wrong kind raises (a string for a number, say)
+_UNWRITABLE = (TypeError, ValueError, AttributeError, KeyError)
 
 
 def _sensor_block(sensor: Any, reference: str) -> Any:
@@ -68,8 +64,17 @@ def _sensor_block(sensor: Any, reference: str) -> Any:
     return block.element
 
 
-# What writing a value of the wrong kind raises (a string for a number, say)
-_UNWRITABLE = (TypeError, ValueError, AttributeError, KeyError)
+def _layout(document: SourceDocument | None) -> tuple[str, str, str]:
+    """Return the file's line end, quote and indentation unit (a new file's if none)."""
+    if document is None:
+        return '\n', '"', '  '
+    text = document.text
+    crlf = text.count('\r\n') if '\r' in text else 0  # the ends most lines have
+    newline = '\r\n' if 2 * crlf > text.count('\n') else '\n'
+    quote = "'" if "'" in text and text.count("='") > text.count('="') else '"'
+    space = document.node.text or ''
+    unit = space.rsplit('\n', 1)[-1] if '\n' in space else ''
+    return newline, quote, unit if unit and not unit.strip() else '  '
 
 
 class UrdfWriter(ElementWriter):
@@ -77,74 +82,70 @@ class UrdfWriter(ElementWriter):
 
     declaration = '<?xml version="1.0"?>'
 
-    def __init__(self, robot: Robot) -> None:
-        extras = robot.extras
-        # and lxml's text of the tree, if working out the layout just made it
-        self.layout, self._written = extras.writing() if extras is not None else (Layout(), None)
-        super().__init__(robot, self.layout.unit, {
-            prefix or '': uri for prefix, uri in extras.node.nsmap.items()
-        } if extras is not None else {})
+    def __init__(self, robot: Robot, *, mend: bool = True) -> None:
+        document = robot.extras if isinstance(robot.extras, SourceDocument) else None
+        self.mend = mend  # write a wrapped <robot> unwrapped, a malformed declaration mended
+        self.document_record = document
+        self.newline, quote, unit = _layout(document)
+        self.bom = document is not None and document.bom
+        super().__init__(robot, unit, {
+            prefix or '': uri for prefix, uri in document.node.nsmap.items()
+        } if document is not None else {}, quote)
         self._owners: dict[int, Link | Joint] | None = None
         self.materials = robot.materials
         self.extensions = robot.extensions
 
     def document(self) -> str:
         """
-        Return the whole file, with the comments a read file had around its root.
+        Return the whole file, with the text a read file had around its root.
 
         :raises ModelError: naming the link or joint that holds a value set since that is
             not of its kind (``inertial.mass = 'abc'``), instead of the error deep inside.
         """
+        document = self.document_record
+        if document is None:
+            return ''.join([self.declaration, '\n', self.write_robot(), '\n'])
+        mend = self.mend
+        if self.verbatim and (not mend or (not document.mended and
+                                           document.node.getparent() is None)) \
+                and not self.prologue() and is_as_read(self.robot):
+            return document.text.rstrip('\x00') if mend else document.text  # as it is
+        splice = self.splice = Splice(document, self.newline, self.quote, self.declared)
+        text = splice.text
+        node = document.node
+        span = splice.span(node)
+        if span is not None and not mend:
+            before, after = text[:span.start], text[span.end:]
+        elif span is None or node.getparent() is not None:  # a wrapped <robot> is unwrapped
+            match = _DECLARATION.match(text)
+            before = (match.group(1) if match is not None and not document.mended
+                      else self.declaration) + '\n'
+            after = '\n'
+        else:
+            before, after = text[:span.start], text[span.end:].rstrip('\x00')
+            if document.mended:  # the declaration the reader mended (P102)
+                before = _DECLARATION.sub(self.declaration, before, count=1)
+        written = ''.join([before, self.write_robot(), after])
+        return written if self.newline == '\n' else written.replace('\n', self.newline)
+
+    def checked(self, item: Any, write: Callable[[], str]) -> str:
+        """
+        Return ``write()``, the text of a top-level item, naming a value of a wrong kind.
+
+        A value the user set that is not of its kind (``inertial.mass = 'abc'``) is one
+        line naming the item and the value; any other error is a bug of ours and keeps
+        its traceback.
+        """
         try:
-            return self._document()
-        except UrdfgenpyError:
-            raise  # already the model's own one-line error
+            return write()
         except _UNWRITABLE as error:
-            raise self._unwritable(error) from error
-
-    def _unwritable(self, error: Exception) -> ModelError:
-        """
-        Return the one-line error naming a value set on the model that is not of its kind.
-
-        When every value is of its kind, the error is a bug of ours: it is raised again,
-        with its traceback.
-        """
-        robot = self.robot
-        items: list[Link | Joint] = [*robot.links, *robot.joints]
-        for item in items:
-            found = wrong_kind(item)
-            if found is not None:
-                kind = 'link' if isinstance(item, Link) else 'joint'
-                return ModelError(f'{kind} {item.name!r}: cannot be written, a value set in it '
-                                  f'is not of its kind: {found}: e.g. inertial.mass = 1.5, '
-                                  'joint.origin = Origin((0, 0, 0.1))')
-        raise error
-
-    def _document(self) -> str:
-        extras = self.robot.extras
-        layout = self.layout
-        before: list[str] = []
-        after: list[str] = []
-        declaration = self.declaration
-        if extras is not None:
-            declaration = layout.declaration
-            before, after = ([self.source_text(node) for node in nodes]
-                             for nodes in extras.outside)
-        spaces = layout.between if len(layout.between) == len(before) else ['\n'] * len(before)
-        # One join: the robot's text is most of the file, and each '+' would copy it again.
-        parts = [declaration, layout.gap]  # no declaration: the white space the file began with
-        for node, space in zip(before, spaces):
-            parts += [node, space]
-        parts.append(self.write_robot())
-        for node in after:
-            parts += ['\n', node]
-        parts.append(layout.end)
-        text = ''.join(parts)
-        if layout.quote == "'":
-            text = _single_quotes(text)
-        if layout.newline != '\n':
-            text = text.replace('\n', layout.newline)
-        return text
+            found = wrong_kind(item) if isinstance(item, (Link, Joint, Material)) else None
+            if found is None:
+                raise
+            kind = type(item).__name__.lower()
+            raise ModelError(f'{kind} {item.name!r}: cannot be written, a value set in it '
+                             f'is not of its kind: {found}: e.g. inertial.mass = 1.5, '
+                             'joint.origin = Origin((0, 0, 0.1))') from error
 
     # ---- hooks ----------------------------------------------------------------------
 
@@ -167,116 +168,85 @@ class UrdfWriter(ElementWriter):
     def write_robot(self) -> str:
         """Return the ``<robot>`` element, in the document order it was read in if any."""
         robot = self.robot
-        extras = robot.extras
+        document = self.document_record
         unit = self.unit
         fresh = '\n' + unit
-        if extras is not None and self._untouched():
-            head = extras.layout.head
-            assert head is not None
-            serialized = self._written or etree.tostring(extras.node, encoding='unicode',
-                                                         with_tail=False)
-            text = as_source(serialized, extras.node, extras)
-            return head + text[tag_end(text, 0):] if len(extras.node) else head[:-1] + '/>'
+        checked = self.checked
         items = [(fresh, text) for text in self.prologue()]
         materials, links, joints = self.materials, robot.links, robot.joints
         written: set[int] = set()
         trailing = '\n'
-        if extras is not None and extras.order is not None:
+        if document is not None:
             present = {id(item) for item in [*materials, *links, *joints,
                                              *self._all_extensions()]}
             # an item replaced by a copy of itself (a renamed material) keeps the place
             # of the source node it came from
             read: list[Material | Link | Joint] = [*materials, *links, *joints]
             by_node = {id(item.extras.node): item for item in read if item.extras is not None}
-            whitespace = extras.node.text or ''
-            for item, node in zip(extras.order, extras.node):
+            whitespace = document.node.text or ''
+            for item, node in zip(document.order, document.node):
                 if id(item) not in present and isinstance(item, (Material, Link, Joint)):
                     item = by_node.get(id(node), item)
                 if id(item) in present and id(item) not in written:
                     written.add(id(item))
-                    items.append((whitespace, self.write_item(item, unit)))
+                    items.append((whitespace, checked(item, partial(self.write_item, item, unit))))
                 elif not isinstance(item, (Material, Link, Joint, Extension)):
                     items.append((whitespace, self.source_text(node)))
                 whitespace = node.tail or ''
             trailing = whitespace if not whitespace.strip() else '\n'
-        items += [(fresh, self.write_item(item, unit)) for item in materials
-                  if id(item) not in written]
-        items += [(fresh, self.object_text(item, unit)) for item in links
-                  if id(item) not in written]
+        items += [(fresh, checked(item, partial(self.write_item, item, unit)))
+                  for item in materials if id(item) not in written]
+        items += [(fresh, checked(item, partial(self.object_text, item, unit)))
+                  for item in links if id(item) not in written]
         owners: list[Link | Joint] = [*links, *joints]
         for owner in owners:
             items += [(fresh, self.write_item(block, unit, owner)) for block in owner.extensions
                       if id(block) not in written]
             items += [(fresh, self.write_extension(_sensor_block(sensor, owner.name), unit))
                       for sensor in owner.sensors]
-        items += [(fresh, self.object_text(item, unit)) for item in joints
-                  if id(item) not in written]
+        items += [(fresh, checked(item, partial(self.object_text, item, unit)))
+                  for item in joints if id(item) not in written]
         items += [(fresh, self.write_item(block, unit)) for block in self.extensions
                   if id(block) not in written]
-        opening = self._opening()
+        name, attrs = self._opening()
         if not items:
-            return opening[:-1] + '/>'
-        return ''.join([opening, *chain.from_iterable(items), trailing, '</robot>'])
+            span = self.splice.span(document.node) if self.splice is not None and \
+                document is not None else None
+            if span is not None and self.splice is not None:
+                return self.splice.empty(name, attrs, span)
+            return f'<{name}{attrs}/>'
+        return ''.join([f'<{name}{attrs}>', *chain.from_iterable(items), trailing,
+                        f'</{name}>'])
 
-    def _untouched(self) -> bool:
-        """Return whether the robot holds exactly what was read: write the tree as it is."""
-        robot = self.robot
-        extras = robot.extras
-        if extras is None or extras.order is None or extras.layout.head is None \
-                or not self.verbatim or extras.node.get('name') != robot.name \
-                or extras.node.get('version') != robot.urdf_version:
-            return False
-        blocks = self._all_extensions()
-        items = [*self.materials, *robot.links, *robot.joints, *blocks]
-        read = [item for item in extras.order if isinstance(item, (Material, Link, Joint,
-                                                                   Extension))]
-        if len(items) != len(read) or {id(item) for item in items} != {id(i) for i in read}:
-            return False
-        for item in read:
-            if isinstance(item, Extension):
-                if item.element.getparent() is not extras.node:  # a copy: write it itself
-                    return False
-                owner = self._owner(item)
-                if owner is not None and item.tag == 'gazebo' and item.reference != owner.name:
-                    return False
-            elif item.extras is None or values(item) != item.extras.snapshot:
-                return False
-        if any(owner.sensors for owner in self._owners_of_blocks()):
-            return False
-        head = extras.layout.head
-        return all(f'{key}=' in head for key, _ in self.robot_attrs()) and not self.prologue()
-
-    def _opening(self) -> str:
-        """Return the ``<robot ...>`` tag: as the file wrote it, with what changed."""
-        extras = self.robot.extras
+    def _opening(self) -> tuple[str, str]:
+        """Return the root's tag and attributes: as the file wrote them, with what changed."""
         attrs = self.robot_attrs()
-        head = extras.layout.head if extras is not None else None
-        if head is not None:
-            name = self.robot.name
-            if extras is not None and extras.node.get('name') != name:
-                head = _ROBOT_NAME.sub(lambda m: f'{m.group(1)}{m.group(2)}{esc(name)}'
-                                       f'{m.group(2)}', head, count=1)
-            version = self.robot.urdf_version
-            if extras is not None and version is not None and \
-                    extras.node.get('version') not in (None, version):
-                head = _ROBOT_VERSION.sub(lambda m: f'{m.group(1)}{m.group(2)}{esc(version)}'
-                                          f'{m.group(2)}', head, count=1)
-            for key, text in attrs:
-                if f'{key}=' not in head:
-                    head = f'{head[:-1]} {key}="{esc(text)}">'
-            return head
-        parts = ['<robot']
-        parts += [f' {key}="{esc(text)}"' for key, text in attrs]
-        taken = {key for key, _ in attrs}
-        if extras is not None:
-            node = extras.node
-            parts += [f' {prefixed(node, key)}="{esc(text)}"' for key, text in
-                      node.attrib.items() if key not in taken]
-            for prefix, uri in node.nsmap.items():
-                key = f'xmlns:{prefix}' if prefix else 'xmlns'
-                if prefix and key not in taken:
-                    parts.append(f' {key}="{esc(uri)}"')
-        return ''.join(parts) + '>'
+        document = self.document_record
+        splice = self.splice
+        if document is None or splice is None:
+            return 'robot', self.written(attrs)
+        node = document.node
+        robot = self.robot
+        given = []
+        for key, value in node.attrib.items():
+            if key == 'name':
+                given.append((key, robot.name))
+            elif key == 'version':
+                if robot.urdf_version is not None:
+                    given.append((key, robot.urdf_version))
+            else:
+                given.append((prefixed(node, key), value))
+        text = splice.attributes(node, given)
+        added = [(key, value) for key, value in attrs if key not in node.attrib]
+        if self.mend:
+            for prefix, uri in node.nsmap.items():  # a wrapper's declarations come along
+                if prefix:
+                    added.append((f'xmlns:{prefix}', uri))
+        text += splice.written([(key, value) for key, value in added
+                                if f' {key}=' not in text and f'\n{key}=' not in text
+                                and f'\t{key}=' not in text])
+        span = splice.span(node)
+        return ('robot' if span is None else span.name), text
 
     def _owners_of_blocks(self) -> list[Link | Joint]:
         return [*self.robot.links, *self.robot.joints]
@@ -303,18 +273,21 @@ class UrdfWriter(ElementWriter):
                 and item.reference != owner.name:
             element = item.with_reference(owner.name)
             element.tail = None
+        elif self.splice is not None and self.document_record is not None and \
+                not block_edited(self.document_record, item):
+            return self.source_text(element, as_read=True)
         if item.source is not None:
             return self.source_text(element)
         return self.write_extension(element, pad)
 
     def write_extension(self, element: Any, pad: str) -> str:
         """Return an XML block built in Python, indented like the file."""
-        return fragment(element, pad, self.declared, self.unit)[len(pad):]
+        return in_quotes(fragment(element, pad, self.declared, self.unit)[len(pad):],
+                         self.quote)
 
     def _owner(self, block: Extension) -> Link | Joint | None:
         if self._owners is None:
-            self._owners = {id(candidate): owner for owner in self._owners_of_blocks()
-                            for candidate in owner.extensions}
+            self._owners = owners_of_blocks(self.robot)
         return self._owners.get(id(block))
 
     def write_material(self, material: Material, pad: str) -> str:
@@ -322,10 +295,25 @@ class UrdfWriter(ElementWriter):
         return pad + self.write_object(MATERIAL, material, pad)
 
 
+def urdf_file_bytes(robot: Robot, *, mend: bool = True) -> bytes:
+    """
+    Return the bytes of the URDF file of ``robot``: in its declared encoding, with its BOM.
+
+    ``mend=False`` keeps what the reader mended as the file has it (a ``<robot>`` wrapped
+    in another element, a malformed XML declaration): ``check --fix`` changes nothing
+    but the repaired lines.
+    """
+    writer = UrdfWriter(robot, mend=mend)
+    text = writer.document()
+    data = xml_bytes(text)
+    utf8 = data == text.encode('utf-8', 'surrogateescape')
+    return codecs.BOM_UTF8 + data if writer.bom and utf8 else data
+
+
 def write_urdf(robot: Robot, path: str | PathLike[str] | None = None) -> str:
     """Return the URDF text of ``robot``; also write it to ``path`` when given."""
     writer = UrdfWriter(robot)
     text = writer.document()
     if path is not None:
-        write_text(path, text, bom=writer.layout.bom)
+        write_text(path, text, bom=writer.bom)
     return text

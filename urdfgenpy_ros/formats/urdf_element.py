@@ -16,27 +16,27 @@
 """
 Write one URDF element from its declaration, in the layout of the node it was read from.
 
-An object whose fields still equal its snapshot is its source node, as read. An edited one
-is written anew around its source: the whitespace between its children, its attribute
-order, unknown attributes and children, comments and the original text of every value
-that did not change all stay. Objects built in Python go through the compiled writers of
-:mod:`.urdf_fresh`, in the indentation of the file.
+An object whose fields still equal its snapshot is its source text, copied. An edited one
+is written anew around its source: its start tag with only the changed values replaced
+in place, the whitespace between its children, unknown attributes and children, comments
+and the original text of every value that did not change all stay. Objects built in
+Python go through the compiled writers of :mod:`.urdf_fresh`, in the file's indentation.
 """
 
 from __future__ import annotations
 
-import re
 from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
 from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import esc, without_declared
-from urdfgenpy_ros.formats.start_tags import as_source, ATTRIBUTE, source_tag
+from urdfgenpy_ros.formats.urdf_edits import is_edited
 from urdfgenpy_ros.formats.urdf_fresh import FRESH
 from urdfgenpy_ros.formats.urdf_schema import (
     Child, Element, ELEMENTS, FLOAT, INERTIAL, MATERIAL, OF_CLASS, REQUIRED, slot_of, SLOTS,
-    TEXT, values)
+    TEXT)
+from urdfgenpy_ros.formats.urdf_splice import in_quotes, prefixed, Splice
 from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Origin, quaternion_rpy, Sphere
 from urdfgenpy_ros.material import Material
 
@@ -47,7 +47,6 @@ if TYPE_CHECKING:
 
 _LEAVES = frozenset((Origin, Box, Cylinder, Sphere, Capsule, Mesh))
 _ATTRS = {tag: {attr.name: attr for attr in element.attrs} for tag, element in ELEMENTS.items()}
-_GIVEN = re.compile(r' ([^\s=]+)="([^"]*)"')  # one attribute as the writer gives it
 
 
 def _reads_as(kind: str, text: str, value: Any) -> bool:
@@ -62,26 +61,18 @@ def _reads_as(kind: str, text: str, value: Any) -> bool:
         return False
 
 
-def prefixed(node: Any, name: str) -> str:
-    """Return an attribute name with its namespace prefix (``xacro:foo``)."""
-    if name[0] != '{':
-        return name
-    qname = etree.QName(name)
-    for prefix, uri in node.nsmap.items():
-        if uri == qname.namespace and prefix:
-            return f'{prefix}:{qname.localname}'
-    return qname.localname
-
-
 class ElementWriter:
     """Write model objects as URDF elements; :class:`~.urdf.UrdfWriter` adds the robot."""
 
     verbatim = True  # write unedited elements read from a file exactly as they were
 
-    def __init__(self, robot: Robot, unit: str, declared: dict[str, str]) -> None:
+    def __init__(self, robot: Robot, unit: str, declared: dict[str, str],
+                 quote: str = '"') -> None:
         self.robot = robot
         self.unit = unit
+        self.quote = quote  # the file's: attributes written anew take it
         self.declared = declared  # namespaces the root declares: not repeated inside
+        self.splice: Splice | None = None  # the source text, when a write needs it
         self._numbers: dict[Any, str] = {}  # the text of numbers and vectors written
         self._leaves: dict[Any, str] = {}  # the text of origins and shapes, by value
         self.known_number = self._numbers.get
@@ -113,13 +104,24 @@ class ElementWriter:
         """Return the ``<inertial>`` element of ``link``."""
         return self.write_object(INERTIAL, inertial, pad, slot)
 
-    def source_text(self, node: Any) -> str:
-        """Return a source node exactly as it was read (namespaces the root declares aside)."""
+    def source_text(self, node: Any, as_read: bool = False) -> str:
+        """
+        Return a node as the file wrote it, edits in place (see :class:`.urdf_splice.Splice`).
+
+        ``as_read``: its snapshot says nobody edited it. A node the file did not have is
+        written by lxml (namespaces the root declares aside).
+        """
+        if self.splice is not None:
+            return self.splice.node_text(node, as_read)
         text = etree.tostring(node, encoding='unicode', with_tail=False)
-        extras = self.robot.extras
-        if extras is not None:
-            text = as_source(text, node, extras)
-        return without_declared(text, self.declared)
+        return in_quotes(without_declared(text, self.declared), self.quote)
+
+    def written(self, given: list[tuple[str, str]]) -> str:
+        """Return attributes (name, value) written anew, in the file's quotes."""
+        if self.splice is not None:
+            return self.splice.written(given)
+        return in_quotes(''.join(f' {name}="{esc(value)}"' for name, value in given),
+                         self.quote)
 
     # ---- any element, from its declaration -------------------------------------------
 
@@ -133,13 +135,12 @@ class ElementWriter:
         """
         extras = item.extras
         if extras is not None:
-            if self.verbatim and extras.snapshot is not None and \
-                    values(item) == extras.snapshot:
-                return self.source_text(extras.node)
+            if self.verbatim and not is_edited(item):
+                return self.source_text(extras.node, as_read=True)
             node = extras.node
         elif slot is None or slot.tag != element.tag:
             if pad is not None:
-                return FRESH[type(item)](self, item, pad)
+                return in_quotes(FRESH[type(item)](self, item, pad), self.quote)
             node = None
         else:
             node = slot
@@ -153,9 +154,9 @@ class ElementWriter:
         if kind in _LEAVES:  # frozen one-line elements: the same value, the same text
             text = self._leaves.get(item)
             if text is None:
-                text = self._leaves[item] = FRESH[kind](self, item, pad)
+                text = self._leaves[item] = in_quotes(FRESH[kind](self, item, pad), self.quote)
             return text
-        return FRESH[kind](self, item, pad)
+        return in_quotes(FRESH[kind](self, item, pad), self.quote)
 
     def write(self, element: Element, item: Any, node: Any, pad: str | None) -> str:
         """Return ``element`` with the fields of ``item``, laid out like ``node`` if any."""
@@ -163,8 +164,6 @@ class ElementWriter:
         if tag == 'origin':
             item = self.origin_form(item, node)
         attrs = self._attributes(element, item, node)
-        if node is not None:
-            attrs = self._as_written(tag, node, attrs)
         if not element.children:
             if node is None or not len(node):
                 return self._empty(tag, attrs, node)
@@ -203,49 +202,11 @@ class ElementWriter:
             return origin.as_rpy()
         return origin
 
-    def _as_written(self, tag: str, node: Any, attrs: str) -> str:
-        """
-        Return the source's own attribute text (line breaks and all), new values put in.
-
-        While the attributes are the same ones in the same order, only the values that
-        changed are replaced, in the source's quotes; otherwise ``attrs`` as given.
-        """
-        extras = self.robot.extras
-        source = source_tag(extras.start_tags, node) if extras is not None else None
-        if source is None:
-            return attrs
-        body = source[len(tag) + 1:]
-        body = body[:-2] if body.endswith('/>') else body[:-1]
-        read = [f' {prefixed(node, key)}="{esc(value)}"' for key, value in node.attrib.items()]
-        if attrs == ''.join(read):
-            return body
-        places = list(ATTRIBUTE.finditer(body))
-        given = _GIVEN.findall(attrs)
-        if [name for name, _ in given] != [place.group(1) for place in places] or \
-                len(read) != len(places):
-            return attrs  # attributes added, removed or moved: the element's own line
-        parts, end = [], 0
-        for place, (name, value), was in zip(places, given, read):
-            if was == f' {name}="{value}"':
-                continue  # unchanged: the source's spelling stays
-            if place.group(2) == "'":
-                if "'" in value:
-                    return attrs
-                value = value.replace('&quot;', '"')
-            parts += [body[end:place.start(3)], value]
-            end = place.end(3)
-        return ''.join(parts) + body[end:]
-
     def _empty(self, tag: str, attrs: str, node: Any) -> str:
         """Return an element without content: ``<x/>``, or ``<x></x>``, ``<x />`` as written."""
-        extras = self.robot.extras
-        recorded = extras.start_tags.get(node) if extras is not None and node is not None \
-            else None
-        if recorded is not None:
-            if not recorded[0].endswith('/>'):
-                return f'<{tag}{attrs}></{tag}>'
-            if recorded[0][-3:-2].isspace() and attrs and not attrs[-1].isspace():
-                return f'<{tag}{attrs} />'  # the space the source put before its end
+        splice = self.splice
+        if splice is not None and node is not None:
+            return splice.empty(tag, attrs, splice.span(node))
         return f'<{tag}{attrs}/>'
 
     def _inner(self, node: Any, pad: str | None) -> str | None:
@@ -256,21 +217,22 @@ class ElementWriter:
         return None if pad is None else pad + self.unit
 
     def _attributes(self, element: Element, item: Any, node: Any) -> str:
-        parts = []
+        """Return the attributes of ``item``: in ``node``'s start tag as written, if any."""
+        given = []
         if node is None:
             for attr in element.attrs:
                 value = getattr(item, attr.field)
                 if value is None or (value == '' and attr.default == '') or (
                         attr.unless and getattr(item, attr.unless) is not None):
                     continue
-                parts.append(f' {attr.name}="{esc(self.text(attr.kind, value))}"')
-            return ''.join(parts)
+                given.append((attr.name, self.text(attr.kind, value)))
+            return self.written(given)
         declared = _ATTRS[element.tag]
         done = set()
         for name, original in node.attrib.items():
             known = declared.get(name)
             if known is None:
-                parts.append(f' {prefixed(node, name)}="{esc(original)}"')
+                given.append((prefixed(node, name), original))
                 continue
             done.add(name)
             value = getattr(item, known.field)
@@ -278,7 +240,7 @@ class ElementWriter:
                 continue
             if not _reads_as(known.kind, original, value):
                 original = self.text(known.kind, value)
-            parts.append(f' {name}="{esc(original)}"')
+            given.append((name, original))
         for attr in element.attrs:
             if attr.name in done:
                 continue
@@ -286,8 +248,10 @@ class ElementWriter:
             if value is None or (attr.default is not REQUIRED and value == attr.default) or (
                     attr.unless and getattr(item, attr.unless) is not None):
                 continue
-            parts.append(f' {attr.name}="{esc(self.text(attr.kind, value))}"')
-        return ''.join(parts)
+            given.append((attr.name, self.text(attr.kind, value)))
+        if self.splice is not None:
+            return self.splice.attributes(node, given)
+        return self.written(given)
 
     def _children(self, element: Element, item: Any, node: Any,
                   pad: str | None) -> list[tuple[Child, list[str]]]:

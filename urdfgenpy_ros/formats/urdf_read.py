@@ -17,13 +17,14 @@
 URDF reader: the model of a file, following the declarations of :mod:`.urdf_schema`.
 
 Every element read keeps its source node and a by-value snapshot of the fields it gave
-(:class:`~urdfgenpy_ros.preserved.Preserved`), so that writers can put back, in place,
-whatever nobody edited and everything the model does not hold.
+(:class:`~urdfgenpy_ros.preserved.Preserved`), and the robot the file's text
+(:class:`~urdfgenpy_ros.preserved.SourceDocument`), so that writers can copy whatever
+nobody edited and keep everything the model does not hold.
 """
 
 from __future__ import annotations
 
-from functools import partial
+import codecs
 import re
 from typing import Any, TYPE_CHECKING
 
@@ -32,9 +33,7 @@ from lxml import etree
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import ParseError, ReadWarning, SourceLocation
 from urdfgenpy_ros.extensions import Extension
-from urdfgenpy_ros.formats._parse import parse_xml, PARSER, Source
-from urdfgenpy_ros.formats.start_tags import (
-    same_as_source, tag_end, unusual_start_tags)
+from urdfgenpy_ros.formats._parse import parse_xml, Source
 from urdfgenpy_ros.formats.urdf_readers import READERS
 from urdfgenpy_ros.formats.urdf_schema import GEOMETRY, record, unusable
 from urdfgenpy_ros.geometry import quaternion_rpy
@@ -42,7 +41,7 @@ from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.model import robot_class
-from urdfgenpy_ros.preserved import Details, DocumentPreserved, Layout
+from urdfgenpy_ros.preserved import SourceDocument
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -51,32 +50,7 @@ EXTENSION_TAGS = frozenset(('gazebo', 'transmission', 'ros2_control'))
 _TYPES = ', '.join(kind.value for kind in JointType)
 _SHAPES = 'box, cylinder, sphere, capsule or mesh'
 _SHAPE_TAGS = GEOMETRY.children[0].tags
-_DECLARATION = re.compile(r'^\s*(<\?xml\b[^>]*\?>)')
 _ENCODING = re.compile(rb'\s*<\?xml\b[^>]*?\bencoding\s*=\s*["\']([^"\']*)')
-
-
-def _spaces_before(text: str, start: int, comments: int) -> list[str]:
-    """
-    Return the white space before each top-level node from ``start`` up to the root.
-
-    ``comments`` comments or processing instructions come before the root; the list has
-    one more entry, the white space before the root. [] if they are not where expected.
-    """
-    spaces, position = [], start
-    for index in range(comments + 1):
-        rest = text[position:position + 4096]
-        space = rest[:len(rest) - len(rest.lstrip())]
-        spaces.append(space.replace('\r\n', '\n'))
-        position += len(space)
-        if index == comments:
-            break
-        closing = '-->' if text.startswith('<!--', position) else \
-            '?>' if text.startswith('<?', position) else None
-        end = text.find(closing, position) if closing else -1
-        if end < 0:
-            return []
-        position = end + len(closing or '')
-    return spaces
 
 
 class _Reader:
@@ -213,11 +187,12 @@ class _Reader:
         if self.unresolved:
             for link in _share_materials(robot):
                 record(link)
-        robot.extras = DocumentPreserved(
-            root, order, (list(root.itersiblings(preceding=True))[::-1],
-                          list(root.itersiblings())),
-            partial(_document_details, self.source.data,
-                    any(warning.code == 'P102' for warning in self.warnings)))
+        text, bom = source_text(self.source.data)
+        robot.extras = SourceDocument(
+            root, order, text, bom=bom,
+            mended=any(warning.code == 'P102' for warning in self.warnings),
+            blocks={block.element: etree.tostring(block.element, with_tail=False)
+                    for block in blocks})
         return robot
 
     @staticmethod
@@ -253,106 +228,26 @@ class _Reader:
         return inner
 
 
-def _document_details(data: bytes, declaration_ignored: bool, root: Any) -> Details:
+def source_text(data: bytes) -> tuple[str, bool]:
     """
-    Return how the file of ``root`` is written, and what a writer keeps of its text.
+    Return the text of a file's ``data`` in the encoding it declares, and whether a BOM began it.
 
-    Worked out on the first write, not at read: reading need not pay for it. That is the
-    layout; a function finding the start tags lxml would write otherwise; lxml's text
-    of the tree now (None for a wrapped robot), which the first write would make again;
-    and, when that text shows the tree is still as read, the file's own text of the root.
+    The writer copies what nobody edited from this text, so it must be the file's own.
     """
-    text = data.decode('utf-8', 'replace')
-    bom = text.startswith('\ufeff')  # kept for the file, not in the text
+    bom = data.startswith(codecs.BOM_UTF8)
     if bom:
-        text = text[1:]
-    top = root.getroottree().getroot()
-    # a <robot> wrapped in another element takes no namespace from it, or its tag won't do
-    head, start = _opening_tag(text, root) if top is root or not top.nsmap else (None, None)
-    if top is not root:
-        start = None  # the start tags are compared from the wrapper's
-    layout = _layout(data, text, root, head, declaration_ignored)._replace(bom=bom)
-    tags = partial(unusual_start_tags, top, text, layout.newline)
-    if start is None:
-        return layout, tags, None, None
-    written = etree.tostring(top, encoding='unicode', with_tail=False)
-    if same_as_source(written, text, start):
-        return layout, None, written, None
-    return layout, tags, written, _as_read(data, text, start, written, root, layout.newline)
-
-
-def _as_read(data: bytes, text: str, start: int, written: str, root: Any,
-             newline: str) -> tuple[str, str] | None:
-    """
-    Return ``written`` and the file's text of the root if the tree is as read, else None.
-
-    lxml's text of the tree is compared with its text of the file parsed again: one parse
-    in C, where finding each unusual start tag costs Python time per tag (files that
-    write ``<x />`` have hundreds). The file's line ends (``newline``) are returned as
-    line feeds, which the writer turns back.
-    """
-    body = text.rstrip()
-    encoding = _ENCODING.match(data)
-    if root.getnext() is not None or not body.endswith('>') or '\ufffd' in text or (
-            encoding is not None and encoding.group(1).lower() not in (b'utf-8', b'utf8')):
-        return None  # something after the root, or text that is not plainly UTF-8
+        data = data[len(codecs.BOM_UTF8):]
+    match = _ENCODING.match(data, 0, 4096)
+    codec = 'utf-8'
+    if match is not None:
+        try:
+            codec = codecs.lookup(match.group(1).decode('ascii', 'replace')).name
+        except LookupError:
+            pass
     try:
-        fresh = etree.fromstring(data, PARSER)
-    except etree.XMLSyntaxError:
-        return None  # the reader had to mend it
-    if etree.tostring(fresh, encoding='unicode', with_tail=False) != written:
-        return None
-    source = body[start:]
-    return written, source if newline == '\n' else source.replace(newline, '\n')
-
-
-def _layout(data: bytes, text: str, root: Any, head: str | None,
-            declaration_ignored: bool) -> Layout:
-    """Return how the file is written: indentation, line ends, quotes, first lines."""
-    ws = root.text or ''
-    unit = ws.rsplit('\n', 1)[-1] if '\n' in ws else ''
-    unit = unit if unit and not unit.strip() else '  '
-    crlf = data.count(b'\r\n') if b'\r' in data else 0  # the ends most lines have
-    newline = '\r\n' if 2 * crlf > data.count(b'\n') else '\n'
-    quote = "'" if b"'" in data and data.count(b"='") > data.count(b'="') else '"'
-    match = _DECLARATION.match(text, 0, 4096)
-    if match is None and root.getparent() is None and text[:4096].lstrip().startswith('<'):
-        declaration = ''  # the file has none: it gets none
-    else:
-        declaration = match.group(1) if match and not declaration_ignored \
-            else '<?xml version="1.0"?>'
-    body = text.rstrip()
-    end = text[len(body):].replace('\r\n', '\n') if body.endswith('>') else '\n'
-    gap = '\n' if declaration else ''
-    between: tuple[str, ...] = ()
-    # the white space around a declaration the writer mends (P102) stays as well
-    start = match.end(1) if match is not None else 0 if not declaration else None
-    if start is not None:
-        spaces = _spaces_before(text, start, len(list(root.itersiblings(preceding=True))))
-        if spaces:
-            gap, between = spaces[0], tuple(spaces[1:])
-    return Layout(unit, newline, quote, declaration, head, end, gap, between)
-
-
-def _opening_tag(text: str, root: Any) -> tuple[str | None, int | None]:
-    """
-    Return the root's opening tag exactly as the file wrote it and where, if found.
-
-    lxml's ``sourceline`` is the line a start tag ends on: look back from its end.
-    """
-    if root.sourceline is None:
-        return None, None
-    end = -1
-    for _ in range(root.sourceline):
-        end = text.find('\n', end + 1)
-        if end < 0:
-            end = len(text)
-            break
-    start = text.rfind('<robot', 0, end)
-    if start < 0:
-        return None, None
-    head = text[start:tag_end(text, start)]
-    return (None if head.endswith('/>') else head.replace('\r\n', '\n')), start
+        return data.decode(codec), bom
+    except (UnicodeDecodeError, LookupError):
+        return data.decode('utf-8', 'replace'), bom
 
 
 def _share_materials(robot: Robot) -> list[Link]:

@@ -22,6 +22,7 @@ operation, so the real ``xacro`` expands them to exactly the floats ``to_urdf()`
 from __future__ import annotations
 
 from collections.abc import Sequence
+from functools import partial
 from os import PathLike
 from pathlib import Path
 import re
@@ -30,8 +31,7 @@ from typing import Any, TYPE_CHECKING
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.floats import fmt, fmt_vec
-from urdfgenpy_ros.formats._xml import esc, write_text
-from urdfgenpy_ros.formats.start_tags import tag_end
+from urdfgenpy_ros.formats._xml import esc, tag_end, write_text
 from urdfgenpy_ros.formats.urdf import UrdfWriter
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.link import Link
@@ -136,8 +136,10 @@ class XacroWriter(UrdfWriter):
         if self.mass_names:
             lines.append('<!-- Link masses in kg. -->')
             for link_name, prop in self.mass_names.items():
-                mass = self.robot.get_link(link_name).inertial.mass  # type: ignore[union-attr]
-                lines.append(f'<xacro:property name="{prop}" value="{fmt(mass)}"/>')
+                link = self.robot.get_link(link_name)
+                mass = link.inertial.mass  # type: ignore[union-attr]
+                value = self.checked(link, partial(fmt, mass))
+                lines.append(f'<xacro:property name="{prop}" value="{value}"/>')
         if self.kinds:
             lines.append('<!-- Inertia of solid bodies about their centre of mass. -->')
             lines.extend(_macro(kind, self.unit, self.unit) for kind in self.kinds)

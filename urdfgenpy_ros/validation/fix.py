@@ -28,7 +28,6 @@ missing mimic target, ...) has no single right answer and stays.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from difflib import SequenceMatcher
 import math
 import re
 from typing import TYPE_CHECKING
@@ -243,35 +242,3 @@ def missing_defaults(robot: Robot, findings: list[ValidationError],
 
 _REPAIRS = {'J102': _axis, 'J104': _swap, 'J103': _add_limit, 'J106': _zero_limit,
             'I202': _tensor, 'I203': _tensor, 'I205': _new_root}
-
-
-def carry_over(original: str, before: str, after: str) -> str | None:
-    """
-    Return ``original`` with the lines that changed from ``before`` to ``after``.
-
-    ``before`` and ``after`` are the writer's text of the robot before and after the
-    repairs. Where the writer does not give a file back byte for byte (a blank line at the
-    end, a ``<urdf>`` wrapper, ...), only the repaired lines reach the file. None when a
-    changed line has no counterpart in ``original``.
-    """
-    source = original.splitlines(keepends=True)
-    old, new = before.splitlines(keepends=True), after.splitlines(keepends=True)
-    place: dict[int, int] = {}  # a line of ``before`` -> the same line of ``original``
-    for tag, a0, _, b0, b1 in SequenceMatcher(None, source, old, autojunk=False).get_opcodes():
-        if tag == 'equal':
-            place.update((b0 + k, a0 + k) for k in range(b1 - b0))
-    edits = [op for op in SequenceMatcher(None, old, new, autojunk=False).get_opcodes()
-             if op[0] != 'equal']
-    for _, i0, i1, j0, j1 in reversed(edits):
-        if i0 < i1:
-            if any(i not in place or place[i] != place[i0] + i - i0 for i in range(i0, i1)):
-                return None  # not the same run of lines in the file
-            start, end = place[i0], place[i1 - 1] + 1
-        elif i0 in place:
-            start = end = place[i0]
-        elif i0 - 1 in place:
-            start = end = place[i0 - 1] + 1
-        else:
-            return None
-        source[start:end] = new[j0:j1]
-    return ''.join(source)

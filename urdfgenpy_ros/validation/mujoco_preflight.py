@@ -134,27 +134,18 @@ def _as_written(robot: Robot, findings: Findings, search_paths: list[Any],
     """
     from lxml import etree
 
-    from urdfgenpy_ros.formats.detect import xacro_evidence_in
-    from urdfgenpy_ros.formats.urdf import write_urdf
-    from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
+    from urdfgenpy_ros.formats.urdf_edits import is_as_read
     source = robot.source.file if robot.source is not None else None
-    if not source or not Path(source).is_file() or not source.lower().endswith('.urdf'):
+    document = robot.extras
+    if not source or document is None or not Path(source).is_file() \
+            or any(note.code.startswith('X') for note in robot.read_warnings) \
+            or not is_as_read(robot):
         return
     path = Path(source).resolve()
-    try:  # as formats.load reads a .urdf, without its front door (which writes MJCF)
-        data = path.read_bytes()
-        if xacro_evidence_in(data, str(path)) is not None:  # Xacro: not the file's robot
-            return
-        again = read_urdf_bytes(data, str(path))
-    except (UrdfgenpyError, OSError, ValueError):
-        return
-    if any(note.code.startswith('X') for note in again.read_warnings) \
-            or again.extras is None or write_urdf(again) != write_urdf(robot):
-        return
     resolver = PackageResolver(search_paths)
     assets: dict[str, bytes] = {}
     uses_meshdir = False
-    for node in again.extras.node.getroottree().iter(etree.Element):  # the file as read
+    for node in document.node.getroottree().iter(etree.Element):  # the file as read
         uses_meshdir |= node.tag == 'compiler' and node.get('meshdir') is not None
         uri = node.get('filename', '') if node.tag == 'mesh' else ''
         if '://' in uri:
