@@ -90,6 +90,7 @@ def test_a_bug_in_the_writer_keeps_its_traceback(monkeypatch: pytest.MonkeyPatch
     monkeypatch.setattr(urdf_format.UrdfWriter, 'write_robot', broken)
     with pytest.raises(KeyError, match='internal'):
         robot.to_urdf()
+    monkeypatch.undo()  # the writer works again: the user's value alone is to blame
     robot.get_link('upper').set_inertial(None)
     robot.get_joint('shoulder').axis = 'up'  # the user's own wrong value: one line
     with pytest.raises(ModelError, match="joint 'shoulder'.*axis = 'up'"):
