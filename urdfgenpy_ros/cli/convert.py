@@ -109,6 +109,8 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
         robot = robot.merge_fixed(keep, drop_frames=drop_frames)
     if lump_fixed:
         robot = lump_fixed_joints(robot)  # what to_sdf(lump_fixed=True) writes
+    if kind in ('sdf', 'mjcf'):
+        _refuse_broken_tree(robot, target)
     if kind == 'sdf':
         _refuse_invalid_inertia(robot, target)
         for note in (*mass_only_notes(robot), *default_mass_notes(robot)):
@@ -119,6 +121,14 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     robot.save(target)
     click.echo(f"wrote {target}: {counted(len(robot.links), 'link')}, "
                f"{counted(len(robot.joints), 'joint')}")
+
+
+def _refuse_broken_tree(robot: Robot, target: Path) -> None:
+    """Refuse, in one located line, a robot that is not one tree (SDF and MJCF need one)."""
+    found = review(robot, ReviewOptions(check_meshes=False, suppressions=False,
+                                        checks=('topology',)))
+    for finding in found.errors:
+        raise UrdfgenpyError(f'{finding}: {target} not written')
 
 
 def _refuse_invalid_inertia(robot: Robot, target: Path) -> None:
