@@ -161,11 +161,12 @@ class _Reader:
             tag = node.tag
             if tag in ('link', 'joint', 'material'):
                 item = READERS[tag](self, node)
-                first = seen.setdefault((tag, item.name), node.sourceline)
-                if first != node.sourceline:
+                key = (tag, item.name)
+                if key in seen:  # on another line, or on the same one (a one-line file)
                     raise self.fail(node, f'{tag} {item.name!r} is defined twice (first at '
-                                          f'line {first}): rename or remove one', 'P007',
+                                          f'line {seen[key]}): rename or remove one', 'P007',
                                     'name')
+                seen[key] = node.sourceline
                 if tag == 'link':
                     robot.add_link(item)
                 elif tag == 'joint':
