@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 import difflib
+import math
 import os
 from pathlib import Path
 import tempfile
@@ -69,10 +70,14 @@ def _limit_defaults(ctx: click.Context, param: click.Parameter, values: tuple[st
             try:
                 if name not in LIMIT_FIELDS:
                     raise ValueError
-                defaults[name] = float(text)
+                value = float(text)
+                if not math.isfinite(value) or (name in ('effort', 'velocity') and value <= 0):
+                    raise ValueError
+                defaults[name] = value
             except ValueError:
                 raise click.BadParameter(f'{part!r}: give NAME=NUMBER, NAME one of '
-                                         f'{", ".join(LIMIT_FIELDS)}') from None
+                                         f'{", ".join(LIMIT_FIELDS)} (effort and velocity '
+                                         '> 0, e.g. effort=50)') from None
     return defaults
 
 

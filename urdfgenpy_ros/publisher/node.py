@@ -388,7 +388,7 @@ def _start() -> PublisherNode:
     try:
         return PublisherNode()
     except rclpy.exceptions.InvalidParameterTypeException as error:
-        raise UrdfgenpyError(f"bad parameter: {error} (see the README for each parameter's "
+        raise UrdfgenpyError(f"bad parameter: {error} (docs/node.md lists each parameter's "
                              'type)') from None
 
 

@@ -31,11 +31,12 @@ import copy
 from dataclasses import dataclass, field
 from os import PathLike
 from pathlib import Path
+import re
 from typing import NamedTuple, TYPE_CHECKING
 
 from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.resources import PackageResolver
-from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET
+from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET, TARGETS
 from urdfgenpy_ros.validation.codes import CODES
 from urdfgenpy_ros.validation.findings import Findings
 from urdfgenpy_ros.validation.fix import fix, FIXABLE, missing_defaults, Repair
@@ -43,7 +44,7 @@ from urdfgenpy_ros.validation.inertia import check_inertia
 from urdfgenpy_ros.validation.joints import check_joints
 from urdfgenpy_ros.validation.preflight import ENGINES, sdformat_findings
 from urdfgenpy_ros.validation.references import check_references
-from urdfgenpy_ros.validation.suppressions import read_suppressions, Suppressions
+from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions, Suppressions
 from urdfgenpy_ros.validation.topology import check_topology
 from urdfgenpy_ros.validation.versions import check_versions
 from urdfgenpy_ros.validation.xacro_source import in_source
@@ -87,10 +88,22 @@ class ReviewOptions:
     checks: Sequence[str] | None = None
 
     def __post_init__(self) -> None:
-        """Refuse an engine or check name that does not exist."""
-        object.__setattr__(self, 'search_paths', tuple(self.search_paths))
-        object.__setattr__(self, 'engines', tuple(self.engines))
-        object.__setattr__(self, 'ignore', frozenset(self.ignore))
+        """Refuse a code, engine, target or check name that does not exist.
+
+        ``ignore`` and ``engines`` may also be given as one string (``'I205,R307'``).
+        """
+        search_paths = self.search_paths
+        object.__setattr__(self, 'search_paths', (search_paths,) if isinstance(
+            search_paths, (str, PathLike)) else tuple(search_paths))
+        engines = self.engines
+        object.__setattr__(self, 'engines', tuple(
+            part for part in re.split(r'[\s,]+', engines) if part)
+            if isinstance(engines, str) else tuple(engines))
+        ignore = self.ignore
+        object.__setattr__(self, 'ignore', parse_codes(
+            ignore if isinstance(ignore, str) else ' '.join(ignore)))
+        if self.target is not None and self.target not in TARGETS:
+            raise ValueError(f'unknown target {self.target!r} (use {", ".join(TARGETS)})')
         unknown = [name for name in self.engines if name not in ENGINES]
         if unknown:
             raise ValueError(f'unknown engine {unknown[0]!r} (use {", ".join(ENGINES)})')

@@ -115,8 +115,8 @@ def parse_codes(text: str) -> frozenset[str]:
     parts = [part.upper() for part in re.split(r'[\s,]+', text.strip()) if part]
     bad = [part for part in parts if part not in CODES]
     if bad:
-        raise ValueError(f'{", ".join(bad)} is not a finding code (like I205; the README '
-                         'lists them under "Validate")')
+        raise ValueError(f'{", ".join(bad)} is not a finding code (like I205; docs/validation.md '
+                         'lists them under "Every code")')
     return frozenset(parts)
 
 
