@@ -129,6 +129,16 @@ def _blocks(robot: Robot) -> list[Extension]:
     return [*robot.extensions, *(block for owner in owners for block in owner.extensions)]
 
 
+# Words in a plugin element's tag that say its text is no link or joint, even when it is
+# spelt like one (<topicName>trunk</topicName>, <robotNamespace>, <ros><remapping>)
+_NOT_FRAMES = ('topic', 'namespace', 'service', 'remap', 'filename', 'uri', 'plugin')
+
+
+def _names_no_frame(tag: str) -> bool:
+    lowered = tag.lower()
+    return any(word in lowered for word in _NOT_FRAMES)
+
+
 def _rename_block(root: Any, renaming: _Renaming) -> None:
     """Rename the links and joints a ``<gazebo>``/``<transmission>``/... block names."""
     prefix = renaming.prefix
@@ -151,7 +161,7 @@ def _rename_block(root: Any, renaming: _Renaming) -> None:
         link = element.get('link')
         if element.tag in ('parent', 'child') and link in renaming.links:
             element.set('link', renaming.links[link])
-        if len(element) == 0 and element.text is not None:
+        if len(element) == 0 and element.text is not None and not _names_no_frame(element.tag):
             text = element.text.strip()
             renamed = renaming.frame(text)
             if renamed is not None:

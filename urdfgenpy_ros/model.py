@@ -44,6 +44,8 @@ if TYPE_CHECKING:
 
 def _suggest(name: str, known: Any) -> str:
     import difflib  # only when a name is not found: not at every start
+    if not isinstance(name, str):  # get_link(None): no name is close to that
+        return ''
     close = difflib.get_close_matches(name, list(known), n=1)
     return f' (did you mean {close[0]!r}?)' if close else ''
 
