@@ -35,8 +35,8 @@ TWICE = {
 
 
 @pytest.mark.parametrize('kind', sorted(TWICE))
-def test_a_name_twice_on_one_line_is_p007_with_file_and_line(tmp_path: Path,
-                                                              kind: str) -> None:
+def test_a_name_twice_on_one_line_is_p007_with_file_and_line(
+        tmp_path: Path, kind: str) -> None:
     path = tmp_path / 'one_line.urdf'
     path.write_text(f'<robot name="x">\n{TWICE[kind]}</robot>\n')
     if kind != 'material':  # urdfdom refuses a link or joint twice (a material it keeps)

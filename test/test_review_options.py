@@ -48,8 +48,8 @@ def test_codes_as_one_string_silence_as_the_ignore_option_does(tmp_path: Path) -
     ('target', 'humble', ['--target', 'humble']),
     ('engines', 'bullet', ['--engines', 'bullet']),
 ])
-def test_what_the_command_refuses_the_options_refuse(tmp_path: Path, option: str,
-                                                      value: object, cli: list[str]) -> None:
+def test_what_the_command_refuses_the_options_refuse(
+        tmp_path: Path, option: str, value: object, cli: list[str]) -> None:
     result = CliRunner().invoke(main, ['check', str(_bare(tmp_path)), *cli])
     assert result.exit_code == 2 and len(result.stderr.splitlines()) == 1, result.output
     with pytest.raises(ValueError, match=repr(value) if isinstance(value, str) else 'XYZ'):

@@ -20,9 +20,10 @@ import json
 import math
 from pathlib import Path
 import re
+import subprocess
 
-from helpers import check_urdf, check_urdf_verdict, CORPUS, corpus_cases, corpus_file
-from helpers import require_module, xacro_expand
+from helpers import build_sdf_checker, check_urdf, check_urdf_verdict, CORPUS, corpus_cases
+from helpers import corpus_file, require_module, xacro_expand
 import pytest
 from registry_robots import absolute_meshes, robot_id, robots, search_paths
 
@@ -98,6 +99,7 @@ VERDICTS = {
     # Errors both accept silently: the check is the only thing that catches them.
     'J104': (True, True), 'J105': (True, True), 'J107': (True, True), 'J108': (True, True),
     'J109': (True, True),
+    'I210': (True, True),  # libsdformat refuses it (test_a_negative_mass_is_refused_by_sdformat)
 }
 
 
@@ -111,6 +113,16 @@ def test_consumers_agree_or_accept_silently(key: str, tmp_path: Path) -> None:
     path = _write(tmp_path, key, broken(key))
     urdfdom = check_urdf_verdict(path, timeout=1 if key in HANGS else 30)
     assert (urdfdom, mujoco_accepts(path)) == VERDICTS[key]
+
+
+@pytest.mark.engine
+def test_a_negative_mass_is_refused_by_sdformat(tmp_path: Path) -> None:
+    """I210: urdfdom and MuJoCo take a fixed link's negative mass; Gazebo loads nothing."""
+    path = _write(tmp_path, 'I210', broken('I210'))
+    checker = build_sdf_checker(tmp_path)
+    result = subprocess.run([str(checker), str(path)], capture_output=True, text=True,
+                            timeout=60)
+    assert result.returncode != 0 and 'invalid inertia' in result.stderr, result.stderr
 
 
 def test_every_error_code_has_a_consumer_verdict() -> None:

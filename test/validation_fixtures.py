@@ -128,6 +128,9 @@ DEFECTS: dict[str, tuple[set[str], list[tuple[str, str]]]] = {
     'I205': ({'I205'}, [('<link name="base_link"/>', '<link name="base_link"><!--D-->'
                          '<inertial><mass value="2"/><inertia ixx="0.01" ixy="0" ixz="0" '
                          'iyy="0.01" iyz="0" izz="0.01"/></inertial></link>')]),
+    'I210': ({'I210'}, [('<link name="base_link"/>', '<link name="base_link"><inertial>'
+                         '<mass value="-1"/><!--D--><inertia ixx="0.01" ixy="0" ixz="0" '
+                         'iyy="0.01" iyz="0" izz="0.01"/></inertial></link>')]),
     'I206': ({'I206', 'I209'}, [('<link name="base_link"/>', '<link name="base_link"/>\n'
                                  '<link name="mount"/><!--D-->'),
                                 ('<parent link="base_link"/>', '<parent link="mount"/>'),

@@ -88,7 +88,8 @@ class ReviewOptions:
     checks: Sequence[str] | None = None
 
     def __post_init__(self) -> None:
-        """Refuse a code, engine, target or check name that does not exist.
+        """
+        Refuse a code, engine, target or check name that does not exist.
 
         ``ignore`` and ``engines`` may also be given as one string (``'I205,R307'``).
         """

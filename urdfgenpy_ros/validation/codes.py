@@ -73,6 +73,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'I207': (W, 'moving link without inertial (fine for RViz, not for simulation)'),
     'I208': (W, 'a point mass (zero tensor) on a link that does not move'),
     'I209': (W, 'massless root (and links fixed to it): libsdformat keeps no link'),
+    'I210': (E, 'negative mass on a link that does not move'),
     # references and values
     'R301': (W, 'material not defined'),
     'R302': (E, 'collision mesh file not found'),

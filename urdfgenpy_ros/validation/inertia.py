@@ -89,6 +89,11 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
                              f'({joint.type} joint {joint.name!r})',
                              'give it a positive mass (kg): MuJoCo refuses the model, and '
                              "Gazebo's URDF conversion drops the link", 'mass')
+            elif inertial.mass < 0.0:  # fixed or the root: still no mass at all
+                findings.add('I210', inertial, element, where + '/mass',
+                             f'mass is {inertial.mass:g}', 'give it a positive mass (kg), or '
+                             "leave out its <inertial>: libsdformat refuses the link's inertia "
+                             '(Gazebo loads no model)', 'mass')
             elif joint is not None and moving_below.get(link.name, False):
                 count = below.get(link.name, 0)
                 findings.add('I206', inertial, element, where + '/mass',
