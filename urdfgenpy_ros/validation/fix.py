@@ -237,7 +237,27 @@ def missing_defaults(robot: Robot, findings: list[ValidationError],
         lines.append(f'{code} not fixed for joint {", ".join(map(repr, joints))}: '
                      f'--limit-default has no {"positive " if code == "J106" else ""}'
                      f'{", ".join(lacking)} ({why}: add --limit-default {example})')
-    return lines
+    return lines + _shapeless(robot, findings)
+
+
+def _shapeless(robot: Robot, findings: list[ValidationError]) -> list[str]:
+    """Return why I202/I203 findings stay: the link has no shape to take a tensor from."""
+    links: dict[str, list[str]] = {}
+    for finding in findings:
+        link = _owner(robot, finding) if finding.code in ('I202', 'I203') else None
+        if not isinstance(link, Link) or link.inertial is None:
+            continue
+        shapes = (item.geometry for item in (*link.collisions, *link.visuals))
+        if link.inertial.mass > 0.0 and any(isinstance(shape, (Box, Cylinder, Sphere, Capsule))
+                                            for shape in shapes):
+            continue
+        names = links.setdefault(finding.code, [])
+        if link.name not in names:
+            names.append(link.name)
+    return [f'{code} not fixed for link {", ".join(map(repr, names))}: no box, cylinder, sphere '
+            'or capsule with a positive mass to take a tensor from (give it an <inertia>: '
+            'urdfgenpy inertia MESH --mass KG prints the one of its mesh)'
+            for code, names in links.items()]
 
 
 _REPAIRS = {'J102': _axis, 'J104': _swap, 'J103': _add_limit, 'J106': _zero_limit,
