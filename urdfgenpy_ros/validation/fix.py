@@ -247,7 +247,8 @@ def _shapeless(robot: Robot, findings: list[ValidationError]) -> list[str]:
         link = _owner(robot, finding) if finding.code in ('I202', 'I203') else None
         if not isinstance(link, Link) or link.inertial is None:
             continue
-        shapes = (item.geometry for item in (*link.collisions, *link.visuals))
+        shapes = [item.geometry for item in link.collisions]
+        shapes += [item.geometry for item in link.visuals]
         if link.inertial.mass > 0.0 and any(isinstance(shape, (Box, Cylinder, Sphere, Capsule))
                                             for shape in shapes):
             continue
