@@ -31,6 +31,7 @@ PHYSICS_ONLY: dict[str, str] = {
     'I201': 'MuJoCo refuses a moving body without mass and Gazebo drops the link',
     'I202': _TENSOR,
     'I203': _TENSOR,
+    'I210': 'Gazebo refuses the link (libsdformat: "invalid inertia")',
 }
 """Error codes that matter to physics engines only: code to who refuses it."""
 
