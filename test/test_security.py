@@ -20,6 +20,7 @@ from pathlib import Path
 import socket
 import tracemalloc
 
+from helpers import check_urdf_verdict
 import pytest
 
 from urdfgenpy_ros import ParseError, Robot
@@ -66,3 +67,15 @@ def test_no_network_access(monkeypatch: pytest.MonkeyPatch) -> None:
         '<xi:include href="http://127.0.0.1:9/x.xml"/><link name="a"/></robot>')
     assert [link.name for link in robot.links] == ['a']
     assert 'xi:include' in robot.to_urdf()
+
+
+def test_a_doctype_that_declares_nothing_is_read_as_urdfdom_reads_it(tmp_path: Path) -> None:
+    path = tmp_path / 'bare.urdf'
+    path.write_text('<?xml version="1.0"?>\n<!DOCTYPE robot>\n<robot name="r">\n'
+                    '  <link name="a"/>\n</robot>\n')
+    assert check_urdf_verdict(path, timeout=10)  # urdfdom reads it
+    robot = Robot.from_urdf(path)
+    assert robot.to_urdf() == path.read_text()  # and it is kept
+    for declared in ('<!DOCTYPE robot [ ]>', '<!DOCTYPE robot SYSTEM "r.dtd">'):
+        with pytest.raises(ParseError, match='P008'):
+            Robot.from_urdf_string(path.read_text().replace('<!DOCTYPE robot>', declared))

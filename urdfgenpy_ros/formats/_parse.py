@@ -35,6 +35,9 @@ PARSER = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False
                          huge_tree=False, collect_ids=False)
 _DECLARATION = re.compile(rb'^\s*<\?xml\b[^>]*\?>')
 _DOCTYPE = re.compile(rb'<!DOCTYPE', re.IGNORECASE)  # searched for where a '<!' is
+# A DOCTYPE that declares and names nothing else (<!DOCTYPE robot>): urdfdom and yourdfpy
+# read such files. An internal subset can declare entities, an identifier names a file
+_BARE_DOCTYPE = re.compile(rb'<!DOCTYPE\s+[^\s\[>]+\s*>', re.IGNORECASE)
 _DECLARATIONS = re.compile(rb'<![^-\[]')  # '<!' opening no comment, no CDATA: quick to find
 _UNDECLARED = re.compile(r'Namespace prefix (\S+) (?:for \S+ )?on \S+ is not defined')
 
@@ -85,6 +88,9 @@ def parse_xml(data: bytes, file: str | None) -> tuple[Any, Source, list[ReadWarn
     source = Source(file, data)
     warnings: list[ReadWarning] = []
     match = _DOCTYPE.search(data) if _DECLARATIONS.search(data) else None
+    if match and _BARE_DOCTYPE.match(data, match.start()) \
+            and not _DOCTYPE.search(data, match.end()):
+        match = None  # declares nothing: read as urdfdom reads it
     if match:
         line = data.count(b'\n', 0, match.start()) + 1
         raise ParseError('<!DOCTYPE> is not allowed in a robot description (it can declare '
