@@ -37,6 +37,10 @@ def enabled() -> bool:
     return _ENABLED.get()
 
 
+is_on = _ENABLED.get
+"""The same as :func:`enabled`, without a Python call (constructors' fast paths use it)."""
+
+
 class unchecked:  # noqa: N801 - used as a function: ``with checks.unchecked():``
     """Build elements without raising on bad values (readers use this)."""
 
@@ -121,6 +125,24 @@ def are_finite_floats(*values: object) -> bool:
     return True
 
 
+def floats3(value: object) -> Vec3 | None:
+    """
+    Return ``value`` as a 3-tuple of floats when it is a tuple of 3 finite ints or floats.
+
+    The constructors' fast path: None means "not that simple", and the caller then runs
+    :func:`vec3`, which converts what it can and names the field in its error.
+    """
+    if type(value) is not tuple or len(value) != 3:
+        return None
+    x, y, z = value
+    if type(x) is not float or type(y) is not float or type(z) is not float:
+        if type(x) not in _REAL or type(y) not in _REAL or type(z) not in _REAL:
+            return None
+        value = x, y, z = (float(x), float(y), float(z))
+    total = x + y + z
+    return value if total - total == 0.0 else None
+
+
 def vec3(owner: str, field: str, value: Sequence[object]) -> Vec3:
     """Return a 3-vector of finite floats; raise ValueError when malformed."""
     try:
@@ -148,3 +170,4 @@ def name(owner: str, value: object) -> str:
 
 
 _INF = math.inf
+_REAL = (float, int)

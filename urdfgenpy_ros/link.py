@@ -23,6 +23,7 @@ from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import ModelTypeError, SourceLocation
 from urdfgenpy_ros.geometry import Geometry, IDENTITY, Origin
 from urdfgenpy_ros.inertial import Inertial
+from urdfgenpy_ros.lazy_lists import lazy_lists
 from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.owned_names import own_names
 from urdfgenpy_ros.preserved import Preserved
@@ -62,7 +63,7 @@ Shape = Visual | Collision
 """A visual or a collision: a geometry placed at an origin in its link."""
 
 
-@dataclass(slots=True)
+@dataclass(slots=True, init=False)
 class Link:
     """
     A rigid body: any number of visuals and collisions, and at most one inertial.
@@ -82,9 +83,22 @@ class Link:
     extras: Preserved | None = field(default=None, compare=False, repr=False)
     _robot: RobotModel | None = field(default=None, init=False, compare=False, repr=False)
 
-    def __post_init__(self) -> None:
-        """Check the name."""
-        checks.name('link', self.name)
+    def __init__(self, name: str, *, visuals: list[Visual] | None = None,
+                 collisions: list[Collision] | None = None, inertial: Inertial | None = None,
+                 extensions: list[Extension] | None = None, sensors: list[Sensor] | None = None,
+                 source: SourceLocation | None = None, extras: Preserved | None = None) -> None:
+        """Check the name; lists not given start empty."""
+        if type(name) is not str or not name or name.isspace():
+            checks.name('link', name)
+        _set_name(self, name)  # the slot: a new link belongs to no robot yet
+        self.visuals = [] if visuals is None else visuals
+        self.collisions = [] if collisions is None else collisions
+        self.inertial = inertial
+        _set_extensions(self, extensions)  # None: made on first use (lazy_lists)
+        _set_sensors(self, sensors)
+        self.source = source
+        self.extras = extras
+        self._robot = None
 
     def add_sensor(self, sensor: Sensor) -> Link:
         """Attach a simulated sensor (Camera, Lidar, Imu) and return the link."""
@@ -132,4 +146,8 @@ class Link:
         return self.collisions[0] if self.collisions else None
 
 
+_set_name = Link.__dict__['name'].__set__
+_set_extensions = Link.__dict__['extensions'].__set__
+_set_sensors = Link.__dict__['sensors'].__set__
 own_names(Link, 'link')
+lazy_lists(Link, 'extensions', 'sensors')
