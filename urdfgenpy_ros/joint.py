@@ -276,6 +276,15 @@ class Joint:
         """Return the axis URDF consumers use: the given one or (1, 0, 0)."""
         return self.axis if self.axis is not None else (1.0, 0.0, 0.0)
 
+    if TYPE_CHECKING:
+        @property
+        def extensions_if_any(self) -> list[Extension] | None:
+            """Return the ``extensions`` list, or None if none was made yet (lazy_lists)."""
+
+        @property
+        def sensors_if_any(self) -> list[Sensor] | None:
+            """Return the ``sensors`` list, or None if none was made yet (lazy_lists)."""
+
     def add_sensor(self, sensor: Sensor) -> Joint:
         """Attach a sensor that lives in a joint (ForceTorque) and return the joint."""
         self.sensors.append(sensor)

@@ -19,15 +19,13 @@ Most links and joints never hold a ``<gazebo>`` block or a sensor. A new one sto
 and the list is made when the field is first read, so building a robot of thousands of
 links does not make (and the garbage collector does not walk) thousands of empty lists.
 Reading the field always gives the object's own list, so ``link.extensions.append(block)``
-works as with a plain list field; :func:`held` looks without making one.
+works as with a plain list field. ``link.extensions_if_any`` reads the same slot without
+making a list: the list, or None (writers use it).
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from typing import Any
-
-_NONE: tuple[()] = ()
 
 
 class LazyList:
@@ -51,18 +49,15 @@ class LazyList:
     def __set__(self, owner: Any, value: Any) -> None:
         self._set(owner, value)
 
-    def held(self, owner: Any) -> Sequence[Any]:
-        """Return the list the object holds, or an empty tuple if none was made yet."""
-        return self._get(owner) or _NONE
-
 
 def lazy_lists(cls: type, *names: str) -> None:
-    """Make each named list field of the slotted dataclass ``cls`` a :class:`LazyList`."""
+    """
+    Make each named list field of the slotted dataclass ``cls`` a :class:`LazyList`.
+
+    The slot itself stays readable as ``<name>_if_any``: the list, or None if none was
+    made yet (a read that makes nothing, at the speed of a plain attribute).
+    """
     for name in names:
-        setattr(cls, name, LazyList(cls.__dict__[name]))
-
-
-def held(owner: Any, name: str) -> Sequence[Any]:
-    """Return ``owner``'s list field ``name`` without making it: empty if never made."""
-    field = getattr(type(owner), name)
-    return field.held(owner) if isinstance(field, LazyList) else getattr(owner, name)
+        slot = cls.__dict__[name]
+        setattr(cls, name, LazyList(slot))
+        setattr(cls, f'{name}_if_any', slot)

@@ -100,6 +100,15 @@ class Link:
         self.extras = extras
         self._robot = None
 
+    if TYPE_CHECKING:
+        @property
+        def extensions_if_any(self) -> list[Extension] | None:
+            """Return the ``extensions`` list, or None if none was made yet (lazy_lists)."""
+
+        @property
+        def sensors_if_any(self) -> list[Sensor] | None:
+            """Return the ``sensors`` list, or None if none was made yet (lazy_lists)."""
+
     def add_sensor(self, sensor: Sensor) -> Link:
         """Attach a simulated sensor (Camera, Lidar, Imu) and return the link."""
         sensor.frame = sensor.frame or self.name

@@ -28,24 +28,37 @@ from typing import Any
 
 from urdfgenpy_ros.formats._xml import esc
 from urdfgenpy_ros.formats.urdf_schema import Element, ELEMENTS, FLOAT, OF_CLASS, TEXT
+from urdfgenpy_ros.joint import JointType
 
 Writer = Callable[[Any, Any, str], str]
+_LEAVES = ('origin',)  # one-line frozen children written in place, not by a call
 
 
-def _attributes(element: Element, owner: str, lines: list[str], indent: str) -> None:
-    """Emit code that appends the attributes of ``element`` (fields of ``owner``) to ``a``."""
+def _attributes(element: Element, owner: str, lines: list[str], indent: str,
+                target: str = 'a') -> None:
+    """Emit code that appends the attributes of ``element`` (fields of ``owner``)."""
     for attr in element.attrs:
         lines.append(f'{indent}v = {owner}.{attr.field}')
         if attr.kind == TEXT:
             skip = " and v != ''" if attr.default == '' else ''
             lines.append(f'{indent}if v is not None{skip}:')
-            lines.append(f'{indent}    a += \' {attr.name}="\' + esc(str(v)) + \'"\'')
+            lines.append(f'{indent}    t = v if type(v) is str else text(v)')
+            lines.append(f"{indent}    if '&' in t or '<' in t or '>' in t or '\"' in t:")
+            lines.append(f'{indent}        t = esc(t)')
+            lines.append(f'{indent}    {target} += \' {attr.name}="\' + t + \'"\'')
         else:
             text = 'number(v)' if attr.kind == FLOAT else 'vector(v)'
             unless = f' and {owner}.{attr.unless} is None' if attr.unless else ''
             lines.append(f'{indent}if v is not None{unless}:')
-            lines.append(f'{indent}    n = known(v)')
-            lines.append(f'{indent}    a += \' {attr.name}="\' + (n or {text}) + \'"\'')
+            lines.append(f'{indent}    {target} += \' {attr.name}="\' + (known(v) or {text}) + '
+                         '\'"\'')
+
+
+def _leaf(element: Element, owner: str, lines: list[str], indent: str, kids: str) -> None:
+    """Emit code that appends a one-line child element ``<tag .../>`` of ``owner`` to ``kids``."""
+    lines.append(f"{indent}c = ''")
+    _attributes(element, owner, lines, indent, 'c')
+    lines.append(f"{indent}{kids}.append('<{element.tag}' + c + '/>')")
 
 
 def _body(element: Element, lines: list[str], indent: str, depth: int) -> None:
@@ -61,9 +74,10 @@ def _body(element: Element, lines: list[str], indent: str, depth: int) -> None:
     kids = f'k{depth}'
     for child in element.children:
         tag = child.tags[0]
-        if child.many:
+        if child.many:  # written by the writer of each part's class, unless read
             lines.append(f'{indent}for part in item.{child.field}:')
-            lines.append(f'{indent}    {kids}.append(obj(part, {inner}))')
+            lines.append(f'{indent}    {kids}.append(obj(part, {inner}) if part.extras is not '
+                         f'None else FRESH[type(part)](writer, part, {inner}))')
         elif child.field is None:
             inline = ELEMENTS[tag]
             body = indent
@@ -73,30 +87,30 @@ def _body(element: Element, lines: list[str], indent: str, depth: int) -> None:
                 body = indent + '    '
             if inline.children:  # <geometry>: a wrapper around the shape object
                 shape = inline.children[0].field
-                lines.append(f"{body}{kids}.append('<{tag}>\\n' + {inner} + unit + "
-                             f"obj(item.{shape}, {inner} + unit) + '\\n' + {inner} + "
-                             f"'</{tag}>')")
+                lines.append(f'{body}part = item.{shape}')
+                lines.append(f'{body}g = {inner} + unit')
+                lines.append(f"{body}{kids}.append('<{tag}>\\n' + g + (obj(part, g) if "
+                             'part.extras is not None else FRESH[type(part)](writer, part, g)) '
+                             f"+ '\\n' + {inner} + '</{tag}>')")
             else:
-                saved = len(lines)
-                lines.append(f'{body}b = a')
-                _attributes(inline, 'item', lines, body)
-                lines[saved + 1:] = [line.replace(' a +=', ' c +=') for line in
-                                     lines[saved + 1:]]
-                lines[saved] = f"{body}c = ''"
-                lines.append(f"{body}{kids}.append('<{tag}' + c + '/>')")
+                _leaf(inline, 'item', lines, body, kids)
         else:
             lines.append(f'{indent}part = item.{child.field}')
-            if child.field == 'origin':
-                lines.append(f'{indent}if part is not None and (part.extras is not None or '
-                             'not part.is_identity):')
-            else:
+            if child.field == 'origin':  # left out while it neither moves nor turns
                 lines.append(f'{indent}if part is not None:')
-            if child.field == 'inertial':
+                lines.append(f'{indent}    if part.extras is not None:')
+                lines.append(f'{indent}        {kids}.append(obj(part, {inner}))')
+                lines.append(f'{indent}    elif part.xyz != ZERO or part.rpy != ZERO:')
+                _leaf(ELEMENTS['origin'], 'part', lines, indent + '        ', kids)
+                continue
+            lines.append(f'{indent}if part is not None:')
+            if child.field == 'inertial':  # a hook: the Xacro writer writes a macro call
                 call = f'writer.write_inertial(part, {inner}, item, None)'
             elif child.field == 'material':
                 call = f'writer.visual_material(part, {inner}, None)'
             else:
-                call = f'obj(part, {inner})'
+                call = (f'obj(part, {inner}) if part.extras is not None else '
+                        f'FRESH[type(part)](writer, part, {inner})')
             lines.append(f'{indent}    {kids}.append({call})')
     lines.append(f'{indent}if {kids}:')
     lines.append(f"{indent}    s = '\\n' + {inner}")
@@ -108,6 +122,12 @@ def _body(element: Element, lines: list[str], indent: str, depth: int) -> None:
 
 _BINDINGS = {'unit': 'writer.unit', 'number': 'writer.number', 'vector': 'writer.vector',
              'known': 'writer.known_number', 'obj': 'writer.object_text'}
+_JOINT_TYPES = {kind: kind.value for kind in JointType}
+
+
+def _text(value: Any) -> str:
+    """Return the text of a TEXT attribute that is not a ``str`` (a JointType, say)."""
+    return _JOINT_TYPES[value] if type(value) is JointType else str(value)
 
 
 def _compile(element: Element) -> Writer:
@@ -119,10 +139,12 @@ def _compile(element: Element) -> Writer:
               if f'{name}(' in used or f'+ {name}' in used]  # only what the body uses
     lines += body
     lines.append('    return t')
-    namespace: dict[str, Any] = {'esc': esc}
+    namespace: dict[str, Any] = {'esc': esc, 'text': _text, 'FRESH': FRESH,
+                                 'ZERO': (0.0, 0.0, 0.0)}
     exec(compile('\n'.join(lines), f'<fresh {element.tag}>', 'exec'), namespace)  # noqa: S102
     return namespace['fresh']
 
 
-FRESH: dict[type, Writer] = {cls: _compile(element) for cls, element in OF_CLASS.items()}
+FRESH: dict[type, Writer] = {}
 """The fast writer of each model class, for objects built in Python."""
+FRESH.update({cls: _compile(element) for cls, element in OF_CLASS.items()})
