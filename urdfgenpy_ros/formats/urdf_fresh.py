@@ -36,38 +36,72 @@ _LEAVES = ('origin',)  # one-line frozen children written in place, not by a cal
 
 def _attributes(element: Element, owner: str, lines: list[str], indent: str,
                 target: str = 'a') -> None:
-    """Emit code that appends the attributes of ``element`` (fields of ``owner``)."""
-    for attr in element.attrs:
-        lines.append(f'{indent}v = {owner}.{attr.field}')
+    """
+    Emit code that sets ``target`` to the attributes of ``element`` (fields of ``owner``).
+
+    The usual case is one f-string: every attribute that defaults to None is None, the
+    others are set, and names are plain strings that need no escaping. Anything else
+    takes the attribute-by-attribute path, which writes what it finds.
+    """
+    attrs = element.attrs
+    if not attrs:
+        lines.append(f"{indent}{target} = ''")
+        return
+    tests, pieces, slow = [], [], []
+    for number, attr in enumerate(attrs):
+        var = f'v{number}'
+        expression = _FIELD_EXPRESSIONS.get((element.tag, attr.field), '{owner}.{field}')
+        lines.append(f'{indent}{var} = ' + expression.format(owner=owner, field=attr.field))
         if attr.kind == TEXT:
-            skip = " and v != ''" if attr.default == '' else ''
-            lines.append(f'{indent}if v is not None{skip}:')
-            lines.append(f'{indent}    t = v if type(v) is str else text(v)')
-            lines.append(f"{indent}    if '&' in t or '<' in t or '>' in t or '\"' in t:")
-            lines.append(f'{indent}        t = esc(t)')
-            lines.append(f'{indent}    {target} += \' {attr.name}="\' + t + \'"\'')
+            skip = f" and {var} != ''" if attr.default == '' else ''
+            slow.append(f'if {var} is not None{skip}:')
+            slow.append(f'    t = {var} if type({var}) is str else text({var})')
+            slow.append("    if '&' in t or '<' in t or '>' in t or '\"' in t:")
+            slow.append('        t = esc(t)')
+            slow.append(f'    {target} += \' {attr.name}="\' + t + \'"\'')
         else:
-            text = 'number(v)' if attr.kind == FLOAT else 'vector(v)'
+            text = 'number' if attr.kind == FLOAT else 'vector'
             unless = f' and {owner}.{attr.unless} is None' if attr.unless else ''
-            lines.append(f'{indent}if v is not None{unless}:')
-            lines.append(f'{indent}    {target} += \' {attr.name}="\' + (known(v) or {text}) + '
-                         '\'"\'')
+            slow.append(f'if {var} is not None{unless}:')
+            slow.append(f'    {target} += \' {attr.name}="\' + (known({var}) or {text}({var})) + '
+                        '\'"\'')
+        if attr.default is None:  # usually left out: the one-string path while it is
+            tests.append(f'{var} is None')
+        elif attr.kind == TEXT:
+            tests.append(f'type({var}) is str' + (f" and {var} != ''" if attr.default == ''
+                                                  else ''))
+            tests += [f"{char!r} not in {var}" for char in '&<>"']
+            pieces.append(f' {attr.name}="{{{var}}}"')
+        else:
+            text = 'number' if attr.kind == FLOAT else 'vector'
+            tests.append(f'{var} is not None')
+            pieces.append(f' {attr.name}="{{known({var}) or {text}({var})}}"')
+    lines.append(f"{indent}if {' and '.join(tests)}:")
+    lines.append(f"{indent}    {target} = f'{''.join(pieces)}'" if pieces else
+                 f"{indent}    {target} = ''")
+    lines.append(f'{indent}else:')
+    lines.append(f"{indent}    {target} = ''")
+    lines += [f'{indent}    {line}' for line in slow]
+
+
+# How to read an attribute that is not a plain field: a box's size is its three lengths;
+# a joint's type is a JointType, whose text is its value.
+_FIELD_EXPRESSIONS = {('box', 'size'): '({owner}.length, {owner}.width, {owner}.height)',
+                      ('joint', 'type'): 'TYPES.get(w := {owner}.type, w)'}
 
 
 def _leaf(element: Element, owner: str, lines: list[str], indent: str, kids: str) -> None:
     """Emit code that appends a one-line child element ``<tag .../>`` of ``owner`` to ``kids``."""
-    lines.append(f"{indent}c = ''")
     _attributes(element, owner, lines, indent, 'c')
-    lines.append(f"{indent}{kids}.append('<{element.tag}' + c + '/>')")
+    lines.append(f"{indent}{kids}.append(f'<{element.tag}{{c}}/>')")
 
 
 def _body(element: Element, lines: list[str], indent: str, depth: int) -> None:
     """Emit code that writes ``element`` of ``item`` into ``t`` at indentation ``p{depth}``."""
     pad, inner = f'p{depth}', f'p{depth + 1}'
-    lines.append(f"{indent}a = ''")
     _attributes(element, 'item', lines, indent)
     if not element.children:
-        lines.append(f"{indent}t = '<{element.tag}' + a + '/>'")
+        lines.append(f"{indent}t = f'<{element.tag}{{a}}/>'")
         return
     lines.append(f'{indent}{inner} = {pad} + unit')
     lines.append(f'{indent}k{depth} = []')
@@ -89,9 +123,9 @@ def _body(element: Element, lines: list[str], indent: str, depth: int) -> None:
                 shape = inline.children[0].field
                 lines.append(f'{body}part = item.{shape}')
                 lines.append(f'{body}g = {inner} + unit')
-                lines.append(f"{body}{kids}.append('<{tag}>\\n' + g + (obj(part, g) if "
-                             'part.extras is not None else FRESH[type(part)](writer, part, g)) '
-                             f"+ '\\n' + {inner} + '</{tag}>')")
+                lines.append(f'{body}x = obj(part, g) if part.extras is not None else '
+                             'FRESH[type(part)](writer, part, g)')
+                lines.append(f"{body}{kids}.append(f'<{tag}>\\n{{g}}{{x}}\\n{{{inner}}}</{tag}>')")
             else:
                 _leaf(inline, 'item', lines, body, kids)
         else:
@@ -114,15 +148,15 @@ def _body(element: Element, lines: list[str], indent: str, depth: int) -> None:
             lines.append(f'{indent}    {kids}.append({call})')
     lines.append(f'{indent}if {kids}:')
     lines.append(f"{indent}    s = '\\n' + {inner}")
-    lines.append(f"{indent}    t = '<{element.tag}' + a + '>' + s + s.join({kids}) + '\\n' + "
-                 f"{pad} + '</{element.tag}>'")
+    lines.append(f"{indent}    t = f'<{element.tag}{{a}}>{{s}}{{s.join({kids})}}\\n{{{pad}}}"
+                 f"</{element.tag}>'")
     lines.append(f'{indent}else:')
-    lines.append(f"{indent}    t = '<{element.tag}' + a + '/>'")
+    lines.append(f"{indent}    t = f'<{element.tag}{{a}}/>'")
 
 
 _BINDINGS = {'unit': 'writer.unit', 'number': 'writer.number', 'vector': 'writer.vector',
              'known': 'writer.known_number', 'obj': 'writer.object_text'}
-_JOINT_TYPES = {kind: kind.value for kind in JointType}
+_JOINT_TYPES: dict[Any, str] = {kind: kind.value for kind in JointType}
 
 
 def _text(value: Any) -> str:
@@ -140,7 +174,7 @@ def _compile(element: Element) -> Writer:
     lines += body
     lines.append('    return t')
     namespace: dict[str, Any] = {'esc': esc, 'text': _text, 'FRESH': FRESH,
-                                 'ZERO': (0.0, 0.0, 0.0)}
+                                 'ZERO': (0.0, 0.0, 0.0), 'TYPES': _JOINT_TYPES}
     exec(compile('\n'.join(lines), f'<fresh {element.tag}>', 'exec'), namespace)  # noqa: S102
     return namespace['fresh']
 
