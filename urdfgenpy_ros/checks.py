@@ -130,12 +130,20 @@ def floats3(value: object) -> Vec3 | None:
     Return ``value`` as a 3-tuple of floats when it is a tuple of 3 finite ints or floats.
 
     The constructors' fast path: None means "not that simple", and the caller then runs
-    :func:`vec3`, which converts what it can and names the field in its error.
+    :func:`vec3`, which converts what it can and names the field in its error. Vectors of
+    ints (``axis=(0, 0, 1)``) are converted once and the float tuple shared: it is immutable.
     """
     if type(value) is not tuple or len(value) != 3:
         return None
     x, y, z = value
     if type(x) is not float or type(y) is not float or type(z) is not float:
+        if type(x) is int and type(y) is int and type(z) is int:
+            shared = _INT_VECTORS.get(value)
+            if shared is None:
+                shared = (float(x), float(y), float(z))
+                if len(_INT_VECTORS) < 1024:
+                    _INT_VECTORS[value] = shared
+            return shared
         if type(x) not in _REAL or type(y) not in _REAL or type(z) not in _REAL:
             return None
         value = x, y, z = (float(x), float(y), float(z))
@@ -171,3 +179,4 @@ def name(owner: str, value: object) -> str:
 
 _INF = math.inf
 _REAL = (float, int)
+_INT_VECTORS: dict[tuple[int, int, int], Vec3] = {}

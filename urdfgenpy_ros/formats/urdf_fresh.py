@@ -70,7 +70,7 @@ def _attributes(element: Element, owner: str, lines: list[str], indent: str,
         elif attr.kind == TEXT:
             tests.append(f'type({var}) is str' + (f" and {var} != ''" if attr.default == ''
                                                   else ''))
-            tests += [f"{char!r} not in {var}" for char in '&<>"']
+            tests += [f'{char!r} not in {var}' for char in '&<>"']
             pieces.append(f' {attr.name}="{{{var}}}"')
         else:
             text = 'number' if attr.kind == FLOAT else 'vector'
