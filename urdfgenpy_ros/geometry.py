@@ -28,6 +28,7 @@ from urdfgenpy_ros.transforms import (
     from_xyz_rpy, Matrix4, matrix_rpy, quaternion_matrix, rpy_quaternion)
 
 _ZERO: Vec3 = (0.0, 0.0, 0.0)
+_XY = (0.0, 0.0)
 Vec4 = tuple[float, float, float, float]
 
 
@@ -45,6 +46,7 @@ def _positive(owner: str, names: tuple[str, ...], *values: float) -> tuple[float
 
 
 _INF = math.inf
+_new = object.__new__
 
 
 @dataclass(slots=True, frozen=True, init=False)
@@ -128,7 +130,7 @@ class Origin:
         return Origin(self.xyz, quat_xyzw=self.quaternion, source=self.source)
 
     @classmethod
-    def above(cls, geometry: Geometry, xy: tuple[float, float] = (0.0, 0.0),
+    def above(cls, geometry: Geometry, xy: tuple[float, float] = _XY,
               rpy: Vec3 = _ZERO) -> Origin:
         """
         Return the origin that puts the bottom of ``geometry`` at z = 0.
@@ -136,7 +138,18 @@ class Origin:
         A box or cylinder is lifted by half its height, a sphere by its radius, a capsule
         by half its length plus its radius.
         """
-        return cls((xy[0], xy[1], geometry.half_height()), rpy)
+        if cls is not Origin or xy is not _XY or rpy is not _ZERO:
+            return cls((xy[0], xy[1], geometry.half_height()), rpy)
+        height = geometry.half_height()
+        if type(height) is not float or height - height != 0.0:
+            return cls((0.0, 0.0, height))  # checked: a size of a shape made unchecked
+        origin = _new(Origin)  # a finite float straight up: nothing to check
+        _set_xyz(origin, (0.0, 0.0, height))
+        _set_rpy(origin, _ZERO)
+        _set_quat(origin, None)
+        _set_source(origin, None)
+        _set_extras(origin, None)
+        return origin
 
     @classmethod
     def wheel(cls, xy: tuple[float, float] = (0.0, 0.0), z: float = 0.0) -> Origin:

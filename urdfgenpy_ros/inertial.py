@@ -129,7 +129,11 @@ class Inertial:
     def from_box(cls, mass: float, length: float, w: float, h: float, *,
                  origin: Origin | None = None) -> Inertial:
         """Return the inertial of a solid box of sizes ``length`` x ``w`` x ``h``."""
-        size = _positive('Inertial.from_box', ('length', 'w', 'h'), length, w, h)
+        if type(length) is float and type(w) is float and type(h) is float and \
+                0.0 < length < _INF and 0.0 < w < _INF and 0.0 < h < _INF:
+            return cls._of_solid('box', mass, (length, w, h), origin)
+        size = checks.numbers('Inertial.from_box', ('length', 'w', 'h'), (length, w, h), 0.0,
+                              strict=True)
         return cls._of_solid('box', mass, size, origin)
 
     @classmethod
