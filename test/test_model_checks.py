@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import math
 import pickle
 from typing import Any, Callable
 
@@ -160,6 +161,9 @@ def test_values_are_coerced_to_floats_on_every_path() -> None:
     assert all(type(v) is float for v in (limit.lower, limit.upper, limit.effort,
                                           limit.velocity))
     assert Box(1, 2, 3).size == (1.0, 2.0, 3.0)
+    assert Origin((0, 0, 1)).xyz == (0.0, 0.0, 1.0)  # ints: converted once, then shared
+    assert math.copysign(1.0, Origin((-0.0, 0, 1)).xyz[0]) == -1.0  # -0.0 is not 0
+    assert math.copysign(1.0, Joint('j', 'fixed', 'a', 'b', axis=(0, -0.0, 1)).axis[1]) == -1.0
     assert Origin.above(Box(1, 2, 3)) == Origin((0, 0, 1.5))
     assert Origin.above(Box(1, 2, 3), xy=(1, 2), rpy=(0, 0, 1)) == Origin((1, 2, 1.5), (0, 0, 1))
     assert Inertial.from_box(1, 1, 2, 3).ixx == pytest.approx((4 + 9) / 12)
