@@ -18,7 +18,8 @@ Fast writers for elements built in Python, generated from the URDF declarations.
 
 For each declared element this module compiles one function that writes an object which
 was not read from a file: the same output as the general writer's, without its loops
-over the declaration. The general writer calls them; nothing else does.
+over the declaration. The general writer calls them, and :func:`write_new_robot` for a
+robot that was not read from a file; nothing else does.
 """
 
 from __future__ import annotations
@@ -182,3 +183,55 @@ def _compile(element: Element) -> Writer:
 FRESH: dict[type, Writer] = {}
 """The fast writer of each model class, for objects built in Python."""
 FRESH.update({cls: _compile(element) for cls, element in OF_CLASS.items()})
+
+
+def write_new_robot(writer: Any, opening: Callable[[], str],
+                    sensor_block: Callable[[Any, str], Any]) -> str:
+    """
+    Return the ``<robot>`` element of a robot not read from a file, in one pass.
+
+    The same text as the general writer's (:meth:`.UrdfWriter.write_robot`) for such a
+    robot: materials, links, the blocks and sensors of links then joints, joints, the
+    robot's blocks, each on a new line; ``opening`` gives the start tag and
+    ``sensor_block`` the ``<gazebo>`` element that carries a sensor.
+    """
+    robot = writer.robot
+    unit = writer.unit
+    fresh = '\n' + unit
+    parts = ['']  # the start tag, once the rest is written
+    append = parts.append
+    for text in writer.prologue():
+        append(fresh)
+        append(text)
+    for material in writer.materials:
+        append(fresh)
+        append(writer.write_item(material, unit))
+    obj = writer.object_text
+    links, joints = robot.links, robot.joints
+    for link in links:
+        append(fresh)
+        append(obj(link, unit) if link.extras is not None else
+               FRESH[type(link)](writer, link, unit))
+    for owners in (links, joints):
+        for owner in owners:  # most hold neither list (lazy_lists)
+            if owner.extensions_if_any:
+                for block in owner.extensions:
+                    append(fresh)
+                    append(writer.write_item(block, unit, owner))
+            if owner.sensors_if_any:
+                for sensor in owner.sensors:
+                    append(fresh)
+                    append(writer.write_extension(sensor_block(sensor, owner.name), unit))
+    for joint in joints:
+        append(fresh)
+        append(obj(joint, unit) if joint.extras is not None else
+               FRESH[type(joint)](writer, joint, unit))
+    for block in writer.extensions:
+        append(fresh)
+        append(writer.write_item(block, unit))
+    start = opening()
+    if len(parts) == 1:
+        return start[:-1] + '/>'
+    parts[0] = start
+    append('\n</robot>')
+    return ''.join(parts)
