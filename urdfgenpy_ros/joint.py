@@ -249,8 +249,8 @@ class Joint:
             if axis == _ZERO and kind in _ONE_DOF and checks.is_on():
                 raise ModelError(f'joint {name!r}: axis must not be zero for a {kind} '
                                  'joint (give the direction of motion, e.g. (0, 0, 1))')
-        _set_name(self, name)  # the slot: a new joint belongs to no robot yet
-        _set_type(self, kind)
+        self.name_slot = name  # the slot itself: a new joint belongs to no robot yet
+        self.type_slot = kind  # the slot itself: the type is checked above
         self.parent = parent
         self.child = child
         self.origin = origin
@@ -260,8 +260,8 @@ class Joint:
         self.mimic = mimic
         self.safety_controller = safety_controller
         self.calibration = calibration
-        _set_extensions(self, extensions)  # None: made on first use (lazy_lists)
-        _set_sensors(self, sensors)
+        self.extensions_if_any = extensions  # None: made on first use (lazy_lists)
+        self.sensors_if_any = sensors
         self.source = source
         self.extras = extras
         self._robot = None
@@ -281,9 +281,33 @@ class Joint:
         def extensions_if_any(self) -> list[Extension] | None:
             """Return the ``extensions`` list, or None if none was made yet (lazy_lists)."""
 
+        @extensions_if_any.setter
+        def extensions_if_any(self, value: list[Extension] | None) -> None:
+            """Set the ``extensions`` slot itself (None: made on first use)."""
+
         @property
         def sensors_if_any(self) -> list[Sensor] | None:
             """Return the ``sensors`` list, or None if none was made yet (lazy_lists)."""
+
+        @sensors_if_any.setter
+        def sensors_if_any(self, value: list[Sensor] | None) -> None:
+            """Set the ``sensors`` slot itself (None: made on first use)."""
+
+        @property
+        def name_slot(self) -> str:
+            """Return the name's slot, set without renaming (constructors)."""
+
+        @name_slot.setter
+        def name_slot(self, value: str) -> None:
+            """Set the name's slot itself."""
+
+        @property
+        def type_slot(self) -> JointType:
+            """Return the type's slot, set without coercing (constructors)."""
+
+        @type_slot.setter
+        def type_slot(self, value: JointType) -> None:
+            """Set the type's slot itself."""
 
     def add_sensor(self, sensor: Sensor) -> Joint:
         """Attach a sensor that lives in a joint (ForceTorque) and return the joint."""
@@ -318,10 +342,8 @@ class _TypeField:
         self._set(joint, kind)
 
 
-_set_type = Joint.__dict__['type'].__set__
+setattr(Joint, 'type_slot', Joint.__dict__['type'])
 Joint.type = _TypeField(Joint.__dict__['type'])  # type: ignore[assignment,misc]
-_set_name = Joint.__dict__['name'].__set__
-_set_extensions = Joint.__dict__['extensions'].__set__
-_set_sensors = Joint.__dict__['sensors'].__set__
+setattr(Joint, 'name_slot', Joint.__dict__['name'])  # the slot, also under this name
 own_names(Joint, 'joint')
 lazy_lists(Joint, 'extensions', 'sensors')

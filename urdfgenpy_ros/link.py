@@ -90,12 +90,12 @@ class Link:
         """Check the name; lists not given start empty."""
         if type(name) is not str or not name or name.isspace():
             checks.name('link', name)
-        _set_name(self, name)  # the slot: a new link belongs to no robot yet
+        self.name_slot = name  # the slot itself: a new link belongs to no robot yet
         self.visuals = [] if visuals is None else visuals
         self.collisions = [] if collisions is None else collisions
         self.inertial = inertial
-        _set_extensions(self, extensions)  # None: made on first use (lazy_lists)
-        _set_sensors(self, sensors)
+        self.extensions_if_any = extensions  # None: made on first use (lazy_lists)
+        self.sensors_if_any = sensors
         self.source = source
         self.extras = extras
         self._robot = None
@@ -105,9 +105,25 @@ class Link:
         def extensions_if_any(self) -> list[Extension] | None:
             """Return the ``extensions`` list, or None if none was made yet (lazy_lists)."""
 
+        @extensions_if_any.setter
+        def extensions_if_any(self, value: list[Extension] | None) -> None:
+            """Set the ``extensions`` slot itself (None: made on first use)."""
+
         @property
         def sensors_if_any(self) -> list[Sensor] | None:
             """Return the ``sensors`` list, or None if none was made yet (lazy_lists)."""
+
+        @sensors_if_any.setter
+        def sensors_if_any(self, value: list[Sensor] | None) -> None:
+            """Set the ``sensors`` slot itself (None: made on first use)."""
+
+        @property
+        def name_slot(self) -> str:
+            """Return the name's slot, set without renaming (constructors)."""
+
+        @name_slot.setter
+        def name_slot(self, value: str) -> None:
+            """Set the name's slot itself."""
 
     def add_sensor(self, sensor: Sensor) -> Link:
         """Attach a simulated sensor (Camera, Lidar, Imu) and return the link."""
@@ -155,8 +171,6 @@ class Link:
         return self.collisions[0] if self.collisions else None
 
 
-_set_name = Link.__dict__['name'].__set__
-_set_extensions = Link.__dict__['extensions'].__set__
-_set_sensors = Link.__dict__['sensors'].__set__
+setattr(Link, 'name_slot', Link.__dict__['name'])  # the slot, also under this name
 own_names(Link, 'link')
 lazy_lists(Link, 'extensions', 'sensors')
