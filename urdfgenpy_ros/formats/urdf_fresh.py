@@ -25,6 +25,7 @@ robot that was not read from a file; nothing else does.
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import partial
 from typing import Any
 
 from urdfgenpy_ros.formats._xml import esc
@@ -185,19 +186,21 @@ FRESH: dict[type, Writer] = {}
 FRESH.update({cls: _compile(element) for cls, element in OF_CLASS.items()})
 
 
-def write_new_robot(writer: Any, opening: Callable[[], str],
-                    sensor_block: Callable[[Any, str], Any]) -> str:
+def write_new_robot(writer: Any, sensor_block: Callable[[Any, str], Any]) -> str:
     """
     Return the ``<robot>`` element of a robot not read from a file, in one pass.
 
     The same text as the general writer's (:meth:`.UrdfWriter.write_robot`) for such a
     robot: materials, links, the blocks and sensors of links then joints, joints, the
-    robot's blocks, each on a new line; ``opening`` gives the start tag and
-    ``sensor_block`` the ``<gazebo>`` element that carries a sensor.
+    robot's blocks, each on a new line; ``sensor_block`` gives the ``<gazebo>`` element
+    that carries a sensor. A link or joint that fails to write is written again through
+    ``writer.checked``, which names a value of the wrong kind in one line (a bug of ours
+    keeps its traceback).
     """
     robot = writer.robot
     unit = writer.unit
     fresh = '\n' + unit
+    checked = writer.checked
     parts = ['']  # the start tag, once the rest is written
     append = parts.append
     for text in writer.prologue():
@@ -205,13 +208,9 @@ def write_new_robot(writer: Any, opening: Callable[[], str],
         append(text)
     for material in writer.materials:
         append(fresh)
-        append(writer.write_item(material, unit))
-    obj = writer.object_text
+        append(checked(material, partial(writer.write_item, material, unit)))
     links, joints = robot.links, robot.joints
-    for link in links:
-        append(fresh)
-        append(obj(link, unit) if link.extras is not None else
-               FRESH[type(link)](writer, link, unit))
+    _write_each(writer, links, fresh, append)
     for owners in (links, joints):
         for owner in owners:  # most hold neither list (lazy_lists)
             if owner.extensions_if_any:
@@ -222,16 +221,25 @@ def write_new_robot(writer: Any, opening: Callable[[], str],
                 for sensor in owner.sensors:
                     append(fresh)
                     append(writer.write_extension(sensor_block(sensor, owner.name), unit))
-    for joint in joints:
-        append(fresh)
-        append(obj(joint, unit) if joint.extras is not None else
-               FRESH[type(joint)](writer, joint, unit))
+    _write_each(writer, joints, fresh, append)
     for block in writer.extensions:
         append(fresh)
         append(writer.write_item(block, unit))
-    start = opening()
+    name, attrs = writer._opening()
     if len(parts) == 1:
-        return start[:-1] + '/>'
-    parts[0] = start
-    append('\n</robot>')
+        return f'<{name}{attrs}/>'
+    parts[0] = f'<{name}{attrs}>'
+    append(f'\n</{name}>')
     return ''.join(parts)
+
+
+def _write_each(writer: Any, items: list[Any], fresh: str, append: Callable[[str], None]) -> None:
+    """Append each link or joint on a new line; one that fails is written again, checked."""
+    unit = writer.unit
+    text_of = writer.object_text
+    for item in items:
+        append(fresh)
+        try:
+            append(text_of(item, unit))
+        except Exception:  # noqa: B902 - written again to name the value, or to re-raise
+            append(writer.checked(item, partial(text_of, item, unit)))
