@@ -32,6 +32,7 @@ import functools
 import gc
 import importlib
 import json
+import os
 import statistics
 import time
 import tracemalloc
@@ -143,6 +144,11 @@ def measure(count: int, shape: str, repeat: int) -> dict[str, tuple[float, float
     return figures
 
 
+def _load() -> str:
+    """Return the machine's load averages, which the figures depend on."""
+    return ' '.join(f'{load:.2f}' for load in os.getloadavg())
+
+
 def main() -> None:
     """Run the comparison and print a Markdown table."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
@@ -151,6 +157,7 @@ def main() -> None:
     parser.add_argument('--json', help='also write the figures to this file')
     args = parser.parse_args()
     rows = []
+    print(f'load average at the start: {_load()} (1, 5, 15 min)')
     print('| shape | links | library | median build (ms) | median write (ms) | build+write (ms) |'
           ' us/link | peak MiB | vs urdfgenpy 0.4.0 |')
     print('|---|---:|---|---:|---:|---:|---:|---:|---:|')
@@ -166,6 +173,7 @@ def main() -> None:
                 print(f'| {shape} | {count} | {name} | {build * 1e3:.1f} | {write * 1e3:.1f} | '
                       f'{seconds * 1e3:.1f} | {seconds / count * 1e6:.1f} | {peak:.1f} | '
                       f'{base / seconds:.2f}x |')
+    print(f'load average at the end: {_load()}')
     if args.json:
         with open(args.json, 'w', encoding='utf-8') as stream:
             json.dump(rows, stream, indent=1)

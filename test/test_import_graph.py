@@ -55,8 +55,8 @@ Graph = dict[str, set[str]]
 PACKAGE = 'urdfgenpy_ros'
 MODEL = frozenset(f'{PACKAGE}.{name}' for name in (
     'checks', 'dh_row', 'errors', 'extensions', 'floats', 'geometry', 'inertial', 'joint',
-    'link', 'material', 'mesh_inertia', 'model', 'owned_names', 'preserved', 'sensors',
-    'transforms', 'value_kinds'))
+    'lazy_lists', 'link', 'material', 'mesh_inertia', 'model', 'owned_names', 'preserved',
+    'sensors', 'transforms', 'value_kinds'))
 """The model layer: these import only each other."""
 USE_ROBOT = (PACKAGE, f'{PACKAGE}.cli.', f'{PACKAGE}.publisher.', f'{PACKAGE}.scaffold.',
              f'{PACKAGE}.viewer.', f'{PACKAGE}.model_source', f'{PACKAGE}.examples')

@@ -37,6 +37,10 @@ def enabled() -> bool:
     return _ENABLED.get()
 
 
+is_on = _ENABLED.get
+"""The same as :func:`enabled`, without a Python call (constructors' fast paths use it)."""
+
+
 class unchecked:  # noqa: N801 - used as a function: ``with checks.unchecked():``
     """Build elements without raising on bad values (readers use this)."""
 
@@ -121,6 +125,37 @@ def are_finite_floats(*values: object) -> bool:
     return True
 
 
+def floats3(value: object) -> Vec3 | None:
+    """
+    Return ``value`` as a 3-tuple of floats when it is a tuple of 3 finite ints or floats.
+
+    The constructors' fast path: None means "not that simple", and the caller then runs
+    :func:`vec3`, which converts what it can and names the field in its error. A vector
+    with ints in it (``axis=(0, 0, 1)``, ``xyz=(0, 0, 0.2)``) is converted once and the float
+    tuple shared (it is immutable); one with a float zero is not, so that -0.0 stays -0.0.
+    """
+    if type(value) is not tuple or len(value) != 3:
+        return None
+    x, y, z = value
+    if type(x) is float and type(y) is float and type(z) is float:
+        total = x + y + z
+        return value if total - total == 0.0 else None
+    if type(x) not in _REAL or type(y) not in _REAL or type(z) not in _REAL:
+        return None
+    exact = (type(x) is int or x) and (type(y) is int or y) and (type(z) is int or z)
+    if exact:  # no float zero: equal keys convert to equal floats, sign included
+        shared = _MIXED.get(value)
+        if shared is not None:
+            return shared
+    result = x, y, z = (float(x), float(y), float(z))
+    total = x + y + z
+    if total - total != 0.0:
+        return None
+    if exact and len(_MIXED) < 1024:
+        _MIXED[value] = result
+    return result
+
+
 def vec3(owner: str, field: str, value: Sequence[object]) -> Vec3:
     """Return a 3-vector of finite floats; raise ValueError when malformed."""
     try:
@@ -148,3 +183,5 @@ def name(owner: str, value: object) -> str:
 
 
 _INF = math.inf
+_REAL = (float, int)
+_MIXED: dict[tuple[float, float, float], Vec3] = {}  # vectors with ints, converted

@@ -28,6 +28,7 @@ from urdfgenpy_ros.transforms import (
     from_xyz_rpy, Matrix4, matrix_rpy, quaternion_matrix, rpy_quaternion)
 
 _ZERO: Vec3 = (0.0, 0.0, 0.0)
+_XY = (0.0, 0.0)
 Vec4 = tuple[float, float, float, float]
 
 
@@ -45,6 +46,7 @@ def _positive(owner: str, names: tuple[str, ...], *values: float) -> tuple[float
 
 
 _INF = math.inf
+_new = object.__new__
 
 
 @dataclass(slots=True, frozen=True, init=False)
@@ -68,20 +70,30 @@ class Origin:
     def __init__(self, xyz: Sequence[float] = _ZERO, rpy: Sequence[float] = _ZERO, *,
                  quat_xyzw: Sequence[float] | None = None,
                  source: SourceLocation | None = None, extras: Preserved | None = None) -> None:
-        _ORIGIN_SLOTS[0](self, xyz if xyz is _ZERO else checks.vec3('origin', 'xyz', xyz))
+        if xyz is not _ZERO:
+            given = xyz
+            xyz = checks.floats3(given)  # type: ignore[assignment]
+            if xyz is None:
+                xyz = checks.vec3('origin', 'xyz', given)
+        _set_xyz(self, xyz)
         if quat_xyzw is None:
-            _ORIGIN_SLOTS[1](self, rpy if rpy is _ZERO else checks.vec3('origin', 'rpy', rpy))
-            _ORIGIN_SLOTS[2](self, None)
+            if rpy is not _ZERO:
+                given = rpy
+                rpy = checks.floats3(given)  # type: ignore[assignment]
+                if rpy is None:
+                    rpy = checks.vec3('origin', 'rpy', given)
+            _set_rpy(self, rpy)
+            _set_quat(self, None)
         else:
             quat = _quaternion(quat_xyzw)
             turned = quaternion_rpy(quat)
             if rpy is not _ZERO and checks.vec3('origin', 'rpy', rpy) != turned:
                 raise ModelError('origin: give the rotation as rpy or as quat_xyzw, not both '
                                  f'(rpy {tuple(rpy)!r}, quat_xyzw {quat!r})')
-            _ORIGIN_SLOTS[1](self, turned)
-            _ORIGIN_SLOTS[2](self, quat)
-        _ORIGIN_SLOTS[3](self, source)
-        _ORIGIN_SLOTS[4](self, extras)
+            _set_rpy(self, turned)
+            _set_quat(self, quat)
+        _set_source(self, source)
+        _set_extras(self, extras)
 
     @property
     def is_identity(self) -> bool:
@@ -118,7 +130,7 @@ class Origin:
         return Origin(self.xyz, quat_xyzw=self.quaternion, source=self.source)
 
     @classmethod
-    def above(cls, geometry: Geometry, xy: tuple[float, float] = (0.0, 0.0),
+    def above(cls, geometry: Geometry, xy: tuple[float, float] = _XY,
               rpy: Vec3 = _ZERO) -> Origin:
         """
         Return the origin that puts the bottom of ``geometry`` at z = 0.
@@ -126,7 +138,18 @@ class Origin:
         A box or cylinder is lifted by half its height, a sphere by its radius, a capsule
         by half its length plus its radius.
         """
-        return cls((xy[0], xy[1], geometry.half_height()), rpy)
+        if cls is not Origin or xy is not _XY or rpy is not _ZERO:
+            return cls((xy[0], xy[1], geometry.half_height()), rpy)
+        height = geometry.half_height()
+        if type(height) is not float or height - height != 0.0:
+            return cls((0.0, 0.0, height))  # checked: a size of a shape made unchecked
+        origin = _new(Origin)  # a finite float straight up: nothing to check
+        _set_xyz(origin, (0.0, 0.0, height))
+        _set_rpy(origin, _ZERO)
+        _set_quat(origin, None)
+        _set_source(origin, None)
+        _set_extras(origin, None)
+        return origin
 
     @classmethod
     def wheel(cls, xy: tuple[float, float] = (0.0, 0.0), z: float = 0.0) -> Origin:
@@ -154,7 +177,8 @@ def _quaternion(value: Sequence[object]) -> Vec4:
     return (x, y, z, w)
 
 
-_ORIGIN_SLOTS = _setters(Origin, 'xyz', 'rpy', 'quat_xyzw', 'source', 'extras')
+_set_xyz, _set_rpy, _set_quat, _set_source, _set_extras = _setters(
+    Origin, 'xyz', 'rpy', 'quat_xyzw', 'source', 'extras')
 IDENTITY = Origin()
 _BOX_SIZES = ('length', 'width', 'height')
 
@@ -176,11 +200,11 @@ class Box:
                 and 0.0 < length < _INF and 0.0 < width < _INF and 0.0 < height < _INF):
             length, width, height = checks.numbers('box', _BOX_SIZES, (length, width, height),
                                                    0.0, strict=True)
-        _BOX_SLOTS[0](self, length)
-        _BOX_SLOTS[1](self, width)
-        _BOX_SLOTS[2](self, height)
-        _BOX_SLOTS[3](self, source)
-        _BOX_SLOTS[4](self, extras)
+        _set_length(self, length)
+        _set_width(self, width)
+        _set_height(self, height)
+        _set_box_source(self, source)
+        _set_box_extras(self, extras)
 
     @property
     def size(self) -> Vec3:
@@ -192,7 +216,8 @@ class Box:
         return self.height / 2.0
 
 
-_BOX_SLOTS = _setters(Box, 'length', 'width', 'height', 'source', 'extras')
+_set_length, _set_width, _set_height, _set_box_source, _set_box_extras = _setters(
+    Box, 'length', 'width', 'height', 'source', 'extras')
 
 
 @dataclass(slots=True, frozen=True, init=False)

@@ -129,7 +129,26 @@ class Inertial:
     def from_box(cls, mass: float, length: float, w: float, h: float, *,
                  origin: Origin | None = None) -> Inertial:
         """Return the inertial of a solid box of sizes ``length`` x ``w`` x ``h``."""
-        size = _positive('Inertial.from_box', ('length', 'w', 'h'), length, w, h)
+        if type(length) is float and type(w) is float and type(h) is float and \
+                0.0 < length < _INF and 0.0 < w < _INF and 0.0 < h < _INF:
+            if cls is Inertial and type(mass) is float and 0.0 <= mass < _INF and (
+                    origin is None or type(origin) is Origin):
+                ixx = mass * (w * w + h * h) / 12.0  # box_tensor's terms, in its order
+                iyy = mass * (length * length + h * h) / 12.0
+                izz = mass * (length * length + w * w) / 12.0
+                total = ixx + iyy + izz
+                if total - total == 0.0:  # finite floats from checked ones: build directly
+                    inertial = _new(Inertial)
+                    inertial.mass = mass
+                    inertial.ixx, inertial.iyy, inertial.izz = ixx, iyy, izz
+                    inertial.ixy = inertial.ixz = inertial.iyz = 0.0
+                    inertial.origin = origin or IDENTITY
+                    inertial.source = inertial.extras = None
+                    inertial.solid = ('box', mass, length, w, h)
+                    return inertial
+            return cls._of_solid('box', mass, (length, w, h), origin)
+        size = checks.numbers('Inertial.from_box', ('length', 'w', 'h'), (length, w, h), 0.0,
+                              strict=True)
         return cls._of_solid('box', mass, size, origin)
 
     @classmethod

@@ -25,6 +25,7 @@ from urdfgenpy_ros import checks
 from urdfgenpy_ros.checks import Vec3
 from urdfgenpy_ros.errors import ModelError, SourceLocation
 from urdfgenpy_ros.geometry import IDENTITY, Origin
+from urdfgenpy_ros.lazy_lists import lazy_lists
 from urdfgenpy_ros.owned_names import own_names
 from urdfgenpy_ros.preserved import Preserved
 
@@ -65,6 +66,8 @@ _LIMIT_FIELDS = ('lower', 'upper', 'effort', 'velocity')
 _LIMITS_1_2 = ('acceleration', 'deceleration', 'jerk')
 _INF = float('inf')
 _TYPE_NAMES = ', '.join(t.value for t in JointType)
+_ZERO = (0.0, 0.0, 0.0)
+_class = type  # Joint.__init__ has a parameter called type
 
 
 def _hidden() -> Any:
@@ -72,7 +75,7 @@ def _hidden() -> Any:
     return field(default=None, compare=False, repr=False)
 
 
-@dataclass(slots=True)
+@dataclass(slots=True, init=False)
 class JointLimit:
     """Position range (rad or m), maximal ``effort`` (N m or N) and ``velocity``."""
 
@@ -87,26 +90,39 @@ class JointLimit:
     source: SourceLocation | None = _hidden()
     extras: Preserved | None = _hidden()
 
-    def __post_init__(self) -> None:
+    def __init__(self, lower: float = 0.0, upper: float = 0.0, *, effort: float = 0.0,
+                 velocity: float = 0.0, acceleration: float | None = None,
+                 deceleration: float | None = None, jerk: float | None = None,
+                 source: SourceLocation | None = None, extras: Preserved | None = None) -> None:
         """Coerce to floats; reject negative effort, velocity or URDF 1.2 limits."""
-        for name in _LIMITS_1_2:
-            value = getattr(self, name)
-            if value is not None:
-                setattr(self, name, checks.non_negative('limit', name, value, ''))
+        if acceleration is not None:
+            acceleration = checks.non_negative('limit', 'acceleration', acceleration, '')
+        if deceleration is not None:
+            deceleration = checks.non_negative('limit', 'deceleration', deceleration, '')
+        if jerk is not None:
+            jerk = checks.non_negative('limit', 'jerk', jerk, '')
         try:
-            lower, upper = self.lower, self.upper = float(self.lower), float(self.upper)
-            effort, velocity = self.effort, self.velocity = (float(self.effort),
-                                                             float(self.velocity))
-            if (lower - lower == 0.0 and upper - upper == 0.0 and 0.0 <= effort < _INF
-                    and 0.0 <= velocity < _INF):
-                return
+            lower, upper, effort, velocity = (float(lower), float(upper), float(effort),
+                                              float(velocity))
+            good = (lower - lower == 0.0 and upper - upper == 0.0 and 0.0 <= effort < _INF
+                    and 0.0 <= velocity < _INF)
         except (TypeError, ValueError):
-            pass
-        self.lower, self.upper, self.effort, self.velocity = checks.numbers(
-            'limit', _LIMIT_FIELDS, (self.lower, self.upper, self.effort, self.velocity))
-        if not (self.effort >= 0.0 and self.velocity >= 0.0):
-            checks.non_negative('limit', 'effort', self.effort, '(N m or N)')
-            checks.non_negative('limit', 'velocity', self.velocity, '(rad/s or m/s)')
+            good = False
+        if not good:
+            lower, upper, effort, velocity = checks.numbers(
+                'limit', _LIMIT_FIELDS, (lower, upper, effort, velocity))
+            if not (effort >= 0.0 and velocity >= 0.0):
+                checks.non_negative('limit', 'effort', effort, '(N m or N)')
+                checks.non_negative('limit', 'velocity', velocity, '(rad/s or m/s)')
+        self.lower = lower
+        self.upper = upper
+        self.effort = effort
+        self.velocity = velocity
+        self.acceleration = acceleration
+        self.deceleration = deceleration
+        self.jerk = jerk
+        self.source = source
+        self.extras = extras
 
 
 @dataclass(slots=True)
@@ -179,7 +195,7 @@ class JointCalibration:
             self.falling = checks.finite('calibration', 'falling', self.falling)
 
 
-@dataclass(slots=True)
+@dataclass(slots=True, init=False)
 class Joint:
     """
     A joint from ``parent`` to ``child`` link, placed at ``origin`` in the parent.
@@ -206,32 +222,49 @@ class Joint:
     extras: Preserved | None = _hidden()
     _robot: RobotModel | None = field(default=None, init=False, compare=False, repr=False)
 
-    if TYPE_CHECKING:
-        # The generated __init__ accepts a type name too ('revolute'); say so to checkers.
-        def __init__(self, name: str, type: JointType | str,  # noqa: A002
-                     parent: str, child: str, *, origin: Origin = IDENTITY,
-                     axis: Sequence[float] | None = None, limit: JointLimit | None = None,
-                     dynamics: JointDynamics | None = None, mimic: JointMimic | None = None,
-                     safety_controller: SafetyController | None = None,
-                     calibration: JointCalibration | None = None,
-                     extensions: list[Extension] = ...,
-                     sensors: list[Sensor] = ...,
-                     source: SourceLocation | None = None,
-                     extras: Preserved | None = None) -> None: ...
-
-    def __post_init__(self) -> None:
-        """Check the name and type; coerce the axis."""
-        checks.name('joint', self.name)
-        kind = self.type  # a JointType: the field coerces what is set (_TypeField)
-        if not (type(self.parent) is str and self.parent and type(self.child) is str
-                and self.child):
-            checks.name(f'joint {self.name!r} parent', self.parent)
-            checks.name(f'joint {self.name!r} child', self.child)
-        if self.axis is not None:
-            self.axis = checks.vec3(f'joint {self.name!r}', 'axis', self.axis)
-            if self.axis == (0.0, 0.0, 0.0) and kind in _ONE_DOF and checks.enabled():
-                raise ModelError(f'joint {self.name!r}: axis must not be zero for a {kind} '
+    def __init__(self, name: str, type: JointType | str,  # noqa: A002
+                 parent: str, child: str, *, origin: Origin = IDENTITY,
+                 axis: Sequence[float] | None = None, limit: JointLimit | None = None,
+                 dynamics: JointDynamics | None = None, mimic: JointMimic | None = None,
+                 safety_controller: SafetyController | None = None,
+                 calibration: JointCalibration | None = None,
+                 extensions: list[Extension] | None = None,
+                 sensors: list[Sensor] | None = None,
+                 source: SourceLocation | None = None,
+                 extras: Preserved | None = None) -> None:
+        """Check the name, type and link names; coerce the axis (a type name is accepted)."""
+        kind = _TYPES.get(type)
+        if kind is None:
+            raise ModelError(f'joint {name!r}: unknown type {type!r} (use one of {_TYPE_NAMES})')
+        if _class(name) is not str or not name or name.isspace():
+            checks.name('joint', name)
+        if not (_class(parent) is str and parent and _class(child) is str and child):
+            checks.name(f'joint {name!r} parent', parent)
+            checks.name(f'joint {name!r} child', child)
+        if axis is not None:
+            given = axis
+            axis = checks.floats3(given)
+            if axis is None:
+                axis = checks.vec3(f'joint {name!r}', 'axis', given)
+            if axis == _ZERO and kind in _ONE_DOF and checks.is_on():
+                raise ModelError(f'joint {name!r}: axis must not be zero for a {kind} '
                                  'joint (give the direction of motion, e.g. (0, 0, 1))')
+        self.name_slot = name  # the slot itself: a new joint belongs to no robot yet
+        self.type_slot = kind  # the slot itself: the type is checked above
+        self.parent = parent
+        self.child = child
+        self.origin = origin
+        self.axis = axis
+        self.limit = limit
+        self.dynamics = dynamics
+        self.mimic = mimic
+        self.safety_controller = safety_controller
+        self.calibration = calibration
+        self.extensions_if_any = extensions  # None: made on first use (lazy_lists)
+        self.sensors_if_any = sensors
+        self.source = source
+        self.extras = extras
+        self._robot = None
 
     @property
     def is_movable(self) -> bool:
@@ -242,6 +275,39 @@ class Joint:
     def effective_axis(self) -> Vec3:
         """Return the axis URDF consumers use: the given one or (1, 0, 0)."""
         return self.axis if self.axis is not None else (1.0, 0.0, 0.0)
+
+    if TYPE_CHECKING:
+        @property
+        def extensions_if_any(self) -> list[Extension] | None:
+            """Return the ``extensions`` list, or None if none was made yet (lazy_lists)."""
+
+        @extensions_if_any.setter
+        def extensions_if_any(self, value: list[Extension] | None) -> None:
+            """Set the ``extensions`` slot itself (None: made on first use)."""
+
+        @property
+        def sensors_if_any(self) -> list[Sensor] | None:
+            """Return the ``sensors`` list, or None if none was made yet (lazy_lists)."""
+
+        @sensors_if_any.setter
+        def sensors_if_any(self, value: list[Sensor] | None) -> None:
+            """Set the ``sensors`` slot itself (None: made on first use)."""
+
+        @property
+        def name_slot(self) -> str:
+            """Return the name's slot, set without renaming (constructors)."""
+
+        @name_slot.setter
+        def name_slot(self, value: str) -> None:
+            """Set the name's slot itself."""
+
+        @property
+        def type_slot(self) -> JointType:
+            """Return the type's slot, set without coercing (constructors)."""
+
+        @type_slot.setter
+        def type_slot(self, value: JointType) -> None:
+            """Set the type's slot itself."""
 
     def add_sensor(self, sensor: Sensor) -> Joint:
         """Attach a sensor that lives in a joint (ForceTorque) and return the joint."""
@@ -276,5 +342,8 @@ class _TypeField:
         self._set(joint, kind)
 
 
+setattr(Joint, 'type_slot', Joint.__dict__['type'])
 Joint.type = _TypeField(Joint.__dict__['type'])  # type: ignore[assignment,misc]
+setattr(Joint, 'name_slot', Joint.__dict__['name'])  # the slot, also under this name
 own_names(Joint, 'joint')
+lazy_lists(Joint, 'extensions', 'sensors')

@@ -23,6 +23,7 @@ from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import ModelTypeError, SourceLocation
 from urdfgenpy_ros.geometry import Geometry, IDENTITY, Origin
 from urdfgenpy_ros.inertial import Inertial
+from urdfgenpy_ros.lazy_lists import lazy_lists
 from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.owned_names import own_names
 from urdfgenpy_ros.preserved import Preserved
@@ -62,7 +63,7 @@ Shape = Visual | Collision
 """A visual or a collision: a geometry placed at an origin in its link."""
 
 
-@dataclass(slots=True)
+@dataclass(slots=True, init=False)
 class Link:
     """
     A rigid body: any number of visuals and collisions, and at most one inertial.
@@ -82,9 +83,47 @@ class Link:
     extras: Preserved | None = field(default=None, compare=False, repr=False)
     _robot: RobotModel | None = field(default=None, init=False, compare=False, repr=False)
 
-    def __post_init__(self) -> None:
-        """Check the name."""
-        checks.name('link', self.name)
+    def __init__(self, name: str, *, visuals: list[Visual] | None = None,
+                 collisions: list[Collision] | None = None, inertial: Inertial | None = None,
+                 extensions: list[Extension] | None = None, sensors: list[Sensor] | None = None,
+                 source: SourceLocation | None = None, extras: Preserved | None = None) -> None:
+        """Check the name; lists not given start empty."""
+        if type(name) is not str or not name or name.isspace():
+            checks.name('link', name)
+        self.name_slot = name  # the slot itself: a new link belongs to no robot yet
+        self.visuals = [] if visuals is None else visuals
+        self.collisions = [] if collisions is None else collisions
+        self.inertial = inertial
+        self.extensions_if_any = extensions  # None: made on first use (lazy_lists)
+        self.sensors_if_any = sensors
+        self.source = source
+        self.extras = extras
+        self._robot = None
+
+    if TYPE_CHECKING:
+        @property
+        def extensions_if_any(self) -> list[Extension] | None:
+            """Return the ``extensions`` list, or None if none was made yet (lazy_lists)."""
+
+        @extensions_if_any.setter
+        def extensions_if_any(self, value: list[Extension] | None) -> None:
+            """Set the ``extensions`` slot itself (None: made on first use)."""
+
+        @property
+        def sensors_if_any(self) -> list[Sensor] | None:
+            """Return the ``sensors`` list, or None if none was made yet (lazy_lists)."""
+
+        @sensors_if_any.setter
+        def sensors_if_any(self, value: list[Sensor] | None) -> None:
+            """Set the ``sensors`` slot itself (None: made on first use)."""
+
+        @property
+        def name_slot(self) -> str:
+            """Return the name's slot, set without renaming (constructors)."""
+
+        @name_slot.setter
+        def name_slot(self, value: str) -> None:
+            """Set the name's slot itself."""
 
     def add_sensor(self, sensor: Sensor) -> Link:
         """Attach a simulated sensor (Camera, Lidar, Imu) and return the link."""
@@ -132,4 +171,6 @@ class Link:
         return self.collisions[0] if self.collisions else None
 
 
+setattr(Link, 'name_slot', Link.__dict__['name'])  # the slot, also under this name
 own_names(Link, 'link')
+lazy_lists(Link, 'extensions', 'sensors')

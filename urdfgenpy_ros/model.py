@@ -89,36 +89,40 @@ class RobotModel:
 
     def add_link(self, link: Link) -> Self:
         """Add a link and return the robot; its name must be new."""
-        if not isinstance(link, Link):
+        if type(link) is not Link and not isinstance(link, Link):
             raise ModelTypeError(f'robot {self.name!r}: add_link() takes a Link, '
                                  f'got {type(link).__name__}')
-        if link.name in self._links:
-            raise ModelError(f'robot {self.name!r}: link {link.name!r} already exists '
+        links = self._links
+        name = link.name
+        if name in links:
+            raise ModelError(f'robot {self.name!r}: link {name!r} already exists '
                              '(link names must be unique: rename one)')
-        self._links[link.name] = link
+        links[name] = link
         link._robot = self
         return self
 
     def add_joint(self, joint: Joint) -> Self:
         """Add a joint between two links already added and return the robot."""
-        if not isinstance(joint, Joint):
+        if type(joint) is not Joint and not isinstance(joint, Joint):
             raise ModelTypeError(f'robot {self.name!r}: add_joint() takes a Joint, '
                                  f'got {type(joint).__name__}')
-        if joint.name in self._joints:
-            raise ModelError(f'robot {self.name!r}: joint {joint.name!r} already exists '
+        joints = self._joints
+        name = joint.name
+        if name in joints:
+            raise ModelError(f'robot {self.name!r}: joint {name!r} already exists '
                              '(joint names must be unique: rename one)')
-        if checks.enabled():
-            for role in ('parent', 'child'):
-                link = getattr(joint, role)
-                if link not in self._links:
+        links = self._links
+        parent, child = joint.parent, joint.child
+        if (parent not in links or child not in links or parent == child) and checks.is_on():
+            for role, link in (('parent', parent), ('child', child)):
+                if link not in links:
                     raise ModelError(
-                        f'joint {joint.name!r}: {role} link {link!r} is not in robot '
-                        f'{self.name!r}{_suggest(link, self._links)} '
+                        f'joint {name!r}: {role} link {link!r} is not in robot '
+                        f'{self.name!r}{_suggest(link, links)} '
                         '(add the link before the joint)')
-            if joint.parent == joint.child:
-                raise ModelError(f'joint {joint.name!r}: parent and child are both '
-                                 f'{joint.child!r} (a joint connects two different links)')
-        self._joints[joint.name] = joint
+            raise ModelError(f'joint {name!r}: parent and child are both '
+                             f'{child!r} (a joint connects two different links)')
+        joints[name] = joint
         joint._robot = self
         return self
 

@@ -38,6 +38,7 @@ from urdfgenpy_ros.formats._xml import fragment, write_text, xml_bytes
 from urdfgenpy_ros.formats.sdf import sensor_element
 from urdfgenpy_ros.formats.urdf_edits import block_edited, is_as_read, owners_of_blocks
 from urdfgenpy_ros.formats.urdf_element import ElementWriter
+from urdfgenpy_ros.formats.urdf_fresh import write_new_robot
 from urdfgenpy_ros.formats.urdf_schema import MATERIAL, OF_CLASS
 from urdfgenpy_ros.formats.urdf_splice import in_quotes, prefixed, Splice
 from urdfgenpy_ros.joint import Joint
@@ -172,6 +173,8 @@ class UrdfWriter(ElementWriter):
         unit = self.unit
         fresh = '\n' + unit
         checked = self.checked
+        if document is None:  # built in Python: no source order to keep, one pass
+            return write_new_robot(self, _sensor_block)
         items = [(fresh, text) for text in self.prologue()]
         materials, links, joints = self.materials, robot.links, robot.joints
         written: set[int] = set()
@@ -199,11 +202,13 @@ class UrdfWriter(ElementWriter):
         items += [(fresh, checked(item, partial(self.object_text, item, unit)))
                   for item in links if id(item) not in written]
         owners: list[Link | Joint] = [*links, *joints]
-        for owner in owners:
-            items += [(fresh, self.write_item(block, unit, owner)) for block in owner.extensions
-                      if id(block) not in written]
-            items += [(fresh, self.write_extension(_sensor_block(sensor, owner.name), unit))
-                      for sensor in owner.sensors]
+        for owner in owners:  # most hold neither, and have no list made (lazy_lists)
+            if owner.extensions_if_any:
+                items += [(fresh, self.write_item(block, unit, owner))
+                          for block in owner.extensions if id(block) not in written]
+            if owner.sensors_if_any:
+                items += [(fresh, self.write_extension(_sensor_block(sensor, owner.name), unit))
+                          for sensor in owner.sensors]
         items += [(fresh, checked(item, partial(self.object_text, item, unit)))
                   for item in joints if id(item) not in written]
         items += [(fresh, self.write_item(block, unit)) for block in self.extensions
@@ -254,7 +259,7 @@ class UrdfWriter(ElementWriter):
     def _all_extensions(self) -> list[Extension]:
         blocks = list(self.extensions)
         for owner in self._owners_of_blocks():
-            blocks.extend(owner.extensions)
+            blocks.extend(owner.extensions_if_any or ())  # makes no empty list
         return blocks
 
     def write_item(self, item: object, pad: str, owner: Link | Joint | None = None) -> str:

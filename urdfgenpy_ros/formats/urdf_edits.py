@@ -56,7 +56,7 @@ def block_edited(document: SourceDocument, block: Extension) -> bool:
 def owners_of_blocks(robot: Robot) -> dict[int, Link | Joint]:
     """Return the link or joint holding each block, by the block's id."""
     holders: list[Link | Joint] = [*robot.links, *robot.joints]
-    return {id(block): owner for owner in holders for block in owner.extensions}
+    return {id(block): owner for owner in holders for block in owner.extensions_if_any or ()}
 
 
 def is_as_read(robot: Robot) -> bool:
@@ -69,7 +69,8 @@ def is_as_read(robot: Robot) -> bool:
         return False
     owners = owners_of_blocks(robot)
     holders: list[Link | Joint] = [*robot.links, *robot.joints]
-    blocks = [*robot.extensions, *(block for owner in holders for block in owner.extensions)]
+    blocks = [*robot.extensions,  # extensions_if_any: no empty list made (lazy_lists)
+              *(block for owner in holders for block in owner.extensions_if_any or ())]
     items: list[Any] = [*robot.materials, *robot.links, *robot.joints, *blocks]
     read = [item for item in document.order
             if isinstance(item, (Material, Link, Joint, Extension))]
@@ -83,4 +84,4 @@ def is_as_read(robot: Robot) -> bool:
                 return False
         elif is_edited(item):
             return False
-    return not any(owner.sensors for owner in holders)
+    return not any(owner.sensors_if_any for owner in holders)

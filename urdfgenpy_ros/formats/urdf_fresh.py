@@ -18,52 +18,102 @@ Fast writers for elements built in Python, generated from the URDF declarations.
 
 For each declared element this module compiles one function that writes an object which
 was not read from a file: the same output as the general writer's, without its loops
-over the declaration. The general writer calls them; nothing else does.
+over the declaration. The general writer calls them, and :func:`write_new_robot` for a
+robot that was not read from a file; nothing else does.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import partial
 from typing import Any
 
 from urdfgenpy_ros.formats._xml import esc
 from urdfgenpy_ros.formats.urdf_schema import Element, ELEMENTS, FLOAT, OF_CLASS, TEXT
+from urdfgenpy_ros.joint import JointType
 
 Writer = Callable[[Any, Any, str], str]
+_LEAVES = ('origin',)  # one-line frozen children written in place, not by a call
 
 
-def _attributes(element: Element, owner: str, lines: list[str], indent: str) -> None:
-    """Emit code that appends the attributes of ``element`` (fields of ``owner``) to ``a``."""
-    for attr in element.attrs:
-        lines.append(f'{indent}v = {owner}.{attr.field}')
+def _attributes(element: Element, owner: str, lines: list[str], indent: str,
+                target: str = 'a') -> None:
+    """
+    Emit code that sets ``target`` to the attributes of ``element`` (fields of ``owner``).
+
+    The usual case is one f-string: every attribute that defaults to None is None, the
+    others are set, and names are plain strings that need no escaping. Anything else
+    takes the attribute-by-attribute path, which writes what it finds.
+    """
+    attrs = element.attrs
+    if not attrs:
+        lines.append(f"{indent}{target} = ''")
+        return
+    tests, pieces, slow = [], [], []
+    for number, attr in enumerate(attrs):
+        var = f'v{number}'
+        expression = _FIELD_EXPRESSIONS.get((element.tag, attr.field), '{owner}.{field}')
+        lines.append(f'{indent}{var} = ' + expression.format(owner=owner, field=attr.field))
         if attr.kind == TEXT:
-            skip = " and v != ''" if attr.default == '' else ''
-            lines.append(f'{indent}if v is not None{skip}:')
-            lines.append(f'{indent}    a += \' {attr.name}="\' + esc(str(v)) + \'"\'')
+            skip = f" and {var} != ''" if attr.default == '' else ''
+            slow.append(f'if {var} is not None{skip}:')
+            slow.append(f'    t = {var} if type({var}) is str else text({var})')
+            slow.append("    if '&' in t or '<' in t or '>' in t or '\"' in t:")
+            slow.append('        t = esc(t)')
+            slow.append(f'    {target} += \' {attr.name}="\' + t + \'"\'')
         else:
-            text = 'number(v)' if attr.kind == FLOAT else 'vector(v)'
+            text = 'number' if attr.kind == FLOAT else 'vector'
             unless = f' and {owner}.{attr.unless} is None' if attr.unless else ''
-            lines.append(f'{indent}if v is not None{unless}:')
-            lines.append(f'{indent}    n = known(v)')
-            lines.append(f'{indent}    a += \' {attr.name}="\' + (n or {text}) + \'"\'')
+            slow.append(f'if {var} is not None{unless}:')
+            slow.append(f'    {target} += \' {attr.name}="\' + (known({var}) or {text}({var})) + '
+                        '\'"\'')
+        if attr.default is None:  # usually left out: the one-string path while it is
+            tests.append(f'{var} is None')
+        elif attr.kind == TEXT:
+            tests.append(f'type({var}) is str' + (f" and {var} != ''" if attr.default == ''
+                                                  else ''))
+            tests += [f'{char!r} not in {var}' for char in '&<>"']
+            pieces.append(f' {attr.name}="{{{var}}}"')
+        else:
+            text = 'number' if attr.kind == FLOAT else 'vector'
+            tests.append(f'{var} is not None')
+            pieces.append(f' {attr.name}="{{known({var}) or {text}({var})}}"')
+    lines.append(f"{indent}if {' and '.join(tests)}:")
+    lines.append(f"{indent}    {target} = f'{''.join(pieces)}'" if pieces else
+                 f"{indent}    {target} = ''")
+    lines.append(f'{indent}else:')
+    lines.append(f"{indent}    {target} = ''")
+    lines += [f'{indent}    {line}' for line in slow]
+
+
+# How to read an attribute that is not a plain field: a box's size is its three lengths;
+# a joint's type is a JointType, whose text is its value.
+_FIELD_EXPRESSIONS = {('box', 'size'): '({owner}.length, {owner}.width, {owner}.height)',
+                      ('joint', 'type'): 'TYPES.get(w := {owner}.type, w)'}
+
+
+def _leaf(element: Element, owner: str, lines: list[str], indent: str, kids: str) -> None:
+    """Emit code that appends a one-line child element ``<tag .../>`` of ``owner`` to ``kids``."""
+    _attributes(element, owner, lines, indent, 'c')
+    lines.append(f"{indent}{kids}.append(f'<{element.tag}{{c}}/>')")
 
 
 def _body(element: Element, lines: list[str], indent: str, depth: int) -> None:
     """Emit code that writes ``element`` of ``item`` into ``t`` at indentation ``p{depth}``."""
     pad, inner = f'p{depth}', f'p{depth + 1}'
-    lines.append(f"{indent}a = ''")
     _attributes(element, 'item', lines, indent)
     if not element.children:
-        lines.append(f"{indent}t = '<{element.tag}' + a + '/>'")
+        lines.append(f"{indent}t = f'<{element.tag}{{a}}/>'")
         return
     lines.append(f'{indent}{inner} = {pad} + unit')
     lines.append(f'{indent}k{depth} = []')
     kids = f'k{depth}'
     for child in element.children:
         tag = child.tags[0]
-        if child.many:
+        if child.many:  # written by the writer of each part's class, unless read
             lines.append(f'{indent}for part in item.{child.field}:')
-            lines.append(f'{indent}    {kids}.append(obj(part, {inner}))')
+            lines.append(f'{indent}    {kids}.append(obj(part, {inner}) if part.extras is not '
+                         f'None else FRESH[type(part)](writer, part, {inner}))')
         elif child.field is None:
             inline = ELEMENTS[tag]
             body = indent
@@ -73,41 +123,47 @@ def _body(element: Element, lines: list[str], indent: str, depth: int) -> None:
                 body = indent + '    '
             if inline.children:  # <geometry>: a wrapper around the shape object
                 shape = inline.children[0].field
-                lines.append(f"{body}{kids}.append('<{tag}>\\n' + {inner} + unit + "
-                             f"obj(item.{shape}, {inner} + unit) + '\\n' + {inner} + "
-                             f"'</{tag}>')")
+                lines.append(f'{body}part = item.{shape}')
+                lines.append(f'{body}g = {inner} + unit')
+                lines.append(f'{body}x = obj(part, g) if part.extras is not None else '
+                             'FRESH[type(part)](writer, part, g)')
+                lines.append(f"{body}{kids}.append(f'<{tag}>\\n{{g}}{{x}}\\n{{{inner}}}</{tag}>')")
             else:
-                saved = len(lines)
-                lines.append(f'{body}b = a')
-                _attributes(inline, 'item', lines, body)
-                lines[saved + 1:] = [line.replace(' a +=', ' c +=') for line in
-                                     lines[saved + 1:]]
-                lines[saved] = f"{body}c = ''"
-                lines.append(f"{body}{kids}.append('<{tag}' + c + '/>')")
+                _leaf(inline, 'item', lines, body, kids)
         else:
             lines.append(f'{indent}part = item.{child.field}')
-            if child.field == 'origin':
-                lines.append(f'{indent}if part is not None and (part.extras is not None or '
-                             'not part.is_identity):')
-            else:
+            if child.field == 'origin':  # left out while it neither moves nor turns
                 lines.append(f'{indent}if part is not None:')
-            if child.field == 'inertial':
+                lines.append(f'{indent}    if part.extras is not None:')
+                lines.append(f'{indent}        {kids}.append(obj(part, {inner}))')
+                lines.append(f'{indent}    elif part.xyz != ZERO or part.rpy != ZERO:')
+                _leaf(ELEMENTS['origin'], 'part', lines, indent + '        ', kids)
+                continue
+            lines.append(f'{indent}if part is not None:')
+            if child.field == 'inertial':  # a hook: the Xacro writer writes a macro call
                 call = f'writer.write_inertial(part, {inner}, item, None)'
             elif child.field == 'material':
                 call = f'writer.visual_material(part, {inner}, None)'
             else:
-                call = f'obj(part, {inner})'
+                call = (f'obj(part, {inner}) if part.extras is not None else '
+                        f'FRESH[type(part)](writer, part, {inner})')
             lines.append(f'{indent}    {kids}.append({call})')
     lines.append(f'{indent}if {kids}:')
     lines.append(f"{indent}    s = '\\n' + {inner}")
-    lines.append(f"{indent}    t = '<{element.tag}' + a + '>' + s + s.join({kids}) + '\\n' + "
-                 f"{pad} + '</{element.tag}>'")
+    lines.append(f"{indent}    t = f'<{element.tag}{{a}}>{{s}}{{s.join({kids})}}\\n{{{pad}}}"
+                 f"</{element.tag}>'")
     lines.append(f'{indent}else:')
-    lines.append(f"{indent}    t = '<{element.tag}' + a + '/>'")
+    lines.append(f"{indent}    t = f'<{element.tag}{{a}}/>'")
 
 
 _BINDINGS = {'unit': 'writer.unit', 'number': 'writer.number', 'vector': 'writer.vector',
              'known': 'writer.known_number', 'obj': 'writer.object_text'}
+_JOINT_TYPES: dict[Any, str] = {kind: kind.value for kind in JointType}
+
+
+def _text(value: Any) -> str:
+    """Return the text of a TEXT attribute that is not a ``str`` (a JointType, say)."""
+    return _JOINT_TYPES[value] if type(value) is JointType else str(value)
 
 
 def _compile(element: Element) -> Writer:
@@ -119,10 +175,71 @@ def _compile(element: Element) -> Writer:
               if f'{name}(' in used or f'+ {name}' in used]  # only what the body uses
     lines += body
     lines.append('    return t')
-    namespace: dict[str, Any] = {'esc': esc}
+    namespace: dict[str, Any] = {'esc': esc, 'text': _text, 'FRESH': FRESH,
+                                 'ZERO': (0.0, 0.0, 0.0), 'TYPES': _JOINT_TYPES}
     exec(compile('\n'.join(lines), f'<fresh {element.tag}>', 'exec'), namespace)  # noqa: S102
     return namespace['fresh']
 
 
-FRESH: dict[type, Writer] = {cls: _compile(element) for cls, element in OF_CLASS.items()}
+FRESH: dict[type, Writer] = {}
 """The fast writer of each model class, for objects built in Python."""
+FRESH.update({cls: _compile(element) for cls, element in OF_CLASS.items()})
+
+
+def write_new_robot(writer: Any, sensor_block: Callable[[Any, str], Any]) -> str:
+    """
+    Return the ``<robot>`` element of a robot not read from a file, in one pass.
+
+    The same text as the general writer's (:meth:`.UrdfWriter.write_robot`) for such a
+    robot: materials, links, the blocks and sensors of links then joints, joints, the
+    robot's blocks, each on a new line; ``sensor_block`` gives the ``<gazebo>`` element
+    that carries a sensor. A link or joint that fails to write is written again through
+    ``writer.checked``, which names a value of the wrong kind in one line (a bug of ours
+    keeps its traceback).
+    """
+    robot = writer.robot
+    unit = writer.unit
+    fresh = '\n' + unit
+    checked = writer.checked
+    parts = ['']  # the start tag, once the rest is written
+    append = parts.append
+    for text in writer.prologue():
+        append(fresh)
+        append(text)
+    for material in writer.materials:
+        append(fresh)
+        append(checked(material, partial(writer.write_item, material, unit)))
+    links, joints = robot.links, robot.joints
+    _write_each(writer, links, fresh, append)
+    for owners in (links, joints):
+        for owner in owners:  # most hold neither list (lazy_lists)
+            if owner.extensions_if_any:
+                for block in owner.extensions:
+                    append(fresh)
+                    append(writer.write_item(block, unit, owner))
+            if owner.sensors_if_any:
+                for sensor in owner.sensors:
+                    append(fresh)
+                    append(writer.write_extension(sensor_block(sensor, owner.name), unit))
+    _write_each(writer, joints, fresh, append)
+    for block in writer.extensions:
+        append(fresh)
+        append(writer.write_item(block, unit))
+    name, attrs = writer._opening()
+    if len(parts) == 1:
+        return f'<{name}{attrs}/>'
+    parts[0] = f'<{name}{attrs}>'
+    append(f'\n</{name}>')
+    return ''.join(parts)
+
+
+def _write_each(writer: Any, items: list[Any], fresh: str, append: Callable[[str], None]) -> None:
+    """Append each link or joint on a new line; one that fails is written again, checked."""
+    unit = writer.unit
+    text_of = writer.object_text
+    for item in items:
+        append(fresh)
+        try:
+            append(text_of(item, unit))
+        except Exception:  # noqa: B902 - written again to name the value, or to re-raise
+            append(writer.checked(item, partial(text_of, item, unit)))

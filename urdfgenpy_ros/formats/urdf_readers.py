@@ -35,6 +35,7 @@ from urdfgenpy_ros.formats.urdf_schema import (
     Attr, DEFAULT_CHILD, Element, ELEMENTS, FLOAT, GEOMETRY, MAY_BE_UNUSABLE, OF_CLASS,
     plan, REQUIRED, TEXT, unusable, VEC3)
 from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.lazy_lists import LazyList
 from urdfgenpy_ros.preserved import Preserved
 
 Reader = Callable[[Any, Any], Any]
@@ -196,6 +197,8 @@ def _build(code: _Code, element: Element, indent: int) -> None:
             value = code.default(name)
         if frozen:
             code.add(indent, f'{code.const(getattr(cls, name).__set__)}(o, {value})')
+        elif isinstance(cls.__dict__.get(name), LazyList):  # the list is made on first use
+            code.add(indent, f'o.{name}_if_any = None')
         else:
             code.add(indent, f'o.{name} = {value}')
     code.add(indent, 'return o')
