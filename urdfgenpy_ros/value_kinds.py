@@ -68,6 +68,9 @@ def _expected(annotation: str, value: Any) -> str | None:
         return None if isinstance(value, str) else 'a string'
     if kinds & _TUPLES or any(kind.startswith('tuple[') for kind in kinds):
         ok = isinstance(value, tuple) and all(_number(item) for item in value)
+        length = 3 if 'Vec3' in kinds else 4 if kinds & {'Vec4', 'Rgba'} else len(value)
+        if ok and len(value) != length:
+            return f'{length} numbers'
         return None if ok else 'a tuple of numbers'
     if any(kind.startswith('list[') for kind in kinds):
         return None if isinstance(value, list) else 'a list'

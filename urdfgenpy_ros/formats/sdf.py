@@ -264,6 +264,9 @@ def write_sdf(robot: Robot, path: str | PathLike[str] | None = None,
         from urdfgenpy_ros.lumping import lump_fixed_joints
         robot = lump_fixed_joints(robot)
     root = etree.Element('sdf', version=SDF_VERSION)
+    if not isinstance(robot.name, str) or not robot.name:
+        raise ModelError(f'robot: cannot be written, its name is {robot.name!r}: give it '
+                         "one, e.g. robot.name = 'my_robot'")
     model = etree.SubElement(root, 'model', name=robot.name)
     parent_joint = {joint.child: joint for joint in robot.joints}
     # SDF frames share one namespace: a joint named like a link (URDF allows it) is renamed.

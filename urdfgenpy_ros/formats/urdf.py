@@ -153,6 +153,9 @@ class UrdfWriter(ElementWriter):
     def robot_attrs(self) -> list[tuple[str, str]]:
         """Return the root element's attributes (name, text)."""
         robot = self.robot
+        if not isinstance(robot.name, str) or not robot.name:
+            raise ModelError(f'robot: cannot be written, its name is {robot.name!r}: give it '
+                             "one, e.g. robot.name = 'my_robot'")
         version = robot.urdf_version
         if version is None and robot.extras is None:  # built here: declare what it uses
             needed = needed_version(robot)

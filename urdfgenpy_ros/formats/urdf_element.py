@@ -34,8 +34,8 @@ from urdfgenpy_ros.formats._xml import esc, without_declared
 from urdfgenpy_ros.formats.urdf_edits import is_edited
 from urdfgenpy_ros.formats.urdf_fresh import FRESH
 from urdfgenpy_ros.formats.urdf_schema import (
-    Child, Element, ELEMENTS, FLOAT, INERTIAL, MATERIAL, OF_CLASS, REQUIRED, slot_of, SLOTS,
-    TEXT)
+    Attr, Child, Element, ELEMENTS, FLOAT, INERTIAL, MATERIAL, OF_CLASS, REQUIRED, slot_of,
+    SLOTS, TEXT, VEC3, VEC4)
 from urdfgenpy_ros.formats.urdf_splice import in_quotes, prefixed, Splice
 from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Origin, quaternion_rpy, Sphere
 from urdfgenpy_ros.material import Material
@@ -47,6 +47,15 @@ if TYPE_CHECKING:
 
 _LEAVES = frozenset((Origin, Box, Cylinder, Sphere, Capsule, Mesh))
 _ATTRS = {tag: {attr.name: attr for attr in element.attrs} for tag, element in ELEMENTS.items()}
+
+
+_LENGTHS = {VEC3: 3, VEC4: 4}
+
+
+def _not_left_out(attr: Attr, value: Any) -> None:
+    """Raise when a value a file must give is None (``inertial.mass = None``)."""
+    if value is None and attr.default is REQUIRED and not attr.unless:
+        raise TypeError(f'{attr.field} is None, and <{attr.name}> is required')
 
 
 def _reads_as(kind: str, text: str, value: Any) -> bool:
@@ -81,7 +90,11 @@ class ElementWriter:
         """Return the URDF text of a value: exact, shortest numbers."""
         if kind == TEXT:
             return str(value)
-        return self.number(value) if kind == FLOAT else self.vector(value)
+        if kind == FLOAT:
+            return self.number(value)
+        if len(value) != _LENGTHS[kind]:  # axis = (0, 1): the user's, named by wrong_kind
+            raise ValueError(f'{len(value)} numbers for a {kind}')
+        return self.vector(value)
 
     def number(self, value: float) -> str:
         """Return the exact text of a float (cached: numbers repeat a lot)."""
@@ -224,6 +237,7 @@ class ElementWriter:
                 value = getattr(item, attr.field)
                 if value is None or (value == '' and attr.default == '') or (
                         attr.unless and getattr(item, attr.unless) is not None):
+                    _not_left_out(attr, value)
                     continue
                 given.append((attr.name, self.text(attr.kind, value)))
             return self.written(given)
@@ -237,6 +251,7 @@ class ElementWriter:
             done.add(name)
             value = getattr(item, known.field)
             if value is None or (known.unless and getattr(item, known.unless) is not None):
+                _not_left_out(known, value)
                 continue
             if not _reads_as(known.kind, original, value):
                 original = self.text(known.kind, value)
@@ -247,6 +262,7 @@ class ElementWriter:
             value = getattr(item, attr.field)
             if value is None or (attr.default is not REQUIRED and value == attr.default) or (
                     attr.unless and getattr(item, attr.unless) is not None):
+                _not_left_out(attr, value)
                 continue
             given.append((attr.name, self.text(attr.kind, value)))
         if self.splice is not None:

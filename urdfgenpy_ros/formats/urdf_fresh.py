@@ -29,10 +29,12 @@ from functools import partial
 from typing import Any
 
 from urdfgenpy_ros.formats._xml import esc
-from urdfgenpy_ros.formats.urdf_schema import Element, ELEMENTS, FLOAT, OF_CLASS, TEXT
+from urdfgenpy_ros.formats.urdf_schema import (
+    Element, ELEMENTS, FLOAT, OF_CLASS, REQUIRED, TEXT, VEC3, VEC4)
 from urdfgenpy_ros.joint import JointType
 
 Writer = Callable[[Any, Any, str], str]
+_LENGTHS = {VEC3: 3, VEC4: 4}
 _LEAVES = ('origin',)  # one-line frozen children written in place, not by a call
 
 
@@ -65,8 +67,13 @@ def _attributes(element: Element, owner: str, lines: list[str], indent: str,
             text = 'number' if attr.kind == FLOAT else 'vector'
             unless = f' and {owner}.{attr.unless} is None' if attr.unless else ''
             slow.append(f'if {var} is not None{unless}:')
+            if attr.kind != FLOAT:  # axis = (0, 1): the user's, named by wrong_kind
+                slow.append(f'    if len({var}) != {_LENGTHS[attr.kind]}: '
+                            "raise ValueError('a vector of another length')")
             slow.append(f'    {target} += \' {attr.name}="\' + (known({var}) or {text}({var})) + '
                         '\'"\'')
+            if attr.default is REQUIRED and not attr.unless:  # inertial.mass = None
+                slow.append(f"elif {var} is None: raise TypeError('{attr.field} is required')")
         if attr.default is None:  # usually left out: the one-string path while it is
             tests.append(f'{var} is None')
         elif attr.kind == TEXT:
@@ -77,6 +84,8 @@ def _attributes(element: Element, owner: str, lines: list[str], indent: str,
         else:
             text = 'number' if attr.kind == FLOAT else 'vector'
             tests.append(f'{var} is not None')
+            if attr.kind != FLOAT:
+                tests.append(f'len({var}) == {_LENGTHS[attr.kind]}')
             pieces.append(f' {attr.name}="{{known({var}) or {text}({var})}}"')
     lines.append(f"{indent}if {' and '.join(tests)}:")
     lines.append(f"{indent}    {target} = f'{''.join(pieces)}'" if pieces else
