@@ -415,7 +415,11 @@ def main(args: list[str] | None = None) -> int:
             if node.gui is not None:
                 node.gui.close()
             node.destroy_node()
-        rclpy.try_shutdown()
+        try:
+            rclpy.try_shutdown()
+        except rclpy_implementation.RCLError:
+            if rclpy.ok():
+                raise  # Ctrl-C's handler shut the context down between check and shutdown
     return 0
 
 
