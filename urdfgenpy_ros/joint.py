@@ -25,7 +25,7 @@ from urdfgenpy_ros import checks
 from urdfgenpy_ros.checks import Vec3
 from urdfgenpy_ros.errors import ModelError, SourceLocation
 from urdfgenpy_ros.geometry import IDENTITY, Origin
-from urdfgenpy_ros.lazy_lists import lazy_lists
+from urdfgenpy_ros.lazy_lists import lazy_lists, LazySlots
 from urdfgenpy_ros.owned_names import own_names
 from urdfgenpy_ros.preserved import Preserved
 
@@ -196,7 +196,7 @@ class JointCalibration:
 
 
 @dataclass(slots=True, init=False)
-class Joint:
+class Joint(LazySlots):
     """
     A joint from ``parent`` to ``child`` link, placed at ``origin`` in the parent.
 
@@ -278,30 +278,6 @@ class Joint:
 
     if TYPE_CHECKING:
         @property
-        def extensions_if_any(self) -> list[Extension] | None:
-            """Return the ``extensions`` list, or None if none was made yet (lazy_lists)."""
-
-        @extensions_if_any.setter
-        def extensions_if_any(self, value: list[Extension] | None) -> None:
-            """Set the ``extensions`` slot itself (None: made on first use)."""
-
-        @property
-        def sensors_if_any(self) -> list[Sensor] | None:
-            """Return the ``sensors`` list, or None if none was made yet (lazy_lists)."""
-
-        @sensors_if_any.setter
-        def sensors_if_any(self, value: list[Sensor] | None) -> None:
-            """Set the ``sensors`` slot itself (None: made on first use)."""
-
-        @property
-        def name_slot(self) -> str:
-            """Return the name's slot, set without renaming (constructors)."""
-
-        @name_slot.setter
-        def name_slot(self, value: str) -> None:
-            """Set the name's slot itself."""
-
-        @property
         def type_slot(self) -> JointType:
             """Return the type's slot, set without coercing (constructors)."""
 
@@ -343,7 +319,7 @@ class _TypeField:
 
 
 setattr(Joint, 'type_slot', Joint.__dict__['type'])
-Joint.type = _TypeField(Joint.__dict__['type'])  # type: ignore[assignment,misc]
+Joint.type = _TypeField(Joint.__dict__['type'])  # type: ignore[assignment]
 setattr(Joint, 'name_slot', Joint.__dict__['name'])  # the slot, also under this name
 own_names(Joint, 'joint')
 lazy_lists(Joint, 'extensions', 'sensors')

@@ -25,7 +25,43 @@ making a list: the list, or None (writers use it).
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.extensions import Extension
+    from urdfgenpy_ros.sensors import Sensor
+
+    class LazySlots:
+        """What lazy_lists and own_names give a link or joint, as type checkers see it."""
+
+        @property
+        def extensions_if_any(self) -> list[Extension] | None:
+            """Return the ``extensions`` list, or None if none was made yet."""
+
+        @extensions_if_any.setter
+        def extensions_if_any(self, value: list[Extension] | None) -> None:
+            """Set the ``extensions`` slot itself (None: made on first use)."""
+
+        @property
+        def sensors_if_any(self) -> list[Sensor] | None:
+            """Return the ``sensors`` list, or None if none was made yet."""
+
+        @sensors_if_any.setter
+        def sensors_if_any(self, value: list[Sensor] | None) -> None:
+            """Set the ``sensors`` slot itself (None: made on first use)."""
+
+        @property
+        def name_slot(self) -> str:
+            """Return the name's slot, set without renaming (constructors)."""
+
+        @name_slot.setter
+        def name_slot(self, value: str) -> None:
+            """Set the name's slot itself."""
+else:
+    class LazySlots:
+        """Nothing at run time: lazy_lists and own_names set these on the class itself."""
+
+        __slots__ = ()
 
 
 class LazyList:

@@ -23,7 +23,7 @@ from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import ModelTypeError, SourceLocation
 from urdfgenpy_ros.geometry import Geometry, IDENTITY, Origin
 from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.lazy_lists import lazy_lists
+from urdfgenpy_ros.lazy_lists import lazy_lists, LazySlots
 from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.owned_names import own_names
 from urdfgenpy_ros.preserved import Preserved
@@ -64,7 +64,7 @@ Shape = Visual | Collision
 
 
 @dataclass(slots=True, init=False)
-class Link:
+class Link(LazySlots):
     """
     A rigid body: any number of visuals and collisions, and at most one inertial.
 
@@ -99,31 +99,6 @@ class Link:
         self.source = source
         self.extras = extras
         self._robot = None
-
-    if TYPE_CHECKING:
-        @property
-        def extensions_if_any(self) -> list[Extension] | None:
-            """Return the ``extensions`` list, or None if none was made yet (lazy_lists)."""
-
-        @extensions_if_any.setter
-        def extensions_if_any(self, value: list[Extension] | None) -> None:
-            """Set the ``extensions`` slot itself (None: made on first use)."""
-
-        @property
-        def sensors_if_any(self) -> list[Sensor] | None:
-            """Return the ``sensors`` list, or None if none was made yet (lazy_lists)."""
-
-        @sensors_if_any.setter
-        def sensors_if_any(self, value: list[Sensor] | None) -> None:
-            """Set the ``sensors`` slot itself (None: made on first use)."""
-
-        @property
-        def name_slot(self) -> str:
-            """Return the name's slot, set without renaming (constructors)."""
-
-        @name_slot.setter
-        def name_slot(self, value: str) -> None:
-            """Set the name's slot itself."""
 
     def add_sensor(self, sensor: Sensor) -> Link:
         """Attach a simulated sensor (Camera, Lidar, Imu) and return the link."""
