@@ -30,14 +30,16 @@ BROKEN = {  # case: (the joint's parent, its child, the code)
 }
 
 
+@pytest.mark.parametrize('declaration', ['<?xml version="1.0"?>', '<?xml< version="1.0"?>'],
+                         ids=['declared', 'declaration malformed (a reader warning)'])
 @pytest.mark.parametrize('case', sorted(BROKEN))
 @pytest.mark.parametrize('suffix', ['sdf', 'xml'])
 def test_a_robot_that_is_not_one_tree_is_one_line_naming_file_line_and_code(
-        tmp_path: Path, case: str, suffix: str) -> None:
+        tmp_path: Path, case: str, suffix: str, declaration: str) -> None:
     parent, child, code = BROKEN[case]
     source = tmp_path / 'r.urdf'
     source.write_text(
-        '<?xml version="1.0"?>\n<robot name="r">\n  <link name="base"/>\n'
+        f'{declaration}\n<robot name="r">\n  <link name="base"/>\n'
         '  <link name="plate"/>\n'
         '  <joint name="j" type="fixed">\n'
         f'    <parent link="{parent}"/>\n    <child link="{child}"/>\n  </joint>\n</robot>\n')

@@ -65,10 +65,16 @@ def input_options(function: Callable[..., Any]) -> Callable[..., Any]:
     )(function)
 
 
-def read_robot(path: Path, arguments: tuple[str, ...], package_paths: tuple[Path, ...]
-               ) -> Robot:
+def read_robot(path: Path, arguments: tuple[str, ...], package_paths: tuple[Path, ...],
+               warn: bool = True) -> Robot:
     """Read ``path`` with its Xacro arguments; print the reader's warnings on stderr."""
     robot = load(path, parse_mappings(arguments), package_paths)
+    if warn:
+        say_read_warnings(robot)
+    return robot
+
+
+def say_read_warnings(robot: Robot) -> None:
+    """Print the reader's warnings about ``robot`` on stderr, one line each."""
     for warning in robot.read_warnings:
         click.echo(str(warning), err=True)
-    return robot

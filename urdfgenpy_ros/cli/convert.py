@@ -25,7 +25,7 @@ from pathlib import Path
 
 import click
 
-from urdfgenpy_ros.cli._options import input_options, read_robot
+from urdfgenpy_ros.cli._options import input_options, read_robot, say_read_warnings
 from urdfgenpy_ros.cli.convert_mjcf import mjcf_options, MjcfOptions, write_mjcf_file
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
@@ -97,7 +97,10 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
                                  '--merge-fixed or drop it')
     if target.exists() and not force:
         raise UrdfgenpyError(f'{target} exists: pass --force to overwrite it')
-    robot = read_robot(source, arguments, package_paths)
+    robot = read_robot(source, arguments, package_paths, warn=False)
+    if kind in ('sdf', 'mjcf'):  # not one tree: that one line, before any other word
+        _refuse_broken_tree(robot, target)
+    say_read_warnings(robot)
     if repair:
         for line in fix_for_output(robot, fix_radius):
             click.echo(line, err=True)
@@ -109,8 +112,6 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
         robot = robot.merge_fixed(keep, drop_frames=drop_frames)
     if lump_fixed:
         robot = lump_fixed_joints(robot)  # what to_sdf(lump_fixed=True) writes
-    if kind in ('sdf', 'mjcf'):
-        _refuse_broken_tree(robot, target)
     if kind == 'sdf':
         _refuse_invalid_inertia(robot, target)
         for note in (*mass_only_notes(robot), *default_mass_notes(robot)):
