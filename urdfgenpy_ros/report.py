@@ -92,12 +92,6 @@ def one_line(error: BaseException) -> str:
     return ' '.join(text.split()) or type(error).__name__
 
 
-def is_user_error(error: BaseException, front_end: FrontEnd | None = None) -> bool:
-    """Return whether ``error`` is a user's mistake (one line) rather than a bug (traceback)."""
-    extra = front_end.usage_errors if front_end is not None else ()
-    return isinstance(error, (*KNOWN_ERRORS, *extra))
-
-
 @contextmanager
 def boundary(front_end: FrontEnd) -> Iterator[None]:
     """
