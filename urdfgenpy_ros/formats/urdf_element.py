@@ -34,8 +34,8 @@ from urdfgenpy_ros.formats._xml import esc, without_declared
 from urdfgenpy_ros.formats.urdf_edits import is_edited
 from urdfgenpy_ros.formats.urdf_fresh import FRESH
 from urdfgenpy_ros.formats.urdf_schema import (
-    Attr, Child, Element, ELEMENTS, FLOAT, INERTIAL, MATERIAL, OF_CLASS, REQUIRED, slot_of,
-    SLOTS, TEXT, VEC3, VEC4)
+    Attr, Child, Element, ELEMENTS, FLOAT, INERTIAL, LENGTHS, MATERIAL, OF_CLASS, REQUIRED,
+    slot_of, SLOTS, TEXT)
 from urdfgenpy_ros.formats.urdf_splice import in_quotes, prefixed, Splice
 from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Origin, quaternion_rpy, Sphere
 from urdfgenpy_ros.material import Material
@@ -47,9 +47,6 @@ if TYPE_CHECKING:
 
 _LEAVES = frozenset((Origin, Box, Cylinder, Sphere, Capsule, Mesh))
 _ATTRS = {tag: {attr.name: attr for attr in element.attrs} for tag, element in ELEMENTS.items()}
-
-
-_LENGTHS = {VEC3: 3, VEC4: 4}
 
 
 def _not_left_out(attr: Attr, value: Any) -> None:
@@ -92,7 +89,7 @@ class ElementWriter:
             return str(value)
         if kind == FLOAT:
             return self.number(value)
-        if len(value) != _LENGTHS[kind]:  # axis = (0, 1): the user's, named by wrong_kind
+        if len(value) != LENGTHS[kind]:  # axis = (0, 1): the user's, named by wrong_kind
             raise ValueError(f'{len(value)} numbers for a {kind}')
         return self.vector(value)
 

@@ -30,11 +30,10 @@ from typing import Any
 
 from urdfgenpy_ros.formats._xml import esc
 from urdfgenpy_ros.formats.urdf_schema import (
-    Element, ELEMENTS, FLOAT, OF_CLASS, REQUIRED, TEXT, VEC3, VEC4)
+    Element, ELEMENTS, FLOAT, LENGTHS, OF_CLASS, REQUIRED, TEXT)
 from urdfgenpy_ros.joint import JointType
 
 Writer = Callable[[Any, Any, str], str]
-_LENGTHS = {VEC3: 3, VEC4: 4}
 _LEAVES = ('origin',)  # one-line frozen children written in place, not by a call
 
 
@@ -55,6 +54,7 @@ def _attributes(element: Element, owner: str, lines: list[str], indent: str,
     for number, attr in enumerate(attrs):
         var = f'v{number}'
         expression = _FIELD_EXPRESSIONS.get((element.tag, attr.field), '{owner}.{field}')
+        plain = (element.tag, attr.field) not in _FIELD_EXPRESSIONS  # a field as the user set it
         lines.append(f'{indent}{var} = ' + expression.format(owner=owner, field=attr.field))
         if attr.kind == TEXT:
             skip = f" and {var} != ''" if attr.default == '' else ''
@@ -67,8 +67,8 @@ def _attributes(element: Element, owner: str, lines: list[str], indent: str,
             text = 'number' if attr.kind == FLOAT else 'vector'
             unless = f' and {owner}.{attr.unless} is None' if attr.unless else ''
             slow.append(f'if {var} is not None{unless}:')
-            if attr.kind != FLOAT:  # axis = (0, 1): the user's, named by wrong_kind
-                slow.append(f'    if len({var}) != {_LENGTHS[attr.kind]}: '
+            if attr.kind != FLOAT and plain:  # axis = (0, 1): named by wrong_kind
+                slow.append(f'    if len({var}) != {LENGTHS[attr.kind]}: '
                             "raise ValueError('a vector of another length')")
             slow.append(f'    {target} += \' {attr.name}="\' + (known({var}) or {text}({var})) + '
                         '\'"\'')
@@ -84,8 +84,8 @@ def _attributes(element: Element, owner: str, lines: list[str], indent: str,
         else:
             text = 'number' if attr.kind == FLOAT else 'vector'
             tests.append(f'{var} is not None')
-            if attr.kind != FLOAT:
-                tests.append(f'len({var}) == {_LENGTHS[attr.kind]}')
+            if attr.kind != FLOAT and plain:
+                tests.append(f'len({var}) == {LENGTHS[attr.kind]}')
             pieces.append(f' {attr.name}="{{known({var}) or {text}({var})}}"')
     lines.append(f"{indent}if {' and '.join(tests)}:")
     lines.append(f"{indent}    {target} = f'{''.join(pieces)}'" if pieces else

@@ -43,6 +43,8 @@ class _Required:
 
 REQUIRED: Any = _Required()
 FLOAT, VEC3, VEC4, TEXT = 'float', 'vec3', 'vec4', 'text'
+LENGTHS = {VEC3: 3, VEC4: 4}
+"""How many numbers a vector attribute holds."""
 _ZERO3 = (0.0, 0.0, 0.0)
 
 
