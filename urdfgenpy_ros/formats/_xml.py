@@ -25,12 +25,21 @@ from typing import Any
 
 from lxml import etree
 
+from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.floats import fmt, fmt_vec
 
 __all__ = ['esc', 'escape_text', 'fmt', 'fmt_vec', 'fragment', 'INDENT', 'tag_end',
            'without_declared', 'write_text', 'xml_bytes']
 
 INDENT = '  '
+
+
+def robot_name(name: object) -> str:
+    """Return a robot's name to write; a model without one is the user's one-line error."""
+    if not isinstance(name, str) or not name:
+        raise ModelError(f'robot: cannot be written, its name is {name!r}: give it one, e.g. '
+                         "robot.name = 'my_robot'")
+    return name
 
 
 def esc(text: str) -> str:

@@ -32,7 +32,7 @@ from lxml import etree
 
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.floats import fmt, fmt_vec
-from urdfgenpy_ros.formats._xml import write_text
+from urdfgenpy_ros.formats._xml import robot_name, write_text
 from urdfgenpy_ros.formats.sdf_mass import mass_only
 from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Geometry, Mesh, Origin, Sphere
 from urdfgenpy_ros.joint import Joint, JointType
@@ -264,10 +264,7 @@ def write_sdf(robot: Robot, path: str | PathLike[str] | None = None,
         from urdfgenpy_ros.lumping import lump_fixed_joints
         robot = lump_fixed_joints(robot)
     root = etree.Element('sdf', version=SDF_VERSION)
-    if not isinstance(robot.name, str) or not robot.name:
-        raise ModelError(f'robot: cannot be written, its name is {robot.name!r}: give it '
-                         "one, e.g. robot.name = 'my_robot'")
-    model = etree.SubElement(root, 'model', name=robot.name)
+    model = etree.SubElement(root, 'model', name=robot_name(robot.name))
     parent_joint = {joint.child: joint for joint in robot.joints}
     # SDF frames share one namespace: a joint named like a link (URDF allows it) is renamed.
     link_names = {link.name for link in robot.links}

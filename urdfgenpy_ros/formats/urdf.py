@@ -34,7 +34,7 @@ from typing import Any, Callable, TYPE_CHECKING
 
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.extensions import Extension
-from urdfgenpy_ros.formats._xml import fragment, write_text, xml_bytes
+from urdfgenpy_ros.formats._xml import fragment, robot_name, write_text, xml_bytes
 from urdfgenpy_ros.formats.sdf import sensor_element
 from urdfgenpy_ros.formats.urdf_edits import block_edited, is_as_read, owners_of_blocks
 from urdfgenpy_ros.formats.urdf_element import ElementWriter
@@ -153,15 +153,12 @@ class UrdfWriter(ElementWriter):
     def robot_attrs(self) -> list[tuple[str, str]]:
         """Return the root element's attributes (name, text)."""
         robot = self.robot
-        if not isinstance(robot.name, str) or not robot.name:
-            raise ModelError(f'robot: cannot be written, its name is {robot.name!r}: give it '
-                             "one, e.g. robot.name = 'my_robot'")
+        name = robot_name(robot.name)
         version = robot.urdf_version
         if version is None and robot.extras is None:  # built here: declare what it uses
             needed = needed_version(robot)
             version = None if needed == (1, 0) else version_text(needed)
-        return [('name', robot.name)] if version is None else \
-            [('name', robot.name), ('version', version)]
+        return [('name', name)] if version is None else [('name', name), ('version', version)]
 
     def prologue(self) -> list[str]:
         """Return top-level elements written before everything else."""
