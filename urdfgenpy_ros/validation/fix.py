@@ -37,7 +37,7 @@ from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Sphere
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import Joint, JointLimit, JointType
-from urdfgenpy_ros.link import Link
+from urdfgenpy_ros.link import Collision, Link, Visual
 from urdfgenpy_ros.transforms import from_xyz_rpy
 
 if TYPE_CHECKING:
@@ -149,23 +149,31 @@ def _zero_limit(robot: Robot, joint: Link | Joint, defaults: dict[str, float]) -
 
 def _tensor(robot: Robot, link: Link | Joint, defaults: dict[str, float]) -> str | None:
     assert isinstance(link, Link)
-    inertial = link.inertial
-    if inertial is None or not inertial.mass > 0.0:
+    found = _solid_shape(link)
+    if found is None:
+        return None
+    kind, item = found
+    inertial, shape = link.inertial, item.geometry
+    assert inertial is not None
+    solid = Inertial.from_geometry(inertial.mass, shape)
+    values = _turned(solid, item.origin.rpy, inertial.origin.rpy)
+    inertial.ixx, inertial.ixy, inertial.ixz = values[0], values[1], values[2]
+    inertial.iyy, inertial.iyz, inertial.izz = values[3], values[4], values[5]
+    offset = math.dist(item.origin.xyz, inertial.origin.xyz)
+    note = (f"; its centre of mass is {offset:.3g} m from the shape's centre"
+            if offset > 1e-9 else '')
+    return (f'inertia replaced by that of its {kind} {type(shape).__name__.lower()}'
+            f' with mass {fmt(inertial.mass)} (a solid of uniform density: check it){note}')
+
+
+def _solid_shape(link: Link) -> tuple[str, Visual | Collision] | None:
+    """Return the first collision (else visual) a tensor can be taken from, with its kind."""
+    if link.inertial is None or not link.inertial.mass > 0.0:
         return None
     for kind, items in (('collision', link.collisions), ('visual', link.visuals)):
         for item in items:
-            shape = item.geometry
-            if isinstance(shape, (Box, Cylinder, Sphere, Capsule)):
-                solid = Inertial.from_geometry(inertial.mass, shape)
-                values = _turned(solid, item.origin.rpy, inertial.origin.rpy)
-                inertial.ixx, inertial.ixy, inertial.ixz = values[0], values[1], values[2]
-                inertial.iyy, inertial.iyz, inertial.izz = values[3], values[4], values[5]
-                offset = math.dist(item.origin.xyz, inertial.origin.xyz)
-                note = (f"; its centre of mass is {offset:.3g} m from the shape's centre"
-                        if offset > 1e-9 else '')
-                return (f'inertia replaced by that of its {kind} {type(shape).__name__.lower()}'
-                        f' with mass {fmt(inertial.mass)} (a solid of uniform density: '
-                        f'check it){note}')
+            if isinstance(item.geometry, (Box, Cylinder, Sphere, Capsule)):
+                return kind, item
     return None
 
 
@@ -245,12 +253,7 @@ def _shapeless(robot: Robot, findings: list[ValidationError]) -> list[str]:
     links: dict[str, list[str]] = {}
     for finding in findings:
         link = _owner(robot, finding) if finding.code in ('I202', 'I203') else None
-        if not isinstance(link, Link) or link.inertial is None:
-            continue
-        shapes = [item.geometry for item in link.collisions]
-        shapes += [item.geometry for item in link.visuals]
-        if link.inertial.mass > 0.0 and any(isinstance(shape, (Box, Cylinder, Sphere, Capsule))
-                                            for shape in shapes):
+        if not isinstance(link, Link) or link.inertial is None or _solid_shape(link):
             continue
         names = links.setdefault(finding.code, [])
         if link.name not in names:
