@@ -49,6 +49,11 @@ _INF = math.inf
 _new = object.__new__
 
 
+def _vector(field: str, given: Sequence[float]) -> Vec3:
+    """Return an origin's ``xyz`` or ``rpy`` as floats: the fast path, else the checked one."""
+    return checks.floats3(given) or checks.vec3('origin', field, given)
+
+
 @dataclass(slots=True, frozen=True, init=False)
 class Origin:
     """
@@ -70,19 +75,9 @@ class Origin:
     def __init__(self, xyz: Sequence[float] = _ZERO, rpy: Sequence[float] = _ZERO, *,
                  quat_xyzw: Sequence[float] | None = None,
                  source: SourceLocation | None = None, extras: Preserved | None = None) -> None:
-        if xyz is not _ZERO:
-            given = xyz
-            xyz = checks.floats3(given)  # type: ignore[assignment]
-            if xyz is None:
-                xyz = checks.vec3('origin', 'xyz', given)
-        _set_xyz(self, xyz)
+        _set_xyz(self, xyz if xyz is _ZERO else _vector('xyz', xyz))
         if quat_xyzw is None:
-            if rpy is not _ZERO:
-                given = rpy
-                rpy = checks.floats3(given)  # type: ignore[assignment]
-                if rpy is None:
-                    rpy = checks.vec3('origin', 'rpy', given)
-            _set_rpy(self, rpy)
+            _set_rpy(self, rpy if rpy is _ZERO else _vector('rpy', rpy))
             _set_quat(self, None)
         else:
             quat = _quaternion(quat_xyzw)
