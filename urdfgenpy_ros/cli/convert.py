@@ -78,8 +78,9 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     SOURCE is .urdf, .xacro (.urdf.xacro), a DH table (.yaml, .yml, .csv) or an assembly
     (.assembly.yaml); TARGET is .urdf, .xacro or .sdf, or MuJoCo's .xml/.mjcf. An SDF or
     MJCF of a robot that is not one tree, or that the engine would refuse (a link's
-    inertia), is not written: exit status 2, one line per link. MJCF: what it cannot carry is reported, one line each (--strict:
-    errors, exit status 1, nothing written); its meshes go to assets/ beside it.
+    inertia), is not written: exit status 2, one line per link. MJCF: what it cannot
+    carry is reported, one line each (--strict: errors, exit status 1, nothing written);
+    its meshes go to assets/ beside it.
     """
     kind = format_of(target)
     if kind != 'mjcf' and mjcf.given():
