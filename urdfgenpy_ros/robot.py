@@ -325,13 +325,16 @@ class Robot(RobotModel):
         ('position', 'velocity', 'motor'), ``kp``, ``kv``, ``scene``, ``overlay``,
         ``meshdir``, ``search_paths``, ``strict`` (see
         :func:`urdfgenpy_ros.formats.mjcf.write_mjcf`).
-        Each thing the MJCF cannot carry is a ``UserWarning`` in ``check``'s format.
+        Each thing the MJCF cannot carry is a ``UserWarning`` in ``check``'s format, as is
+        what asks you to act (no actuator written, a servo that needs damping).
         """
         from urdfgenpy_ros.caller import warn_caller
         from urdfgenpy_ros.formats.mjcf import write_mjcf
         result = write_mjcf(self, path, **options)
         for finding in result.findings:
             warn_caller(str(finding))
+        for advice in result.advice:
+            warn_caller(f'{self.name}: {advice}')
         return result.text
 
 

@@ -34,9 +34,10 @@ from typing import Any
 import click
 
 from urdfgenpy_ros.cli.check_reports import FileReport, json_report, sarif_report
-from urdfgenpy_ros.errors import UrdfgenpyError
-from urdfgenpy_ros.formats.mjcf import BASES, gain_ok, MjcfRefusedError, write_mjcf
+from urdfgenpy_ros.errors import ModelError, UrdfgenpyError
+from urdfgenpy_ros.formats.mjcf import BASES, MjcfRefusedError, write_mjcf
 from urdfgenpy_ros.formats.mjcf.actuators import ACTUATOR_TYPES
+from urdfgenpy_ros.formats.mjcf.gains import GainOption, parse_gain_words
 from urdfgenpy_ros.robot import Robot
 
 
@@ -47,8 +48,8 @@ class MjcfOptions:
     fuse_fixed: bool = False
     base: str | None = None
     actuators: str | None = None
-    kp: float | None = None
-    kv: float | None = None
+    kp: GainOption = None
+    kv: GainOption = None
     scene: bool = False
     overlay: Path | None = None
     strict: bool = False
@@ -64,13 +65,13 @@ class MjcfOptions:
         return [flag for flag, on in flags.items() if on]
 
 
-def _gain(parameter: Any, value: float | None, positive: bool) -> float | None:
-    """Refuse a gain that is not finite, or below zero (``positive``: zero too)."""
-    if value is not None and not gain_ok(value, positive):
-        raise click.BadParameter(f'{value!r}: a finite number '
-                                 + ('above zero' if positive else 'of zero or more'),
-                                 param=parameter)
-    return value
+def _gain(parameter: Any, words: tuple[str, ...], positive: bool) -> GainOption:
+    """Return ``--kp 2000 --kp JOINT=500`` as a gain or a mapping; refuse a bad one."""
+    try:
+        return parse_gain_words(parameter.name, words, positive)
+    except ModelError as error:
+        raise click.BadParameter(str(error).removeprefix(f'--{parameter.name} '),
+                                 param=parameter) from None
 
 
 _OPTIONS = (
@@ -83,11 +84,14 @@ _OPTIONS = (
     click.option('--actuators', type=click.Choice(ACTUATOR_TYPES),
                  help='MJCF output: this actuator on every joint, instead of the ones '
                       '<ros2_control> declares.'),
-    click.option('--kp', type=float, callback=lambda c, p, v: _gain(p, v, True),
-                 help="MJCF output: position actuators' gain (MuJoCo's default 1)."),
-    click.option('--kv', type=float, callback=lambda c, p, v: _gain(p, v, False),
+    click.option('--kp', multiple=True, metavar='[JOINT=]GAIN',
+                 callback=lambda c, p, v: _gain(p, v, True),
+                 help="MJCF output: position actuators' gain (MuJoCo's default 1); "
+                      'JOINT=GAIN for one joint, repeatable: --kp 2000 --kp wrist_3_joint=500.'),
+    click.option('--kv', multiple=True, metavar='[JOINT=]GAIN',
+                 callback=lambda c, p, v: _gain(p, v, False),
                  help="MJCF output: velocity actuators' gain (MuJoCo's default 1), and the "
-                      "position actuators' damping."),
+                      "position actuators' damping; JOINT=GAIN for one joint, repeatable."),
     click.option('--scene', is_flag=True,
                  help='MJCF output: also write scene.xml (floor, light, the robot).'),
     click.option('--overlay', type=click.Path(exists=True, dir_okay=False, path_type=Path),

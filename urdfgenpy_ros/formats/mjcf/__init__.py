@@ -36,12 +36,15 @@ from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats.mjcf.actuators import ACTUATOR_TYPES, declared_actuators, gears
 from urdfgenpy_ros.formats.mjcf.actuators import initial_values
 from urdfgenpy_ros.formats.mjcf.actuators import write_actuators
+from urdfgenpy_ros.formats.mjcf.armature import stabilise, write_rotor_armatures
 from urdfgenpy_ros.formats.mjcf.blocks import (
     apply_block, check_attributes, merge_overlay, read_overlay)
 from urdfgenpy_ros.formats.mjcf.bodies import BodyWriter, WORLD
 from urdfgenpy_ros.formats.mjcf.contacts import write_excludes
 from urdfgenpy_ros.formats.mjcf.friction import declared_friction
 from urdfgenpy_ros.formats.mjcf.fusing import fused
+from urdfgenpy_ros.formats.mjcf.gains import GainOption, Gains
+from urdfgenpy_ros.formats.mjcf.keyframe import hold_keyframes, home_positions
 from urdfgenpy_ros.formats.mjcf.keyframe import write_keyframe
 from urdfgenpy_ros.formats.mjcf.losses import Carried, find_losses
 from urdfgenpy_ros.formats.mjcf.meshes import MeshAssets
@@ -59,6 +62,10 @@ EXPANDED = ' (expanded)'
 REFUSED = ('I201', 'I202', 'I203', 'I207')  # what MuJoCo refuses to compile
 TENSORS = ('I202', 'I203')  # of these, what convert --fix repairs
 MINIMUM_MASS = 1e-15  # MuJoCo's mjMINVAL: a moving body needs this much
+NO_ACTUATORS = ('no actuator written: the <ros2_control> of the robot declares no joint '
+                'command interface, so nothing drives the joints (the robot falls limp under '
+                "gravity): actuators='position' / --actuators position puts a servo on every "
+                'joint, with kp= / --kp for its gain')
 
 
 class MjcfRefusedError(UrdfgenpyError):
@@ -77,6 +84,7 @@ class MjcfResult:
     findings: list[ValidationError] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
     files: list[Path] = field(default_factory=list)
+    advice: list[str] = field(default_factory=list)  # of the notes, what asks the user to act
 
 
 def _source_folder(robot: Robot) -> Path | None:
@@ -134,8 +142,8 @@ def _welded_mass(robot: Robot, name: str) -> float:
 
 def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
                fuse_fixed: bool = False, base: str | None = None,
-               actuators: str | None = None, kp: float | None = None,
-               kv: float | None = None, scene: bool = False,
+               actuators: str | None = None, kp: GainOption = None,
+               kv: GainOption = None, scene: bool = False,
                overlay: str | PathLike[str] | None = None, meshdir: str = 'assets',
                search_paths: Any = (), overwrite: bool = True,
                strict: bool = False) -> MjcfResult:
@@ -146,8 +154,11 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     each merged link a ``<site>``); ``base`` is ``fixed`` (the default) or ``floating``
     (a free joint) unless the root link is ``world``; ``actuators`` (position, velocity,
     motor) puts that actuator on every joint instead of what ``<ros2_control>``
-    declares; ``kp``/``kv`` are the servo gains (MuJoCo's default 1 otherwise; ``kv``
-    also damps the position servos);
+    declares; ``kp``/``kv`` are the servo gains, a number for every joint or a mapping
+    of joint names (``{'default': 2000, 'wrist_3_joint': 500}``; MuJoCo's default 1
+    otherwise; ``kv`` also damps the position servos); each keyframe's ``ctrl`` holds
+    the robot at its pose, and a stiff servo on a light joint gets the armature that
+    keeps it stable at the timestep (the notes say the values);
     ``overlay`` is an MJCF file merged in by element name; ``meshdir`` the folder beside
     ``path`` the meshes go to; without ``overwrite``, a file there with other content is
     refused before anything is written. With ``strict``, each thing the MJCF cannot carry
@@ -160,10 +171,7 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
         raise ModelError(f'base {base!r}: use fixed or floating')
     if actuators not in (None, *ACTUATOR_TYPES):
         raise ModelError(f"actuators {actuators!r}: use {', '.join(ACTUATOR_TYPES)}")
-    for option, gain, least in (('kp', kp, 'above zero'), ('kv', kv, 'zero or more')):
-        if gain is not None and not gain_ok(gain, least == 'above zero'):
-            raise ModelError(f'{option}={gain!r}: a servo gain is a finite number, '
-                             f'{least} (N/m or Nm/rad per unit of error)')
+    gains = (Gains.of('kp', kp, True), Gains.of('kv', kv, False))
     if len(robot.roots) != 1:
         raise ModelError(f'robot {robot.name!r} has {len(robot.roots)} root links: MJCF '
                          'needs one tree (urdfgenpy check says why)')
@@ -210,8 +218,11 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
                      "when installed (pip install 'urdfgenpy_ros[engines]')")
     carried.mimics = write_equalities(document, written)
     chosen = declared_actuators(written, actuators)
-    gains = (kp if kp is not None else DEFAULT_KP, kv if kv is not None else DEFAULT_KV)
-    write_actuators(document, chosen, *gains, servo_damping=kv)
+    advice = _check_gains(written, chosen, gains)
+    write_actuators(document, chosen, *gains, defaults=(DEFAULT_KP, DEFAULT_KV))
+    armatures = _armatures(worldbody)  # the URDF's <mujoco> block set them: the user's
+    notes.extend(write_rotor_armatures(worldbody, written))
+    advice += [NO_ACTUATORS] if not chosen and actuators is None else []
     reductions = gears(written)
     made = {(actuator.joint.name, actuator.kind) for actuator in chosen}
     declared_ones = chosen if actuators is None else declared_actuators(written, None)
@@ -222,14 +233,21 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     for actuator in chosen:
         if actuator.joint.name in reductions:
             carried.transmissions.add(reductions[actuator.joint.name][1])
-    write_keyframe(document, tree, written, initial_values(written))
+    home = home_positions(tree, written, initial_values(written))
+    write_keyframe(document, tree, home)
     carried.sensors = write_sensors(document, worldbody, written, carried.partly)
     if overlay is not None:
-        merge_overlay(document, read_overlay(overlay))
-    _note_gains(notes, document, kp, kv, gains)
-    _simulate(document, notes, {actuator.kind for actuator in chosen}, kv is not None,
+        extra = read_overlay(overlay)
+        armatures |= _armatures(extra)
+        merge_overlay(document, extra)
+    _note_gains(notes, document, gains)
+    _simulate(document, notes, {actuator.kind for actuator in chosen}, gains[1].given,
               (scene and path is not None and taken == 'floating' and not at_world)
               and (robot.root.name, meshes, meshdir))
+    added, unstable = stabilise(document, written, home, armatures)
+    notes.extend(added)
+    advice.extend(unstable + hold_keyframes(document, tree))
+    notes.extend(advice)
     notes.append(write_excludes(document, meshes.contents(),
                                 meshdir if path is not None else None))
     file = robot.source.file if robot.source is not None else None
@@ -242,7 +260,7 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
         findings = [ValidationError(finding.code, Severity.ERROR, finding.element,
                                     finding.location, finding.message, finding.hint)
                     for finding in findings]
-    result = MjcfResult(text, findings, notes)
+    result = MjcfResult(text, findings, notes, advice=advice)
     if path is not None and not (strict and findings):
         result.files = _write(Path(path), text, meshes, meshdir, scene, robot.name,
                               overwrite)
@@ -261,12 +279,6 @@ def _simulate(document: Any, notes: list[str], kinds: set[str], servo_damping: b
         notes.append(note)
         comment = document[0]
         comment.text = f"{comment.text}{note.replace('--', '- -')}. "
-
-
-def gain_ok(gain: float, positive: bool) -> bool:
-    """Return whether ``gain`` is a finite number above zero (or zero when not ``positive``)."""
-    import math
-    return math.isfinite(gain) and (gain > 0.0 if positive else gain >= 0.0)
 
 
 def _base_note(at_world: bool, base: str | None) -> str:
@@ -302,23 +314,40 @@ def _skeleton(name: str, base: str, fuse_fixed: bool, meshdir: str | None) -> An
     return document
 
 
-def _note_gains(notes: list[str], document: Any, kp: float | None, kv: float | None,
-                gains: tuple[float, float]) -> None:
+def _check_gains(robot: Robot, chosen: list[Any], gains: tuple[Gains, Gains]
+                 ) -> list[str]:
+    """Refuse a gain for a joint the robot lacks; return notes for gains left unused."""
+    takes = {'kp': ('position',), 'kv': ('position', 'velocity')}
+    notes = []
+    for gain in gains:
+        actuated = {actuator.joint.name for actuator in chosen
+                    if actuator.kind in takes[gain.option]}
+        notes.extend(gain.check_joints((joint.name for joint in robot.joints), actuated))
+    return notes
+
+
+def _note_gains(notes: list[str], document: Any, gains: tuple[Gains, Gains]) -> None:
     """Say each servo kind's gain, as the model has it (an overlay may have set it)."""
     section = document.find('actuator')
-    for kind, given, value, option in (('position', kp, gains[0], 'kp'),
-                                       ('velocity', kv, gains[1], 'kv')):
-        found = [element.get(option) for element in
-                 (section.iter(kind) if section is not None else ())]
+    for kind, gain, fallback in (('position', gains[0], DEFAULT_KP),
+                                 ('velocity', gains[1], DEFAULT_KV)):
+        found = {(element.get('joint'), element.get(gain.option))
+                 for element in (section.iter(kind) if section is not None else ())}
         if not found:
             continue
-        if set(found) != {fmt(value)}:
-            values = ', '.join(sorted({text or "MuJoCo's default" for text in found}))
-            notes.append(f'{kind} actuators: {option}={values} (the overlay sets them)')
+        expected = {(joint, fmt(value if (value := gain.of_joint(joint or '')) is not None
+                                else fallback)) for joint, _ in found}
+        if found != expected:
+            values = ', '.join(sorted({text or "MuJoCo's default" for _, text in found}))
+            notes.append(f'{kind} actuators: {gain.option}={values} (the overlay sets them)')
             continue
-        said = ('given' if given is not None
-                else f"MuJoCo's default: set {option}= / --{option}")
-        notes.append(f'{kind} actuators: {option}={fmt(value)} ({said})')
+        notes.append(f'{kind} actuators: {gain.option}={gain.describe(fallback)}')
+
+
+def _armatures(element: Any) -> set[str]:
+    """Return the names of the joints under ``element`` that have an armature."""
+    return {node.get('name') for node in element.iter('joint')
+            if node.get('armature') is not None and node.get('name')}
 
 
 def _write(path: Path, text: str, meshes: MeshAssets, meshdir: str, scene: bool,

@@ -22,7 +22,8 @@ control range is the interface's ``min``/``max`` parameters, else the joint's li
 (position: lower/upper, velocity: +-velocity, effort: +-effort). A ``<transmission>`` on
 the joint gives the ``gear`` (its ``mechanicalReduction``); MuJoCo's control is then in
 actuator units, so a servo's range is multiplied by it. The gains MuJoCo needs and URDF
-does not hold (``kp``, ``kv``) come from the options. Mimic followers are never actuated.
+does not hold (``kp``, ``kv``) come from the options, per joint or for all. Mimic
+followers are never actuated.
 """
 
 from __future__ import annotations
@@ -34,6 +35,7 @@ from typing import Any, TYPE_CHECKING
 from lxml import etree
 
 from urdfgenpy_ros.floats import fmt, fmt_vec
+from urdfgenpy_ros.formats.mjcf.gains import Gains
 from urdfgenpy_ros.joint import Joint, JointType
 
 if TYPE_CHECKING:
@@ -189,12 +191,13 @@ def declared_actuators(robot: Robot, kind: str | None) -> list[Actuator]:
     return found
 
 
-def write_actuators(parent: Any, actuators: list[Actuator], kp: float, kv: float,
-                    servo_damping: float | None = None) -> None:
+def write_actuators(parent: Any, actuators: list[Actuator], kp: Gains, kv: Gains,
+                    defaults: tuple[float, float] = (1.0, 1.0)) -> None:
     """
     Add an ``<actuator>`` section holding ``actuators`` to ``parent``.
 
-    ``servo_damping`` is a position servo's ``kv`` (none: MuJoCo's, zero).
+    A position servo takes its joint's ``kp`` and, when given, its ``kv`` as damping; a
+    velocity servo its ``kv``; ``defaults`` are the (kp, kv) of joints given none.
     """
     if not actuators:
         return
@@ -211,10 +214,11 @@ def write_actuators(parent: Any, actuators: list[Actuator], kp: float, kv: float
             attributes['gear'] = fmt(actuator.gear)
         if actuator.ctrlrange is not None:
             attributes['ctrlrange'] = fmt_vec(actuator.ctrlrange)
+        stiffness, damping = kp.of_joint(actuator.joint.name), kv.of_joint(actuator.joint.name)
         if actuator.kind == 'position':
-            attributes['kp'] = fmt(kp)
-            if servo_damping is not None:
-                attributes['kv'] = fmt(servo_damping)
+            attributes['kp'] = fmt(stiffness if stiffness is not None else defaults[0])
+            if damping is not None:
+                attributes['kv'] = fmt(damping)
         elif actuator.kind == 'velocity':
-            attributes['kv'] = fmt(kv)
+            attributes['kv'] = fmt(damping if damping is not None else defaults[1])
         etree.SubElement(section, actuator.kind, attributes)

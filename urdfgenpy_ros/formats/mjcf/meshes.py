@@ -27,6 +27,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
+from urllib.parse import urlparse
 
 from urdfgenpy_ros.errors import MissingDependencyError, ModelError, UrdfgenpyError
 from urdfgenpy_ros.floats import fmt_vec
@@ -70,7 +71,7 @@ class MeshAssets:
             reason = str(error)
             if reason.endswith(')') and ' (' in reason:
                 reason = reason.rsplit(' (', 1)[0]
-            raise MeshNotWritten(reason, PACKAGE_HINT) from None
+            raise MeshNotWritten(reason, self._where_hint(mesh.filename)) from None
         key = (path, mesh.scale)
         if key not in self.assets:
             suffix = path.suffix.lower()
@@ -87,6 +88,16 @@ class MeshAssets:
             name = _unique(Path(written).stem, {n for n, _ in self.assets.values()})
             self.assets[key] = (name, written)
         return self.assets[key][0]
+
+    def _where_hint(self, uri: str) -> str:
+        """Return the fix for a mesh not found: the package's folder, if it was found."""
+        parsed = urlparse(uri)
+        folder = self.resolver.find(parsed.netloc) if parsed.scheme == 'package' else None
+        if folder is None:
+            return PACKAGE_HINT
+        return (f'the model has no such geom: package {parsed.netloc!r} was found at '
+                f'{folder}, and the file is not in it: correct the file name, or install the '
+                'mesh into that package')
 
     def _file_name(self, path: Path) -> str:
         if path in self._names:
