@@ -328,14 +328,8 @@ class Robot(RobotModel):
         Each thing the MJCF cannot carry is a ``UserWarning`` in ``check``'s format, as is
         what asks you to act (no actuator written, a servo that needs damping).
         """
-        from urdfgenpy_ros.caller import warn_caller
-        from urdfgenpy_ros.formats.mjcf import write_mjcf
-        result = write_mjcf(self, path, **options)
-        for finding in result.findings:
-            warn_caller(str(finding))
-        for advice in result.advice:
-            warn_caller(f'{self.name}: {advice}')
-        return result.text
+        from urdfgenpy_ros.formats.table import write_mjcf_warning
+        return write_mjcf_warning(self, path, **options)
 
 
 set_robot_class(Robot)

@@ -127,12 +127,20 @@ def _write_sdf(robot: Robot, path: PathArg, **options: Any) -> str:
     return write_sdf(robot, path, **options)
 
 
-def _write_mjcf(robot: Robot, path: PathArg, **options: Any) -> str:
+def write_mjcf_warning(robot: Robot, path: PathArg, **options: Any) -> str:
+    """
+    Return the MJCF text (and write it with ``path``), warning at the caller's line.
+
+    Each thing the MJCF cannot carry is a ``UserWarning`` in ``check``'s format, as is
+    what asks the user to act (no actuator written, a servo that needs damping).
+    """
     from urdfgenpy_ros.caller import warn_caller
     from urdfgenpy_ros.formats.mjcf import write_mjcf
     result = write_mjcf(robot, path, **options)
     for finding in result.findings:
         warn_caller(str(finding))
+    for advice in result.advice:
+        warn_caller(f'{robot.name}: {advice}')
     return result.text
 
 
@@ -142,7 +150,7 @@ FORMATS: tuple[Format, ...] = (
     Format('urdf', ('.urdf',), 'URDF', _read_urdf, _write_urdf, ('version',)),
     Format('sdf', ('.sdf',), 'SDF 1.9', None, _write_sdf, ('lump_fixed',),
            not_read='reading SDF is not supported (convert from URDF or Xacro)'),
-    Format('mjcf', ('.xml', '.mjcf'), 'MuJoCo MJCF', None, _write_mjcf,
+    Format('mjcf', ('.xml', '.mjcf'), 'MuJoCo MJCF', None, write_mjcf_warning,
            ('fuse_fixed', 'base', 'actuators', 'kp', 'kv', 'scene', 'overlay', 'meshdir',
             'search_paths', 'overwrite', 'strict'),
            not_read='reading MJCF is not supported: urdfgenpy writes it (a URDF or Xacro '
