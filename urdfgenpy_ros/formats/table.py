@@ -127,7 +127,7 @@ def _write_sdf(robot: Robot, path: PathArg, **options: Any) -> str:
     return write_sdf(robot, path, **options)
 
 
-def write_mjcf_warning(robot: Robot, path: PathArg, **options: Any) -> str:
+def write_mjcf_warning(robot: Robot, path: PathArg | None, **options: Any) -> str:
     """
     Return the MJCF text (and write it with ``path``), warning at the caller's line.
 
