@@ -19,6 +19,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping
 import os
 from os import PathLike
+import posixpath
 from pathlib import Path
 from typing import TYPE_CHECKING
 from urllib.parse import unquote, urlparse
@@ -147,7 +148,8 @@ class PackageResolver:
             if directory is None:
                 raise ResourceError(f'package {parsed.netloc!r} of {uri!r} not found (source '
                                     f'its workspace, or {folder_fix()})')
-            path = directory / unquote(parsed.path).lstrip('/')
+            # a/../b/x.stl: normalised, as a missing folder 'a' would stop the OS
+            path = directory / posixpath.normpath(unquote(parsed.path).lstrip('/') or '.')
         elif parsed.scheme == 'file':
             relative = relative_file_uri(uri)
             if relative is None:

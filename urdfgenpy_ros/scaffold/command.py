@@ -25,7 +25,7 @@ import sys
 from typing import NoReturn
 
 from urdfgenpy_ros.errors import UrdfgenpyError
-from urdfgenpy_ros.model_source import INIT_WORDS, load_model
+from urdfgenpy_ros.model_source import INIT_WORDS, load_model, parse_xacro_args
 from urdfgenpy_ros.report import exit_status, FrontEnd
 from urdfgenpy_ros.scaffold.preflight import preflight
 from urdfgenpy_ros.scaffold.render import create_package
@@ -104,7 +104,8 @@ def _create(args: argparse.Namespace) -> int:
         if not Path(folder).is_dir():
             raise UrdfgenpyError(f'--package-path {folder}: no such folder (give a folder '
                                  'holding ROS packages)')
-    robot, _ = load_model(args.source, xacro_arguments(args), args.package_path, INIT_WORDS)
+    given = xacro_arguments(args)
+    robot, _ = load_model(args.source, given, args.package_path, INIT_WORDS)
     for note in robot.read_warnings:  # e.g. X101: a .urdf file expanded as Xacro
         print(note, file=sys.stderr)
     if args.fix:
@@ -114,7 +115,8 @@ def _create(args: argparse.Namespace) -> int:
         print(line, file=sys.stderr)
     written, warnings = create_package(
         spec, robot, force=args.force, source=args.source or 'the built-in example',
-        search_paths=args.package_path)
+        search_paths=args.package_path,
+        xacro_args=parse_xacro_args(given, INIT_WORDS))
     for warning in warnings:
         print(f'warning: {warning}', file=sys.stderr)
     print(f'created {spec.root} ({len(written)} files, {spec.build_type}): '
