@@ -17,7 +17,6 @@
 from __future__ import annotations
 
 import importlib.util
-from pathlib import Path
 import re
 from types import ModuleType
 
