@@ -70,7 +70,7 @@ def test_the_file_is_the_one_pinocchio_and_yourdfpy_find(share: Path) -> None:
     assert Path(theirs).resolve() == ours
     assert PackageResolver().resolve(uri, urdf.parent).resolve() == ours  # as yourdfpy: above
     said = uri_warning(uri)
-    assert said is not None and "resource_retriever (RViz) does not find it: write " \
+    assert said is not None and 'resource_retriever (RViz) does not find it: write ' \
         'package://my-robot-data/meshes/cube.stl' in said
 
 

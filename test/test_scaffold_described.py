@@ -132,8 +132,8 @@ def test_package_xml_lists_the_plugins_packages_and_baked_values_are_said(
     assert plugins == ['hw_hardware/HwSystem']  # as the source expands with the defaults
 
 
-def test_the_values_given_are_those_baked_and_said(workspace: Path, tmp_path: Path,
-                                                  capsys: pytest.CaptureFixture[str]) -> None:
+def test_the_values_given_are_those_baked_and_said(
+        workspace: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     catkin = require_module('catkin_pkg.package')
     package = _scaffold(workspace, tmp_path, 'use_sim:=true')
     err = capsys.readouterr().err

@@ -19,8 +19,8 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping
 import os
 from os import PathLike
-import posixpath
 from pathlib import Path
+import posixpath
 from typing import TYPE_CHECKING
 from urllib.parse import unquote, urlparse
 

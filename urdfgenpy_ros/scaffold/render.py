@@ -20,8 +20,8 @@ from collections.abc import Mapping
 import copy
 import datetime
 import os
-import posixpath
 from pathlib import Path
+import posixpath
 import shutil
 
 from urdfgenpy_ros.assembly import prefixed
@@ -37,7 +37,7 @@ from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.scaffold.assets import copy_referenced_files, with_find
 from urdfgenpy_ros.scaffold.described import (baked_arguments, hardware_warnings,
-                                               referenced_packages)
+                                              referenced_packages)
 from urdfgenpy_ros.scaffold.mesh_files import companions, mesh_names, numbered
 from urdfgenpy_ros.scaffold.sensors_read import sensors_of
 from urdfgenpy_ros.scaffold.spec import PackageSpec
