@@ -25,7 +25,10 @@ A page asks for a part with an HTML comment on a line of its own:
   ``CHANGELOG.md``), its first heading dropped and the others one level down.
 
 Lines between a marker and ``<!-- end generated -->`` are what a reader of the page on
-GitHub sees instead (where the part is); the site replaces them with the part.
+GitHub sees instead (where the part is); the site replaces them with the part. The parts
+in ``COMMITTED`` (the codes and the node's parameters) are kept there as the code makes
+them, so GitHub shows the tables too: ``python docs/hooks.py`` writes them again after a
+change, and ``test/test_docs_generated.py`` fails while one is not current.
 
 Sphinx roles in docstrings (``:func:`name```) are shown as the code they name. Pages in
 ``docs/`` that ``nav`` does not list are added under "More" (new pages appear
@@ -174,6 +177,32 @@ def generate(what: str, argument: str | None) -> str:
     raise ValueError(f'unknown generated part {what!r} {argument or ""}')
 
 
+COMMITTED = frozenset(('codes', 'node-parameters'))
+"""The parts kept in the pages' Markdown as generated (the others only on the site)."""
+
+
+def with_committed_parts(markdown: str) -> str:
+    """Return ``markdown`` with each committed part between its markers as made now."""
+    def part(match: re.Match[str]) -> str:
+        if match['what'] not in COMMITTED:
+            return match[0]
+        marker = match[0].split('\n', 1)[0]
+        return f'{marker}\n\n{generate(match["what"], match["argument"])}\n<!-- end generated -->'
+    return MARKER.sub(part, markdown)
+
+
+def refresh(docs: Path = REPO / 'docs') -> list[Path]:
+    """Write the committed parts of every page of ``docs`` again; return the pages changed."""
+    changed = []
+    for page in sorted(docs.glob('*.md')):
+        text = page.read_text(encoding='utf-8')
+        current = with_committed_parts(text)
+        if current != text:
+            page.write_text(current, encoding='utf-8')
+            changed.append(page)
+    return changed
+
+
 def on_page_markdown(markdown: str, **_: Any) -> str:
     """Replace each marker by the part it names."""
     return MARKER.sub(lambda match: generate(match['what'], match['argument']), markdown)
@@ -210,3 +239,10 @@ def on_config(config: Any, **_: Any) -> Any:
     if missing:
         nav.append({'More': missing})
     return config
+
+
+if __name__ == '__main__':  # python docs/hooks.py: the committed tables, as the code is
+    import sys
+    sys.path.insert(0, str(REPO))
+    for written in refresh():
+        print(f'wrote {written.relative_to(REPO)}')

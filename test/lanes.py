@@ -18,10 +18,10 @@ The fast lane: a marker says what makes a test slow; a slow test without one is 
 ``scripts/test --fast`` (pytest's ``--fast``) leaves out the tests marked with one of
 LANE_MARKS (setup.cfg says what each means). A test that asks for conftest.py's colcon
 workspace, browser or ROS graph gets its marker here; the others carry theirs in their
-file. At the end of every run, the tests without such a marker that took longer than the
-budget (``fast_lane_budget`` in setup.cfg, ``--fast-lane-budget SECONDS`` for one run, 0
-for none) are named, so that they get one: a summary line, never a failure (a unit test
-never asserts a time).
+file. When asked (``--fast-lane-budget``, with ``fast_lane_budget`` of setup.cfg, or
+``--fast-lane-budget SECONDS``), the end of the run names the tests without such a marker
+that took longer than the budget, so that they get one: a summary line, never a failure
+(a unit test never asserts a time). Unasked, a run prints nothing of it.
 """
 
 from __future__ import annotations
@@ -33,6 +33,7 @@ import pytest
 LANE_MARKS = ('colcon', 'browser', 'engine', 'ros', 'docs', 'slow')
 FIXTURE_MARKS = {'colcon_workspace': 'colcon', 'browser': 'browser', 'graph': 'ros'}
 FAST = ' and '.join(f'not {mark}' for mark in LANE_MARKS)
+_THE_INI = -1.0  # --fast-lane-budget without SECONDS: setup.cfg's fast_lane_budget
 
 
 def add_options(parser: pytest.Parser) -> None:
@@ -42,10 +43,11 @@ def add_options(parser: pytest.Parser) -> None:
                      + ' (with -m, both apply)')
     parser.addini('fast_lane_budget', 'seconds a test without a lane marker may take '
                   'before the run names it (0: never)', default='2')
-    parser.addoption('--fast-lane-budget', type=float, default=None, metavar='SECONDS',
+    parser.addoption('--fast-lane-budget', type=float, nargs='?', const=_THE_INI,
+                     default=None, metavar='SECONDS',
                      help='name the tests without a marker of ' + ', '.join(LANE_MARKS)
-                     + ' that take longer than SECONDS (0: none; default: fast_lane_budget '
-                     'in setup.cfg)')
+                     + ' that take longer than SECONDS (without SECONDS: fast_lane_budget '
+                     'in setup.cfg; unasked or 0: none)')
 
 
 def configure(config: pytest.Config) -> None:
@@ -54,7 +56,9 @@ def configure(config: pytest.Config) -> None:
         chosen = config.option.markexpr
         config.option.markexpr = f'({chosen}) and {FAST}' if chosen else FAST
     budget = config.getoption('fast_lane_budget')
-    if budget is None:
+    if budget is None:  # not asked: the run says nothing of it
+        budget = 0.0
+    elif budget == _THE_INI:
         budget = float(config.getini('fast_lane_budget'))
     config.pluginmanager.register(FastLane(budget), 'urdfgenpy_fast_lane')
 

@@ -16,9 +16,11 @@
 Every Python and shell block of README.md and docs/*.md runs as written, page by page.
 
 One test per block, in page order, in a scratch folder per page; Python blocks share a
-namespace per page. ``<!-- docs-test: given FILE ... -->`` before a block writes the files
-the reader brings (docs_given.GIVEN); ``<!-- docs-test: skip REASON -->`` skips the next
-block with that reason. What the blocks write is read back by check_urdf.
+namespace per page. ``<!-- docs-test: given FILE ... -->`` before a shell block writes the
+files the reader brings (docs_given.GIVEN); ``<!-- docs-test: skip REASON -->`` skips the
+next block with that reason. What the blocks write is read back by check_urdf. A page's
+Python blocks also run alone, in order, in an empty folder, as a reader pasting them into
+a notebook runs them: they make what they need.
 """
 
 from __future__ import annotations
@@ -80,6 +82,10 @@ def blocks_of(page: Path) -> list[Block]:
         if kind == 'marker':
             if match['what'] == 'given':
                 given = tuple(match['text'].split())
+                following = FENCE.search(text, match.end())
+                assert following is None or RUNS.get(following['lang'].lower()) != 'python', (
+                    f'{page.name}: a Python block makes the files it needs (a reader runs '
+                    f'it in an empty folder): write {given} in the block, not "given"')
                 unknown = [name for name in given if name not in GIVEN]
                 assert not unknown, f'{page.name}: no given file {unknown} in docs_given.GIVEN'
             else:
@@ -196,6 +202,20 @@ def test_block_runs(block: Block, page_runs: dict[Path, PageRun],
     if block is page_blocks[-1]:
         for urdf in sorted(run.folder.rglob('*.urdf')):
             _assert_urdfdom_reads(urdf)
+
+
+PYTHON_PAGES = [page for page in PAGES
+                if any(b.language == 'python' and b.skip is None for b in blocks_of(page))]
+
+
+@pytest.mark.parametrize('page', PYTHON_PAGES, ids=[page.name for page in PYTHON_PAGES])
+def test_python_blocks_run_alone_in_an_empty_folder(page: Path, tmp_path: Path) -> None:
+    """A page's Python blocks, without its shell blocks or given files, run in order."""
+    run = PageRun(tmp_path)
+    for block in blocks_of(page):
+        if block.language == 'python' and block.skip is None:
+            assert block.given == ()
+            _run(block, run)
 
 
 def test_every_page_is_found_and_every_marker_is_used() -> None:

@@ -119,6 +119,17 @@ def test_an_unmarked_test_over_the_budget_is_named_and_the_run_passes(tmp_path: 
     assert '1 test(s) without a marker' in section
 
 
+def test_unasked_the_run_says_nothing_of_the_budget_asked_it_uses_the_ini(
+        tmp_path: Path) -> None:
+    (tmp_path / 'pytest.ini').write_text('[pytest]\nfast_lane_budget = 0.3\n')
+    quiet = _run(tmp_path, '--fast')
+    assert quiet.returncode == 0 and 'fast lane budget' not in quiet.stdout, quiet.stdout
+    asked = _run(tmp_path, '--fast', '--fast-lane-budget')
+    assert asked.returncode == 0, asked.stdout + asked.stderr
+    section = asked.stdout.split('fast lane budget')[1].split('=====')[0]
+    assert 'test_suite.py::test_sleepy' in section and 'took over 0.3 s' in section
+
+
 def test_the_markers_are_declared_and_undeclared_ones_refused() -> None:
     parser = configparser.ConfigParser()
     parser.read(REPO / 'setup.cfg')

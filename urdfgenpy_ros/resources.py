@@ -20,6 +20,7 @@ from collections.abc import Iterable, Mapping
 import os
 from os import PathLike
 from pathlib import Path
+import posixpath
 from typing import TYPE_CHECKING
 from urllib.parse import unquote, urlparse
 
@@ -91,6 +92,26 @@ class PackageResolver:
                 return found
         return None
 
+    def _without_package(self, uri: str, relative_to: str | PathLike[str] | None) -> Path:
+        """
+        Return the file of ``package:///a/b``: ``a/b`` under a folder of packages.
+
+        pinocchio reads it so (under each of its package folders: ``search_paths``, then
+        ``ROS_PACKAGE_PATH``), and yourdfpy (under a folder above the description's).
+
+        :raises ResourceError: when no such folder holds it.
+        """
+        rest = unquote(urlparse(uri).path).lstrip('/')
+        above = list(Path(relative_to).absolute().parents) if relative_to is not None else []
+        if relative_to is not None:
+            above.insert(0, Path(relative_to).absolute())
+        for root in (*self.search_paths, *self._ros_package_path(), *above):
+            if (root / rest).exists():
+                return root / rest
+        raise ResourceError(f'{uri!r} names no package (package:/// with an empty name): '
+                            f'{rest!r} is under none of the folders of packages (write '
+                            f'package://{rest}, or {folder_fix()})')
+
     @staticmethod
     def _ros_package_path() -> list[Path]:
         return [Path(entry) for entry in os.environ.get('ROS_PACKAGE_PATH', '').split(
@@ -120,12 +141,15 @@ class PackageResolver:
         :raises ResourceError: when the package or the file does not exist.
         """
         parsed = urlparse(uri)
-        if parsed.scheme == 'package':
+        if parsed.scheme == 'package' and not parsed.netloc:
+            path = self._without_package(uri, relative_to)
+        elif parsed.scheme == 'package':
             directory = self.find(parsed.netloc)
             if directory is None:
                 raise ResourceError(f'package {parsed.netloc!r} of {uri!r} not found (source '
                                     f'its workspace, or {folder_fix()})')
-            path = directory / unquote(parsed.path).lstrip('/')
+            # a/../b/x.stl: normalised, as a missing folder 'a' would stop the OS
+            path = directory / posixpath.normpath(unquote(parsed.path).lstrip('/') or '.')
         elif parsed.scheme == 'file':
             relative = relative_file_uri(uri)
             if relative is None:
@@ -164,6 +188,12 @@ def relative_file_uri(uri: str) -> str | None:
 
 def uri_warning(uri: str) -> str | None:
     """Return a one-line warning when ``uri`` resolves only by guessing, else None."""
+    parsed = urlparse(uri)
+    if parsed.scheme == 'package' and not parsed.netloc:
+        rest = unquote(parsed.path).lstrip('/')
+        return (f'{uri!r} has an empty package name: pinocchio and yourdfpy read it as '
+                f"{rest!r} under a folder of packages, but ROS's resource_retriever (RViz) "
+                f'does not find it: write package://{rest}')
     relative = relative_file_uri(uri)
     if relative is None:
         return None

@@ -254,7 +254,7 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
         if not options.fix:
             return report
         repairs = found.fix()
-        refusal = _not_rewritable(path, robot, len(repairs))
+        refusal = _not_rewritable(path, robot, _repairable(len(repairs), len(found.findings)))
         if refusal is not None:  # nothing is written: no word on missing defaults either
             report.refused = refusal if repairs else None
             return report
@@ -286,19 +286,26 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
     return report
 
 
-def _not_rewritable(path: Path, robot: Robot, count: int) -> str | None:
+def _repairable(count: int, listed: int) -> str:
+    """Return which of the ``listed`` findings above ``--fix`` repairs: ``count`` of them."""
+    plural = 's' if listed != 1 else ''
+    return (f'the {listed} repairable finding{plural} above' if count == listed else
+            f'the {count} of the {listed} finding{plural} above that --fix repairs')
+
+
+def _not_rewritable(path: Path, robot: Robot, count: str) -> str | None:
     """Return why ``path`` is not a file --fix can write back (None when it is plain URDF)."""
     if path.suffix.lower() in DH_SUFFIXES:
         if is_assembly(path):
             return (f'{path}: not fixed: it is an assembly file, which only names its parts: '
-                    f"the {count} repairable finding(s) above are in the parts' files: run "
+                    f"{count} are in the parts' files: run "
                     'urdfgenpy check --fix on those (Xacro parts by hand)')
         return (f'{path}: not fixed: it is a DH table, from which the robot is generated: '
-                f'change the table for the {count} repairable finding(s) above')
+                f'change the table for {count}')
     if path.suffix.lower() == '.xacro' or any(
             warning.code == 'X101' for warning in robot.read_warnings):
         return (f'{path}: not fixed: it is Xacro, and writing the expanded robot back would '
-                f'lose its macros and properties: repair the {count} finding(s) above by '
+                f'lose its macros and properties: repair {count} by '
                 'hand (their lines say how), or write a repaired copy with urdfgenpy convert '
                 f'{path} OUT.urdf --fix (or OUT.sdf)')
     return None

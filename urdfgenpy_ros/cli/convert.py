@@ -103,7 +103,7 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
         _refuse_broken_tree(robot, target)
     say_read_warnings(robot)
     if repair:
-        for line in fix_for_output(robot, fix_radius):
+        for line in fix_for_output(robot, fix_radius, package_paths):
             click.echo(line, err=True)
     if urdf_version is not None:
         robot, changes = as_version(robot, urdf_version)

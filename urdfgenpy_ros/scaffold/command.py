@@ -19,21 +19,38 @@ from __future__ import annotations
 import argparse
 from collections.abc import Sequence
 import copy
+import math
 from pathlib import Path
 import sys
 from typing import NoReturn
 
 from urdfgenpy_ros.errors import UrdfgenpyError
-from urdfgenpy_ros.model_source import INIT_WORDS, load_model
+from urdfgenpy_ros.model_source import INIT_WORDS, load_model, parse_xacro_args
 from urdfgenpy_ros.report import exit_status, FrontEnd
 from urdfgenpy_ros.scaffold.preflight import preflight
 from urdfgenpy_ros.scaffold.render import create_package
 from urdfgenpy_ros.scaffold.spec import BUILD_TYPES, PackageSpec
+from urdfgenpy_ros.validation.fix_output import DEFAULT_RADIUS
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    """Declare the options, named as ``ros2 pkg create`` names them."""
+    """
+    Declare the options, named as ``ros2 pkg create`` names them.
+
+    Each group is a function of its own, so a new kind of package adds its options beside
+    them; ``run`` reads the namespace.
+    """
     parser.add_argument('package_name', help='the package to create, e.g. my_robot_description')
+    parser.add_argument('mappings', nargs='*', default=[], metavar='NAME:=VALUE',
+                        help='Xacro arguments of --from, as every urdfgenpy command takes '
+                             'them (or after --xacro-args)')
+    _package_arguments(parser)
+    _source_arguments(parser)
+    _repair_arguments(parser)
+
+
+def _package_arguments(parser: argparse.ArgumentParser) -> None:
+    """Declare what the package is: ``ros2 pkg create``'s options."""
     parser.add_argument('--build-type', default='ament_cmake', choices=BUILD_TYPES)
     parser.add_argument('--destination-directory', default='.', type=Path,
                         help='where the package folder is created')
@@ -43,16 +60,27 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--description', default='')
     parser.add_argument('--dependencies', nargs='*', default=[],
                         help='more packages to list as exec_depend')
+    parser.add_argument('--force', action='store_true', help='overwrite existing files')
+
+
+def _source_arguments(parser: argparse.ArgumentParser) -> None:
+    """Declare the robot to start from and how to read it."""
     parser.add_argument('--from', dest='source', default='',
                         help='a .urdf, .xacro, DH table (.yaml/.csv) or module:function; '
                              'default: the built-in example robot')
     parser.add_argument('--xacro-args', nargs='*', default=[], metavar='NAME:=VALUE')
     parser.add_argument('--package-path', '-p', action='append', default=[],
                         help='a folder holding ROS packages (repeatable)')
-    parser.add_argument('--force', action='store_true', help='overwrite existing files')
+
+
+def _repair_arguments(parser: argparse.ArgumentParser) -> None:
+    """Declare what to do about a robot with errors."""
     parser.add_argument('--fix', action='store_true',
                         help="repair the robot's errors that urdfgenpy check --fix can, "
                              'in the package (the source is not touched)')
+    parser.add_argument('--fix-radius', type=_positive, default=DEFAULT_RADIUS, metavar='M',
+                        help='with --fix: the radius of the solid sphere whose tensor a link '
+                             f'with no shape to take one from gets (default {DEFAULT_RADIUS})')
     parser.add_argument('--allow-errors', action='store_true',
                         help='scaffold a robot that has errors as it is (its colcon test '
                              'will report them)')
@@ -76,21 +104,52 @@ def _create(args: argparse.Namespace) -> int:
         if not Path(folder).is_dir():
             raise UrdfgenpyError(f'--package-path {folder}: no such folder (give a folder '
                                  'holding ROS packages)')
-    robot, _ = load_model(args.source, args.xacro_args, args.package_path, INIT_WORDS)
+    given = xacro_arguments(args)
+    robot, _ = load_model(args.source, given, args.package_path, INIT_WORDS)
     for note in robot.read_warnings:  # e.g. X101: a .urdf file expanded as Xacro
         print(note, file=sys.stderr)
     if args.fix:
         robot = copy.deepcopy(robot)
-    for line in preflight(robot, repair=args.fix, allow_errors=args.allow_errors):
+    for line in preflight(robot, repair=args.fix, allow_errors=args.allow_errors,
+                          radius=args.fix_radius, search_paths=args.package_path):
         print(line, file=sys.stderr)
     written, warnings = create_package(
         spec, robot, force=args.force, source=args.source or 'the built-in example',
-        search_paths=args.package_path)
+        search_paths=args.package_path,
+        xacro_args=parse_xacro_args(given, INIT_WORDS))
     for warning in warnings:
         print(f'warning: {warning}', file=sys.stderr)
     print(f'created {spec.root} ({len(written)} files, {spec.build_type}): '
           f'colcon build --packages-select {spec.name}')
     return 0
+
+
+def xacro_arguments(args: argparse.Namespace) -> list[str]:
+    """
+    Return the Xacro arguments given, as ``NAME:=VALUE`` or after ``--xacro-args``.
+
+    :raises UrdfgenpyError: for a word that is neither, or arguments without ``--from``.
+    """
+    for word in args.mappings:
+        if ':=' not in word:
+            raise UrdfgenpyError(f'unexpected argument {word!r}: after the package name come '
+                                 'Xacro arguments, NAME:=VALUE (see urdfgenpy init --help)')
+    given = [*args.xacro_args, *args.mappings]
+    if given and not args.source:
+        raise UrdfgenpyError(f'Xacro arguments {" ".join(given)} without --from: name the '
+                             'Xacro file they are for (--from robot.urdf.xacro)')
+    return given
+
+
+def _positive(text: str) -> float:
+    """Return ``text`` as a positive number of metres (argparse's type)."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (value > 0.0 and math.isfinite(value)):
+        raise argparse.ArgumentTypeError(f'{text!r} is not a positive length in metres')
+    return value
 
 
 class _Parser(argparse.ArgumentParser):
@@ -106,4 +165,6 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser = _Parser(prog='urdfgenpy init', description='Create a ROS 2 description package.')
     add_arguments(parser)
     front_end = FrontEnd(parser.prog)
-    return exit_status(front_end, lambda: run(parser.parse_args(argv), parser.prog))
+    # intermixed: NAME:=VALUE may come after the options, as in every other command
+    return exit_status(front_end,
+                       lambda: run(parser.parse_intermixed_args(argv), parser.prog))

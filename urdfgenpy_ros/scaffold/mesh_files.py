@@ -13,17 +13,20 @@
 # limitations under the License.
 
 """
-The files a mesh refers to beside itself: a COLLADA file's images, an OBJ file's materials.
+Where a mesh goes in the new package, and the files it refers to beside itself.
 
-A mesh copied into a package without them loses its textures; they are copied along,
-under the same relative names.
+A mesh keeps its file name; two different meshes of one name keep the folders their URIs
+name below their package (``visual/base.stl``, ``collision/base.stl``), then the
+package's name before them: readable names, never a hash. A COLLADA file's images and an
+OBJ file's materials are copied along, under the same names relative to the mesh.
 """
 
 from __future__ import annotations
 
 from pathlib import Path, PurePosixPath
+import posixpath
 import re
-from urllib.parse import unquote
+from urllib.parse import unquote, urlparse
 
 _INIT_FROM = re.compile(rb'<init_from>\s*([^<\s]+)\s*</init_from>')
 _MTLLIB = re.compile(rb'^\s*mtllib\s+(.+?)\s*$', re.MULTILINE)
@@ -61,3 +64,33 @@ def companions(mesh: Path, data: bytes) -> dict[str, Path]:
                               for inner, inner_path in companions(
                                   path, path.read_bytes()).items()})
     return found
+
+
+def mesh_names(uri: str) -> list[str]:
+    """
+    Return the names ``uri``'s mesh may take under ``meshes/``, the shortest first.
+
+    ``package://pkg/meshes/visual/../base.stl`` gives ``base.stl``, then ``pkg/base.stl``;
+    ``package://pkg/meshes/visual/base.stl`` gives ``base.stl``, ``visual/base.stl``,
+    ``pkg/visual/base.stl``. The path is normalised first (no ``..`` is left).
+    """
+    parsed = urlparse(uri)
+    path = unquote(parsed.path if parsed.scheme in ('package', 'file') else uri)
+    parts = [part for part in posixpath.normpath('/' + path.replace('\\', '/')).split('/')
+             if part and part != '..']
+    if not parts:
+        return []
+    if parsed.scheme == 'package' and parsed.netloc:
+        package = parsed.netloc
+    else:  # a path or file URI: the folders above it stand for a package
+        package, parts = (parts[-3] if len(parts) > 2 else ''), parts[-2:]
+    inside = parts[1:] if len(parts) > 1 and parts[0] in ('meshes', 'mesh', 'models') \
+        else parts
+    names = ['/'.join(inside[index:]) for index in range(len(inside) - 1, -1, -1)]
+    return names + ([f'{package}/{names[-1]}'] if package else [])
+
+
+def numbered(name: str, number: int) -> str:
+    """Return ``name`` with ``_<number>`` before its suffix: ``base_2.stl``."""
+    stem, dot, suffix = name.rpartition('.')
+    return f'{stem}_{number}.{suffix}' if dot and stem else f'{name}_{number}'

@@ -23,25 +23,31 @@ scaffold them as they are (``--allow-errors``).
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from os import PathLike
+
 from urdfgenpy_ros.errors import UrdfgenpyError, ValidationError
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.checklist import review, ReviewOptions
-from urdfgenpy_ros.validation.fix_output import fix_for_output
+from urdfgenpy_ros.validation.fix_output import DEFAULT_RADIUS, fix_for_output
 
 
-def preflight(robot: Robot, *, repair: bool = False, allow_errors: bool = False) -> list[str]:
+def preflight(robot: Robot, *, repair: bool = False, allow_errors: bool = False,
+              radius: float = DEFAULT_RADIUS,
+              search_paths: Sequence[str | PathLike[str]] = ()) -> list[str]:
     """
     Return the lines to print about ``robot``'s errors (repairs and findings kept).
 
-    With ``repair`` the fixable errors are repaired in ``robot`` (give it a copy).
+    With ``repair`` the fixable errors are repaired in ``robot`` (give it a copy): a
+    tensor from the link's shapes (meshes found through ``search_paths``), else a solid
+    sphere's of ``radius``, as ``convert --fix`` does.
 
     :raises UrdfgenpyError: when errors remain and ``allow_errors`` is not set.
     """
     errors = _errors(robot)
     lines = []
     if errors and repair:  # as convert --fix: a link without shapes gets a sphere's tensor
-        lines += [line.replace('--fix-radius sets the size', 'urdfgenpy convert --fix-radius '
-                               'sets another size') for line in fix_for_output(robot)]
+        lines += fix_for_output(robot, radius, search_paths)
         errors = _errors(robot)
     lines += [str(error) for error in errors]
     if errors and not allow_errors:

@@ -16,11 +16,12 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 import copy
 import datetime
-import hashlib
 import os
 from pathlib import Path
+import posixpath
 import shutil
 
 from urdfgenpy_ros.assembly import prefixed
@@ -35,7 +36,9 @@ from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.scaffold.assets import copy_referenced_files, with_find
-from urdfgenpy_ros.scaffold.mesh_files import companions
+from urdfgenpy_ros.scaffold.described import (baked_arguments, hardware_warnings,
+                                              referenced_packages)
+from urdfgenpy_ros.scaffold.mesh_files import companions, mesh_names, numbered
 from urdfgenpy_ros.scaffold.sensors_read import sensors_of
 from urdfgenpy_ros.scaffold.spec import PackageSpec
 from urdfgenpy_ros.scaffold.templates import template_root
@@ -88,17 +91,29 @@ def _meshes(spec: PackageSpec, robot: Robot, search_paths: list[str],
                     warnings.append(f'mesh {mesh.filename!r} not copied: {error}')
                     renamed[mesh.filename] = mesh.filename
                     continue
-                name = Path(mesh.filename.split('://', 1)[-1]).name
-                if name in files and files[name] != data:
-                    name = f'{hashlib.sha1(data).hexdigest()[:8]}_{name}'
+                name = _free_name(files, mesh.filename, data)
                 files[name] = data
+                folder = posixpath.dirname(name)
                 for relative, content in beside.items():  # textures, materials: along
+                    relative = posixpath.join(folder, relative)
                     if files.setdefault(relative, content) != content:
                         warnings.append(f'{relative} of mesh {mesh.filename!r} not copied: '
                                         'another mesh has a different file of that name')
                 renamed[mesh.filename] = f'package://{spec.name}/meshes/{name}'
             item.geometry = Mesh(renamed[mesh.filename], mesh.scale)
     return {f'meshes/{name}': data for name, data in files.items()}
+
+
+def _free_name(files: dict[str, bytes], uri: str, data: bytes) -> str:
+    """Return the readable name under meshes/ for ``uri``'s ``data`` (mesh_names)."""
+    names = mesh_names(uri) or ['mesh']
+    for name in names:
+        if files.get(name, data) == data:
+            return name
+    number = 2
+    while files.get(numbered(names[-1], number), data) != data:
+        number += 1
+    return numbered(names[-1], number)
 
 
 def _macro_file(name: str, lines: list[str]) -> str:
@@ -155,14 +170,24 @@ def _urdf_files(spec: PackageSpec, robot: Robot) -> tuple[dict[str, bytes], list
 
 def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in example',
                    search_paths: list[str] | None = None,
-                   templates: Path | None = None) -> tuple[dict[str, bytes], list[str]]:
-    """Return every file of the package (path relative to it: bytes) and any warnings."""
+                   templates: Path | None = None,
+                   xacro_args: Mapping[str, str] | None = None
+                   ) -> tuple[dict[str, bytes], list[str]]:
+    """
+    Return every file of the package (path relative to it: bytes) and any warnings.
+
+    ``xacro_args`` are those the source was expanded with: the package holds the robot
+    with their values (and the declared defaults of the others), which it says.
+    """
     try:
         import jinja2
     except ImportError:
         raise MissingDependencyError('jinja2', 'scaffold', 'urdfgenpy init') from None
     from urdfgenpy_ros.viewer.pictures import package_pictures
     pictures, warnings = package_pictures(robot, search_paths or ())  # before URIs change
+    baked = baked_arguments(robot, xacro_args or {})
+    warnings += _baked_note(baked) + hardware_warnings(robot, baked)
+    depends = referenced_packages(robot, PackageResolver(search_paths or ()))
     robot = copy.deepcopy(robot)
     root = templates or template_root()
     files = _meshes(spec, robot, list(search_paths or ()), warnings)
@@ -183,7 +208,8 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
         'pictures': sorted(pictures),
         'includes': includes, 'mesh_count': sum(p.startswith('meshes/') for p in files),
         'year': datetime.date.today().year,
-        'exec_depends': sorted(set(LAUNCH_DEPENDS) | set(spec.dependencies)),
+        'exec_depends': sorted({*LAUNCH_DEPENDS, *spec.dependencies, *depends}),
+        'baked_arguments': baked,
         'sensor_displays': [{'plugin': _DISPLAYS[sensor.kind], 'name': sensor.name,
                              'topic': sensor.topic if sensor.topic.startswith('/')
                              else f'/{sensor.topic}'}
@@ -206,6 +232,19 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
     return files, warnings
 
 
+def _baked_note(baked: list[tuple[str, str, bool]]) -> list[str]:
+    """Return the line that says which Xacro argument values the package holds."""
+    if not baked:
+        return []
+    given = [f'{name}:={value}' for name, value, said in baked if said]
+    default = [f'{name}:={value or repr(value)}' for name, value, said in baked if not said]
+    parts = ([f'{" ".join(given)} (given)'] if given else []) + (
+        [f'{" ".join(default)} (the defaults)'] if default else [])
+    return [f'the package holds the robot as xacro expanded it with {" and ".join(parts)}: '
+            'its files do not take these arguments (run urdfgenpy init again with '
+            'NAME:=VALUE for other values; its README lists them)']
+
+
 def _template_outputs(root: Path, build_type: str) -> set[str]:
     """Return the package paths the templates write (copied files must not take them)."""
     return {path.relative_to(root / folder).as_posix()[:-len('.jinja')]
@@ -219,7 +258,8 @@ def _shown(source: str) -> str:
 
 def create_package(spec: PackageSpec, robot: Robot, *, force: bool = False,
                    source: str = 'the built-in example', search_paths: list[str] | None = None,
-                   templates: Path | None = None) -> tuple[list[Path], list[str]]:
+                   templates: Path | None = None, xacro_args: Mapping[str, str] | None = None
+                   ) -> tuple[list[Path], list[str]]:
     """
     Write the package; return the files written and any warnings.
 
@@ -229,7 +269,7 @@ def create_package(spec: PackageSpec, robot: Robot, *, force: bool = False,
 
     :raises UrdfgenpyError: with one line saying what is wrong and how to go on.
     """
-    files, warnings = render_package(spec, robot, source, search_paths, templates)
+    files, warnings = render_package(spec, robot, source, search_paths, templates, xacro_args)
     root = spec.root
     if root.exists() and not root.is_dir():
         raise UrdfgenpyError(f'{root} exists and is not a folder: choose another name or '

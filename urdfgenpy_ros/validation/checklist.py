@@ -174,12 +174,13 @@ class Review:
 
     def fix(self) -> list[Repair]:
         """Repair the ``repairable`` findings in ``robot``, in place; return what was done."""
-        return fix(self.robot, self.repairable, dict(self.options.limit_defaults))
+        return fix(self.robot, self.repairable, dict(self.options.limit_defaults),
+                   self.options.search_paths)
 
     def preview(self) -> list[Repair]:
         """Return what ``fix()`` would do, made on a copy: ``robot`` is left as it is."""
         return fix(copy.deepcopy(self.robot), self.repairable,
-                   dict(self.options.limit_defaults))
+                   dict(self.options.limit_defaults), self.options.search_paths)
 
 
 # ---- the checks -------------------------------------------------------------------------
@@ -283,5 +284,6 @@ def review(robot: Robot, options: ReviewOptions | None = None) -> Review:
         else:
             result.suppressed.append(Suppressed(finding, reason, silencing.source(finding)))
     result.repairable = [finding for finding in result.findings if finding.code in FIXABLE]
-    result.needs = missing_defaults(robot, result.repairable, dict(options.limit_defaults))
+    result.needs = missing_defaults(robot, result.repairable, dict(options.limit_defaults),
+                                    options.search_paths)
     return result

@@ -106,6 +106,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'M507': (W, 'MuJoCo warns while compiling the model'),
     'M508': (W, "MuJoCo's URDF import makes no actuator of a <ros2_control> command interface"),
     'M509': (W, "MuJoCo's URDF import ignores <gazebo> friction (mu1, mu2)"),
+    'M510': (W, 'collision mesh wound inside out (negative volume)'),
     # MJCF export (formats/mjcf/losses.py): what the MJCF cannot carry
     'M801': (W, 'MJCF has no joint velocity limit'),
     'M802': (W, 'MJCF has no safety controller'),
@@ -130,9 +131,12 @@ PREFLIGHT_HINTS: dict[str, str] = {
     'M504': 'split the collision mesh into convex parts, or use primitive shapes',
     'M505': 'MuJoCo says why in the message; fix what it names',
     'M507': 'MuJoCo ignores or changes what it names: check the simulation does not need it',
-    'M506': 'MuJoCo reads STL, OBJ and MSH meshes: convert it, or give --package-path',
+    'M506': 'MuJoCo reads STL, OBJ and MSH meshes: convert it (urdfgenpy convert ROBOT '
+            'robot.xml converts DAE, GLB, GLTF and PLY meshes for the MJCF it writes)',
     'M508': 'urdfgenpy convert ROBOT robot.xml writes it as an actuator (docs/mujoco.md)',
     'M509': "urdfgenpy convert ROBOT robot.xml gives the link's collision geoms that friction",
+    'M510': 'flip its triangles (trimesh: mesh.invert(); MeshLab: Filters > Normals > Invert '
+            'Faces Orientation) and export it again',
     'G601': '<gazebo reference="JOINT"><preserveFixedJoint>true</preserveFixedJoint></gazebo> '
             'keeps the link (and its frame) in Gazebo',
     'G602': 'give the link a mass and inertia (Inertial.from_geometry): Gazebo drops it',

@@ -18,7 +18,8 @@ Repair what has one right answer (``urdfgenpy check --fix``), in the model.
 The robot is edited in place; written back by the lossless writer, only the repaired
 elements' lines change. Fixed: a non-unit axis (J102, normalised), lower > upper (J104,
 swapped), a non-physical tensor (I202, I203: replaced by the tensor of
-the link's first collision, else visual, box, cylinder or sphere with the link's mass), an
+the link's first collision, else visual, box, cylinder, sphere, capsule or closed mesh with
+the link's mass), an
 inertia on the root (I205: a massless root link above it), and, only with the defaults the
 user gives, a missing ``<limit>`` (J103) or a zero effort or velocity (J106);
 ``missing_defaults`` says which values those still lack. Everything else (a zero axis, a
@@ -27,18 +28,21 @@ missing mimic target, ...) has no single right answer and stays.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 import math
+from os import PathLike
 import re
 from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.errors import SourceLocation, ValidationError
 from urdfgenpy_ros.floats import fmt, fmt_vec
-from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Sphere
+from urdfgenpy_ros.geometry import Mesh
 from urdfgenpy_ros.inertial import Inertial
 from urdfgenpy_ros.joint import Joint, JointLimit, JointType
-from urdfgenpy_ros.link import Collision, Link, Visual
+from urdfgenpy_ros.link import Link
 from urdfgenpy_ros.transforms import from_xyz_rpy
+from urdfgenpy_ros.validation.fix_tensor import TensorSources
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -70,16 +74,26 @@ class Repair:
                 'message': self.message}
 
 
+@dataclass
+class _Context:
+    """What the repairs are given: the limit defaults, and where the meshes are."""
+
+    defaults: dict[str, float]
+    sources: TensorSources
+
+
 def fix(robot: Robot, findings: list[ValidationError],
-        limit_defaults: dict[str, float] | None = None) -> list[Repair]:
+        limit_defaults: dict[str, float] | None = None,
+        search_paths: Sequence[str | PathLike[str]] = ()) -> list[Repair]:
     """
     Repair the fixable ``findings`` of ``robot`` in place; return what was done.
 
     ``limit_defaults`` (``lower upper effort velocity``) allow J103 (all four needed) and
-    J106 (the zero one needed). Findings suppressed by the caller are not passed in, so
-    they are not touched.
+    J106 (the zero one needed); ``search_paths`` find the package of a mesh a tensor is
+    taken from. Findings suppressed by the caller are not passed in, so they are not
+    touched.
     """
-    defaults = dict(limit_defaults or {})
+    context = _Context(dict(limit_defaults or {}), TensorSources.of(robot, search_paths))
     repairs: list[Repair] = []
     done: set[tuple[str, str]] = set()
     for finding in findings:
@@ -88,7 +102,7 @@ def fix(robot: Robot, findings: list[ValidationError],
         owner = _owner(robot, finding)
         if owner is None or (finding.code, finding.element) in done:
             continue
-        message = _REPAIRS[finding.code](robot, owner, defaults)
+        message = _REPAIRS[finding.code](robot, owner, context)
         if message is not None:
             done.add((finding.code, finding.element))
             repairs.append(Repair(finding.code, finding.element, finding.location, message))
@@ -105,7 +119,7 @@ def _owner(robot: Robot, finding: ValidationError) -> Link | Joint | None:
     return robot.get_joint(name) if robot.has_joint(name) else None
 
 
-def _axis(robot: Robot, joint: Link | Joint, defaults: dict[str, float]) -> str | None:
+def _axis(robot: Robot, joint: Link | Joint, context: _Context) -> str | None:
     assert isinstance(joint, Joint)
     axis = joint.axis
     norm = math.sqrt(sum(value * value for value in axis)) if axis else 0.0
@@ -115,7 +129,7 @@ def _axis(robot: Robot, joint: Link | Joint, defaults: dict[str, float]) -> str 
     return f'axis {fmt_vec(axis)} normalised to {fmt_vec(joint.axis)}'
 
 
-def _swap(robot: Robot, joint: Link | Joint, defaults: dict[str, float]) -> str | None:
+def _swap(robot: Robot, joint: Link | Joint, context: _Context) -> str | None:
     assert isinstance(joint, Joint)
     limit = joint.limit
     if limit is None or not limit.lower > limit.upper:
@@ -124,8 +138,9 @@ def _swap(robot: Robot, joint: Link | Joint, defaults: dict[str, float]) -> str 
     return f'<limit> lower and upper swapped: [{fmt(limit.lower)}, {fmt(limit.upper)}]'
 
 
-def _add_limit(robot: Robot, joint: Link | Joint, defaults: dict[str, float]) -> str | None:
+def _add_limit(robot: Robot, joint: Link | Joint, context: _Context) -> str | None:
     assert isinstance(joint, Joint)
+    defaults = context.defaults
     if joint.limit is not None or not all(name in defaults for name in LIMIT_FIELDS):
         return None
     joint.limit = JointLimit(defaults['lower'], defaults['upper'],
@@ -134,9 +149,9 @@ def _add_limit(robot: Robot, joint: Link | Joint, defaults: dict[str, float]) ->
                                       for name in LIMIT_FIELDS) + '/> from the defaults given'
 
 
-def _zero_limit(robot: Robot, joint: Link | Joint, defaults: dict[str, float]) -> str | None:
+def _zero_limit(robot: Robot, joint: Link | Joint, context: _Context) -> str | None:
     assert isinstance(joint, Joint)
-    limit = joint.limit
+    limit, defaults = joint.limit, context.defaults
     if limit is None or not joint.type.is_movable:
         return None
     changed = []
@@ -147,34 +162,28 @@ def _zero_limit(robot: Robot, joint: Link | Joint, defaults: dict[str, float]) -
     return f'<limit> {" and ".join(changed)} from the defaults given' if changed else None
 
 
-def _tensor(robot: Robot, link: Link | Joint, defaults: dict[str, float]) -> str | None:
+def _tensor(robot: Robot, link: Link | Joint, context: _Context) -> str | None:
     assert isinstance(link, Link)
-    found = _solid_shape(link)
-    if found is None:
+    inertial = link.inertial
+    if inertial is None or not inertial.mass > 0.0:
         return None
-    kind, item = found
-    inertial, shape = link.inertial, item.geometry
-    assert inertial is not None
-    solid = Inertial.from_geometry(inertial.mass, shape)
+    found = context.sources.solid(link)
+    if isinstance(found, str):
+        return None
+    kind, item, solid = found
     values = _turned(solid, item.origin.rpy, inertial.origin.rpy)
     inertial.ixx, inertial.ixy, inertial.ixz = values[0], values[1], values[2]
     inertial.iyy, inertial.iyz, inertial.izz = values[3], values[4], values[5]
-    offset = math.dist(item.origin.xyz, inertial.origin.xyz)
+    turn = from_xyz_rpy(item.origin.xyz, item.origin.rpy)
+    centre = tuple(sum(turn[i][j] * solid.origin.xyz[j] for j in range(3)) + turn[i][3]
+                   for i in range(3))  # the solid's centre, in the link's frame
+    offset = math.dist(centre, inertial.origin.xyz)
     note = (f"; its centre of mass is {offset:.3g} m from the shape's centre"
             if offset > 1e-9 else '')
-    return (f'inertia replaced by that of its {kind} {type(shape).__name__.lower()}'
-            f' with mass {fmt(inertial.mass)} (a solid of uniform density: check it){note}')
-
-
-def _solid_shape(link: Link) -> tuple[str, Visual | Collision] | None:
-    """Return the first collision (else visual) a tensor can be taken from, with its kind."""
-    if link.inertial is None or not link.inertial.mass > 0.0:
-        return None
-    for kind, items in (('collision', link.collisions), ('visual', link.visuals)):
-        for item in items:
-            if isinstance(item.geometry, (Box, Cylinder, Sphere, Capsule)):
-                return kind, item
-    return None
+    what = (f'{kind} mesh {item.geometry.filename!r}' if isinstance(item.geometry, Mesh)
+            else f'{kind} {type(item.geometry).__name__.lower()}')
+    return (f'inertia replaced by that of its {what} with mass {fmt(inertial.mass)} '
+            f'(a solid of uniform density: check it){note}')
 
 
 def _turned(solid: Inertial, shape_rpy: tuple[float, float, float],
@@ -194,7 +203,7 @@ def _turned(solid: Inertial, shape_rpy: tuple[float, float, float],
     return out[0][0], out[0][1], out[0][2], out[1][1], out[1][2], out[2][2]
 
 
-def _new_root(robot: Robot, link: Link | Joint, defaults: dict[str, float]) -> str | None:
+def _new_root(robot: Robot, link: Link | Joint, context: _Context) -> str | None:
     assert isinstance(link, Link)
     if len(robot.roots) != 1 or robot.roots[0] is not link:
         return None
@@ -209,13 +218,15 @@ def _new_root(robot: Robot, link: Link | Joint, defaults: dict[str, float]) -> s
 
 
 def missing_defaults(robot: Robot, findings: list[ValidationError],
-                     limit_defaults: dict[str, float] | None = None) -> list[str]:
+                     limit_defaults: dict[str, float] | None = None,
+                     search_paths: Sequence[str | PathLike[str]] = ()) -> list[str]:
     """
     Return, after ``fix``, why J103 and J106 findings are still there: the values missing.
 
     One sentence per code and set of missing values, naming the joints, e.g. ``J103 not
-    fixed for joint 'wrist': --limit-default has no lower, upper (...)``. Empty when every
-    J103 and J106 finding was repaired.
+    fixed for joint 'wrist': --limit-default has no lower, upper (...)``, and one per I202
+    and I203 whose link has no shape a tensor can be taken from (meshes found through
+    ``search_paths``). Empty when every such finding was repaired.
     """
     defaults = dict(limit_defaults or {})
     missing: dict[tuple[str, tuple[str, ...]], list[str]] = {}
@@ -245,23 +256,32 @@ def missing_defaults(robot: Robot, findings: list[ValidationError],
         lines.append(f'{code} not fixed for joint {", ".join(map(repr, joints))}: '
                      f'--limit-default has no {"positive " if code == "J106" else ""}'
                      f'{", ".join(lacking)} ({why}: add --limit-default {example})')
-    return lines + _shapeless(robot, findings)
+    return lines + _shapeless(robot, findings, search_paths)
 
 
-def _shapeless(robot: Robot, findings: list[ValidationError]) -> list[str]:
-    """Return why I202/I203 findings stay: the link has no shape to take a tensor from."""
-    links: dict[str, list[str]] = {}
+def _shapeless(robot: Robot, findings: list[ValidationError],
+               search_paths: Sequence[str | PathLike[str]]) -> list[str]:
+    """Return why I202/I203 findings stay: no shape, or no mesh, to take a tensor from."""
+    links: dict[tuple[str, str], list[str]] = {}
+    sources = None
     for finding in findings:
         link = _owner(robot, finding) if finding.code in ('I202', 'I203') else None
-        if not isinstance(link, Link) or link.inertial is None or _solid_shape(link):
+        if not isinstance(link, Link) or link.inertial is None:
             continue
-        names = links.setdefault(finding.code, [])
+        reason = ''
+        if link.inertial.mass > 0.0:
+            sources = sources or TensorSources.of(robot, search_paths)
+            found = sources.solid(link)
+            if not isinstance(found, str):
+                continue
+            reason = f' ({found})' if found else ''
+        names = links.setdefault((finding.code, reason), [])
         if link.name not in names:
             names.append(link.name)
     return [f'{code} not fixed for link {", ".join(map(repr, names))}: no box, cylinder, sphere '
-            'or capsule with a positive mass to take a tensor from (give it an <inertia>: '
-            'urdfgenpy inertia MESH --mass KG prints the one of its mesh)'
-            for code, names in links.items()]
+            f'or capsule, nor a closed mesh, with a positive mass to take a tensor from{reason} '
+            '(give it an <inertia>: urdfgenpy inertia MESH --mass KG prints the one of its '
+            'mesh)' for (code, reason), names in links.items()]
 
 
 _REPAIRS = {'J102': _axis, 'J104': _swap, 'J103': _add_limit, 'J106': _zero_limit,

@@ -23,6 +23,8 @@ solid sphere of the link's mass and of radius ``radius``, its centre of mass kep
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from os import PathLike
 from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.errors import Severity, ValidationError
@@ -39,21 +41,29 @@ DEFAULT_RADIUS = 0.05
 _TENSORS = ('I202', 'I203')
 
 
-def fix_for_output(robot: Robot, radius: float = DEFAULT_RADIUS) -> list[str]:
-    """Repair ``robot``'s fixable errors in place; return one line per repair (or refusal)."""
-    found = review(robot, ReviewOptions(check_meshes=False, suppressions=False))
+def fix_for_output(robot: Robot, radius: float = DEFAULT_RADIUS,
+                   search_paths: Sequence[str | PathLike[str]] = (),
+                   radius_option: str = '--fix-radius') -> list[str]:
+    """
+    Repair ``robot``'s fixable errors in place; return one line per repair (or refusal).
+
+    A tensor comes from the link's shapes, meshes found through ``search_paths``; a
+    link without one gets a sphere's of ``radius``, which ``radius_option`` sets.
+    """
+    found = review(robot, ReviewOptions(check_meshes=False, suppressions=False,
+                                        search_paths=search_paths))
     errors = [finding for finding in found.repairable if finding.severity is Severity.ERROR]
-    repairs = fix(robot, errors)
+    repairs = fix(robot, errors, search_paths=search_paths)
     done = {(repair.code, repair.element) for repair in repairs}
     lines = [str(repair) for repair in repairs]
     for finding in errors:
         if finding.code in _TENSORS and (finding.code, finding.element) not in done:
-            lines.append(_sphere(robot, finding, radius))
+            lines.append(_sphere(robot, finding, radius, radius_option))
             done.add((finding.code, finding.element))
     return lines
 
 
-def _sphere(robot: Robot, finding: ValidationError, radius: float) -> str:
+def _sphere(robot: Robot, finding: ValidationError, radius: float, option: str) -> str:
     """Give a link without shapes the tensor of a solid sphere; return the line saying so."""
     name = finding.element.split("'", 2)[1]
     inertial = robot.get_link(name).inertial if robot.has_link(name) else None
@@ -66,4 +76,4 @@ def _sphere(robot: Robot, finding: ValidationError, radius: float) -> str:
     return str(Repair(finding.code, finding.element, finding.location,
                       f'inertia replaced by that of a solid sphere of radius {fmt(radius)} m '
                       f'with mass {fmt(inertial.mass)} (it has no shape to take one from: '
-                      '--fix-radius sets the size)'))
+                      f'{option} sets the size)'))

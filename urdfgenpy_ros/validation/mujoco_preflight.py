@@ -190,11 +190,11 @@ def _compilable(robot: Robot, findings: Findings, search_paths: list[Any],
                 try:
                     # absolute: MuJoCo compiles in a folder of its own (see _quiet)
                     path = resolver.resolve(geometry.filename, base).resolve()
-                except UrdfgenpyError as error:
+                except UrdfgenpyError as error:  # the message says how to find it
                     findings.add('M506', robot.get_link(link.name), f'link {link.name!r}',
                                  where, f'collision mesh not found ({error}): MuJoCo refuses '
                                  'the model; the pre-flight went on without it',
-                                 PREFLIGHT_HINTS['M506'], 'mesh')
+                                 'make the file findable as the message says', 'mesh')
                     continue
                 if path.suffix.lower() not in MESH_FORMATS:
                     findings.add('M506', robot.get_link(link.name), f'link {link.name!r}',
@@ -310,6 +310,10 @@ def _hulls(meshes: list[_MeshUse], findings: Findings) -> None:
             mesh: Any = trimesh.load(str(path), force='mesh')
         except Exception:  # noqa: B902 - a mesh trimesh cannot read was read by MuJoCo
             continue
+        if mesh.is_watertight and mesh.volume < 0.0:
+            _inside_out(findings, name, where, path, mesh, scale)
+            mesh = mesh.copy()
+            mesh.invert()  # is it convex, the right way out?
         if mesh.is_convex:
             continue
         hull = mesh.convex_hull.volume * scale  # the URDF's scale applied: m^3
@@ -318,6 +322,17 @@ def _hulls(meshes: list[_MeshUse], findings: Findings) -> None:
         findings.add('M504', robot.get_link(name), f'link {name!r}', where,
                      f'{path.name} is not convex; MuJoCo collides with its convex hull{size}',
                      PREFLIGHT_HINTS['M504'], 'mesh')
+
+
+def _inside_out(findings: Findings, name: str, where: str, path: Path, mesh: Any,
+                scale: float) -> None:
+    """Report a closed mesh whose triangles face inwards (M510): its volume is negative."""
+    findings.add('M510', findings.robot.get_link(name), f'link {name!r}', where,
+                 f'{path.name} is wound inside out: its triangles face inwards (signed volume '
+                 f'{mesh.volume * scale:.4g} m^3); MuJoCo collides with its convex hull, '
+                 'which does not mind, but refuses it where it takes inertia from the mesh '
+                 '(<mesh inertia="exact">: "mesh volume is negative"), and viewers that cull '
+                 'back faces show its inside', PREFLIGHT_HINTS['M510'], 'mesh')
 
 
 def _dropped_by_import(robot: Robot, findings: Findings) -> None:
