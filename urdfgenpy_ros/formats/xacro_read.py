@@ -30,6 +30,7 @@ from urdfgenpy_ros.errors import (
     MissingDependencyError, ParseError, ReadWarning, SourceLocation)
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
 from urdfgenpy_ros.formats.xacro_args import unknown_arguments
+from urdfgenpy_ros.formats.xacro_map import recording, source_map, XacroMap
 from urdfgenpy_ros.report import folder_fix
 from urdfgenpy_ros.resources import PackageResolver
 
@@ -99,12 +100,15 @@ def _finding_with(resolver: PackageResolver) -> Iterator[None]:
 
 def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
                  resolver: PackageResolver | None = None,
-                 warnings: list[ReadWarning] | None = None) -> tuple[str, list[str]]:
+                 warnings: list[ReadWarning] | None = None,
+                 maps: list[XacroMap] | None = None) -> tuple[str, list[str]]:
     """
     Return the URDF text ``xacro`` makes of ``path`` and every file it included.
 
     What xacro would print on stderr is not printed: its warnings are appended to
     ``warnings`` (code X102) and, when expansion fails, end the error's one line.
+    Given ``maps``, the source map of the text (where each element was written) is
+    appended to it; the text is the same either way.
 
     :raises ParseError: with xacro's message, when expansion fails (code X001).
     """
@@ -116,7 +120,7 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
     stack: list[str] = []
     try:
         with _LOCK, redirect_stderr(printed), _fresh_state(xacro) as includes, \
-                _finding_with(resolver):
+                _finding_with(resolver), _mapping(xacro, maps is not None) as recorder:
             try:
                 document = xacro.process_file(str(path), mappings=dict(mappings or {}))
             except Exception:  # noqa: B902 - where it was, before the stacks are reset
@@ -143,7 +147,20 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
         warnings += [ReadWarning(where, 'X102', f'xacro: {line}')
                      for line in _xacro_warnings(printed.getvalue())]
     included = [str(Path(name).resolve()) for name in names]
-    return document.toprettyxml(indent='  '), included
+    text = document.toprettyxml(indent='  ')
+    if maps is not None and recorder is not None:
+        maps.append(source_map(recorder, document, text))
+    return text, included
+
+
+@contextmanager
+def _mapping(xacro: Any, wanted: bool) -> Iterator[Any]:
+    """Record the source map of the expansion inside, when ``wanted``."""
+    if not wanted:
+        yield None
+        return
+    with recording(xacro) as recorder:
+        yield recorder
 
 
 _XML_AT = re.compile(r'line (\d+), column (\d+)')
@@ -193,14 +210,17 @@ def read_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = N
                cls: type[Robot] | None = None) -> Robot:
     """Expand the Xacro file ``path`` with ``mappings`` (``name: value``) and read it."""
     said: list[ReadWarning] = []
+    maps: list[XacroMap] = []
     text, included = expand_xacro(path, mappings, PackageResolver(search_paths, packages),
-                                  said)
+                                  said, maps)
     try:
         robot = read_urdf_bytes(text.encode('utf-8'), f'{path} (expanded)', cls)
     except ParseError as error:
         from urdfgenpy_ros.validation.xacro_source import error_in_source
         raise no_robot_in(path, text) or error_in_source(
-            error, text, [str(Path(path).resolve()), *included], str(path)) from None
+            error, text, [str(Path(path).resolve()), *included], str(path),
+            maps[0]) from None
+    robot.source_map = maps[0]
     if not robot.links:  # a macro library with a robot name (franka's fr3.xacro)
         library = no_robot_in(path, text)
         if library is not None:
