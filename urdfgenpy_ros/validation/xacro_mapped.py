@@ -92,7 +92,7 @@ def place(expanded: int, main: str, source_map: XacroMap, path: str | None,
     origin = source_map.lines[expanded]
     where, via = origin.where, origin.via
     line, column = where.line, where.column
-    chosen = _named(origin, text, False)
+    chosen = _named(origin, text, expanded not in source_map.children)  # a leaf: its value
     for tag, row in source_map.children.get(expanded, ()) if chosen is None else ():
         if row in source_map.lines and _mentions(text, tag):
             chosen = _named(source_map.lines[row], text, True)
@@ -114,13 +114,14 @@ def _named(origin: Origin, text: str, alone: bool) -> Attribute | None:
     """
     Return the expression attribute of the tag at ``origin`` that ``text`` names.
 
-    With ``alone``, the tag's only expression attribute also counts as named.
+    With ``alone``, the tag's only expression attribute also counts as named. A ``name``
+    is the element's identity, not a value a finding is about: it is never chosen.
     """
     where = origin.where
     if where.file is None or where.line is None or where.column is None:
         return None
     made = [attribute for attribute in attributes(where.file, where.line, where.column)
-            if is_expression(attribute.value)]
+            if is_expression(attribute.value) and attribute.name != 'name']  # not a value
     named = [attribute for attribute in made if _mentions(text, attribute.name)]
     if named:
         return named[0]
