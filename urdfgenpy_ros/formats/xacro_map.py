@@ -45,14 +45,58 @@ class Origin(NamedTuple):
     via: tuple[SourceLocation, ...] = ()  # innermost first: macro calls and includes
 
 
-class XacroMap(NamedTuple):
+_Raw = tuple[str, int, int, tuple[SourceLocation, ...]]  # file, line, column, via
+
+
+class XacroMap:
     """A map from the lines of an expansion to the source of the element on each."""
 
-    lines: dict[int, Origin]
-    properties: dict[str, list[SourceLocation]]  # name as written -> its definitions
-    children: dict[int, list[tuple[str, int]]]  # line -> (tag, line) of each child element
+    def __init__(self, lines: dict[int, _Raw], properties: dict[str, list[SourceLocation]],
+                 text: str) -> None:
+        self.raw = lines
+        self.properties = properties  # name as written -> its definitions
+        self._text = text
+        self._tree: tuple[dict[int, str], dict[int, list[tuple[str, int]]]] | None = None
 
-    tags: dict[int, str]  # line -> the tag of the element on it
+    @property
+    def lines(self) -> dict[int, Origin]:
+        """Return every line's origin (a new dict: for tests and tools, not the hot path)."""
+        return {line: self.at(line) for line in self.raw}  # type: ignore[misc]
+
+    def at(self, line: int) -> Origin | None:
+        """Return the origin of the element whose start tag is on ``line``, or None."""
+        raw = self.raw.get(line)
+        if raw is None:
+            return None
+        return Origin(SourceLocation(raw[0], raw[1], raw[2]), raw[3])
+
+    @property
+    def tags(self) -> dict[int, str]:
+        """Return the tag of the element on each line of the expansion."""
+        return self._index()[0]
+
+    @property
+    def children(self) -> dict[int, list[tuple[str, int]]]:
+        """Return (tag, line) of each child element of the element on each line."""
+        return self._index()[1]
+
+    def _index(self) -> tuple[dict[int, str], dict[int, list[tuple[str, int]]]]:
+        """Read the expansion's tree once, when a finding first needs it."""
+        if self._tree is None:
+            tags: dict[int, str] = {}
+            children: dict[int, list[tuple[str, int]]] = {}
+            root = etree.fromstring(self._text.encode('utf-8'), etree.XMLParser(
+                resolve_entities=False, huge_tree=True))
+            for element in root.iter(etree.Element):
+                line = element.sourceline
+                if line is None:
+                    continue
+                tag = tags[line] = etree.QName(element).localname
+                parent = element.getparent()
+                if parent is not None and parent.sourceline is not None:
+                    children.setdefault(parent.sourceline, []).append((tag, line))
+            self._tree = tags, children
+        return self._tree
 
     def line_of(self, line: int, steps: list[tuple[str, int]]) -> int:
         """
@@ -73,38 +117,53 @@ class _Recorder:
     """The places of one expansion's elements, by ``id()`` (each node is kept alive)."""
 
     def __init__(self) -> None:
-        self.origins: dict[int, tuple[Any, Origin]] = {}
+        self.origins: dict[int, tuple[Any, str, int, int, tuple[SourceLocation, ...]]] = {}
         self.calls: list[list[Any]] = []  # [call site's via, body copied yet]
         self.included: list[tuple[SourceLocation, ...]] = []
         self.properties: dict[str, list[SourceLocation]] = {}
+        self.written: list[tuple[int, Any]] = []  # offset of each start tag printed
+        self.orders: dict[int, tuple[Any, list[Any]]] = {}
+        self.made: list[Any] | None = None  # the elements a copy is making, in order
 
-    def origin(self, node: Any) -> Origin | None:
+    def place(self, node: Any, label: str) -> SourceLocation | None:
         found = self.origins.get(id(node))
-        return found[1] if found is not None and found[0] is node else None
+        if found is None or found[0] is not node:
+            return None
+        return SourceLocation(found[1], found[2], found[3], label)
 
     def site(self, node: Any, label: str) -> tuple[SourceLocation, ...]:
         """Return the chain of an element that calls or includes: itself, then its own."""
-        origin = self.origin(node)
-        if origin is None:
+        found = self.origins.get(id(node))
+        if found is None or found[0] is not node:
             return ()
-        return (origin.where._replace(path=label), *origin.via)
+        return (SourceLocation(found[1], found[2], found[3], label), *found[4])
 
-    def cloned(self, original: Any, clone: Any) -> None:
+    def cloned(self, original: Any, made: list[Any]) -> None:
+        """Give the elements ``made`` (in document order) the places of ``original``'s."""
         via = None
         if original.tagName == 'xacro:macro' and self.calls and not self.calls[-1][1]:
             self.calls[-1][1] = True  # the body xacro copies for this call
             via = self.calls[-1][0]
-        pairs = [(original, clone)]
         origins = self.origins
-        while pairs:
-            one, copy = pairs.pop()
-            if one.nodeType != Node.ELEMENT_NODE:
-                continue
-            origin = self.origin(one)
-            if origin is not None:
+        for one, copy in zip(self._in_order(original), made):
+            found = origins.get(id(one))
+            if found is not None and found[0] is one:
                 copy.__class__ = _Placed
-                origins[id(copy)] = (copy, origin if via is None else origin._replace(via=via))
-            pairs.extend(zip(one.childNodes, copy.childNodes))
+                origins[id(copy)] = (copy, *found[1:4], found[4] if via is None else via)
+
+    def _in_order(self, node: Any) -> list[Any]:
+        """Return the elements under ``node`` (itself first) in document order, cached."""
+        cached = self.orders.get(id(node))
+        if cached is not None and cached[0] is node:
+            return cached[1]
+        found, stack = [], [node]
+        while stack:
+            one = stack.pop()
+            found.append(one)
+            stack.extend(child for child in reversed(one.childNodes)
+                         if child.nodeType == Node.ELEMENT_NODE)
+        self.orders[id(node)] = (node, found)  # a body or block: xacro copies, never edits
+        return found
 
 
 _ACTIVE: list[_Recorder] = []
@@ -117,10 +176,40 @@ class _Placed(minidom.Element):
 
     def cloneNode(self, deep: bool) -> Any:  # noqa: N802 - minidom's name
         """Return xacro's copy, with the places of this element and its children."""
-        clone = super().cloneNode(deep)
-        if _ACTIVE:
-            _ACTIVE[-1].cloned(self, clone)
+        if not _ACTIVE or not deep:
+            return super().cloneNode(deep)
+        recorder = _ACTIVE[-1]
+        outer, recorder.made = recorder.made, []
+        try:
+            clone = super().cloneNode(deep)
+            recorder.cloned(self, recorder.made)
+        finally:
+            recorder.made = outer
         return clone
+
+    def writexml(self, writer: Any, indent: str = '', addindent: str = '',
+                 newl: str = '') -> None:
+        """Print as xacro prints (its ``fixed_writexml``), noting where the tag starts."""
+        if _ACTIVE:
+            _ACTIVE[-1].written.append((writer.tell() + len(indent), self))
+        super().writexml(writer, indent, addindent, newl)
+
+
+class _Document(minidom.Document):
+    """A minidom document that tells a copy in progress the elements it makes."""
+
+    __slots__ = ()
+
+    def createElementNS(self, namespaceURI: str | None,  # noqa: N802, N803 - minidom's
+                        qualifiedName: str) -> Any:  # noqa: N803
+        """Return minidom's new element, noted when a copy is being made."""
+        element = super().createElementNS(namespaceURI, qualifiedName)
+        if _ACTIVE and _ACTIVE[-1].made is not None:
+            _ACTIVE[-1].made.append(element)
+        return element
+
+
+_START = expatbuilder.Namespaces.start_element_handler
 
 
 class _Builder(expatbuilder.ExpatBuilderNS):
@@ -128,16 +217,20 @@ class _Builder(expatbuilder.ExpatBuilderNS):
 
     def __init__(self, file: str, via: tuple[SourceLocation, ...], recorder: _Recorder):
         super().__init__()
-        self._file, self._via, self._recorder = file, via, recorder
+        self._file, self._via, self._origins = file, via, recorder.origins
+
+    def reset(self) -> None:
+        """Start a document, one whose copies are noted."""
+        super().reset()
+        self.document.__class__ = _Document
 
     def start_element_handler(self, name: str, attributes: Any) -> None:
         parser = self._parser
         line, column = parser.CurrentLineNumber, parser.CurrentColumnNumber + 1
-        super().start_element_handler(name, attributes)
+        _START(self, name, attributes)
         node = self.curNode
         node.__class__ = _Placed
-        self._recorder.origins[id(node)] = (
-            node, Origin(SourceLocation(self._file, line, column), self._via))
+        self._origins[id(node)] = (node, self._file, line, column, self._via)
 
 
 @contextmanager
@@ -159,6 +252,8 @@ def recording(xacro: Any) -> Iterator[_Recorder]:
             return _Builder(str(filename), via, recorder).parseFile(opened)
 
     def handle_macro_call(node: Any, macros: Any, symbols: Any) -> Any:
+        if not node.tagName.startswith('xacro:'):
+            return False  # not a call: as xacro's own first test answers
         recorder.calls.append([recorder.site(node, f'<{node.tagName}>'), False])
         try:
             return saved['handle_macro_call'](node, macros, symbols)
@@ -173,11 +268,10 @@ def recording(xacro: Any) -> Iterator[_Recorder]:
             recorder.included.pop()
 
     def grab_property(elt: Any, table: Any) -> Any:
-        origin = recorder.origin(elt)
-        if origin is not None:
-            name = elt.getAttribute('name')
-            recorder.properties.setdefault(name, []).append(
-                origin.where._replace(path=f"<xacro:property name='{name}'>"))
+        name = elt.getAttribute('name')
+        place = recorder.place(elt, f"<xacro:property name='{name}'>")
+        if place is not None:
+            recorder.properties.setdefault(name, []).append(place)
         return saved['grab_property'](elt, table)
 
     for name, function in (('parse', parse), ('handle_macro_call', handle_macro_call),
@@ -193,34 +287,17 @@ def recording(xacro: Any) -> Iterator[_Recorder]:
             setattr(xacro, name, function)
 
 
-def source_map(recorder: _Recorder, document: Any, text: str) -> XacroMap:
-    """Return the map of ``text``, xacro's pretty print of ``document``, to the sources."""
-    lines: dict[int, Origin] = {}
-    children: dict[int, list[tuple[str, int]]] = {}
-    tags: dict[int, str] = {}
-    root = etree.fromstring(text.encode('utf-8'), etree.XMLParser(
-        resolve_entities=False, huge_tree=True, remove_comments=True, remove_pis=True))
-    printed = root.iter(etree.Element)
-    for node in _elements(document.documentElement):
-        element = next(printed, None)
-        if element is None:
-            break
-        line = element.sourceline
-        origin = recorder.origin(node)
-        if origin is not None and line is not None:
-            lines[line] = origin
-            tag = tags[line] = etree.QName(element).localname
-            parent = element.getparent()
-            if parent is not None and parent.sourceline is not None:
-                children.setdefault(parent.sourceline, []).append((tag, line))
-    return XacroMap(lines, recorder.properties, children, tags)
-
-
-def _elements(node: Any) -> Iterator[Any]:
-    """Yield the elements under ``node`` (itself first) in document order."""
-    stack = [node]
-    while stack:
-        node = stack.pop()
-        yield node
-        stack.extend(child for child in reversed(node.childNodes)
-                     if child.nodeType == Node.ELEMENT_NODE)
+def pretty_print(recorder: _Recorder, document: Any) -> tuple[str, XacroMap]:
+    """Return xacro's pretty print of ``document`` and its map (inside ``recording``)."""
+    recorder.written = []
+    text = document.toprettyxml(indent='  ')
+    lines: dict[int, _Raw] = {}
+    origins = recorder.origins
+    line, last = 1, 0
+    for offset, node in recorder.written:
+        line += text.count('\n', last, offset)
+        last = offset
+        found = origins.get(id(node))
+        if found is not None and found[0] is node:
+            lines[line] = found[1:]
+    return text, XacroMap(lines, recorder.properties, text)

@@ -30,7 +30,7 @@ from urdfgenpy_ros.errors import (
     MissingDependencyError, ParseError, ReadWarning, SourceLocation)
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
 from urdfgenpy_ros.formats.xacro_args import unknown_arguments
-from urdfgenpy_ros.formats.xacro_map import recording, source_map, XacroMap
+from urdfgenpy_ros.formats.xacro_map import pretty_print, recording, XacroMap
 from urdfgenpy_ros.report import folder_fix
 from urdfgenpy_ros.resources import PackageResolver
 
@@ -128,6 +128,8 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
                 stack = [str(name) for name in getattr(xacro, 'filestack', None) or []]
                 raise
             names = list(dict.fromkeys(includes))
+            if recorder is not None:  # xacro's own print, with where each tag starts
+                text, source_map = pretty_print(recorder, document)
     except Exception as error:  # noqa: B902 - xacro raises many types; all are one line
         cause = getattr(error, 'exc', None)  # xacro wraps what substitutions raise
         shown = cause if isinstance(cause, _PackageMissing) else error
@@ -147,9 +149,9 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
         warnings += [ReadWarning(where, 'X102', f'xacro: {line}')
                      for line in _xacro_warnings(printed.getvalue())]
     included = [str(Path(name).resolve()) for name in names]
-    text = document.toprettyxml(indent='  ')
-    if maps is not None and recorder is not None:
-        maps.append(source_map(recorder, document, text))
+    if maps is None:
+        return document.toprettyxml(indent='  '), included
+    maps.append(source_map)
     return text, included
 
 

@@ -44,7 +44,7 @@ def mapped(finding: ValidationError, source_map: XacroMap) -> ValidationError:
     if not (where.file or '').endswith(EXPANDED) or where.line is None:
         return finding
     line = source_map.line_of(where.line, _steps(where.path))
-    if line not in source_map.lines:
+    if line not in source_map.raw:
         location = SourceLocation(where.file, None, None, where.path)
     else:
         location = place(line, where.file[:-len(EXPANDED)], source_map, where.path,
@@ -89,15 +89,17 @@ def place(expanded: int, main: str, source_map: XacroMap, path: str | None,
     finding says: an expression attribute it names (of the element, or of a child it
     names: ``mass`` for ``<mass value="${m}"/>``) is the place.
     """
-    origin = source_map.lines[expanded]
+    origin = source_map.at(expanded)
+    assert origin is not None
     where, via = origin.where, origin.via
     line, column = where.line, where.column
     chosen = _named(origin, text, expanded not in source_map.children)  # a leaf: its value
     for tag, row in source_map.children.get(expanded, ()) if chosen is None else ():
-        if row in source_map.lines and _mentions(text, tag):
-            chosen = _named(source_map.lines[row], text, True)
+        child = source_map.at(row)
+        if child is not None and _mentions(text, tag):
+            chosen = _named(child, text, True)
             if chosen is not None:
-                origin = source_map.lines[row]
+                origin = child
                 break
     if chosen is not None:
         line, column = chosen.line, chosen.column

@@ -104,7 +104,7 @@ def error_in_source(error: ParseError, expanded: str, files: list[str],
     where = error.location
     if where is None or where.line is None or not (where.file or '').endswith(EXPANDED):
         return error
-    if source_map is not None and where.line in source_map.lines:
+    if source_map is not None and where.line in source_map.raw:
         return mapped_error(error, source_map)
     root = etree.fromstring(expanded.encode('utf-8'), etree.XMLParser(
         recover=True, resolve_entities=False, huge_tree=True))
