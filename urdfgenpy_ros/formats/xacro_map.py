@@ -27,9 +27,10 @@ it makes, so the text is byte for byte the text xacro prints.
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 import os
+from pathlib import Path
 from typing import Any, NamedTuple
 from xml.dom import expatbuilder, minidom, Node
 
@@ -55,7 +56,7 @@ class XacroMap:
                  text: str) -> None:
         self.raw = lines
         self.properties = properties  # name as written -> its definitions
-        self._text = text
+        self.text = text  # the expansion
         self._tree: tuple[dict[int, str], dict[int, list[tuple[str, int]]]] | None = None
 
     @property
@@ -85,7 +86,7 @@ class XacroMap:
         if self._tree is None:
             tags: dict[int, str] = {}
             children: dict[int, list[tuple[str, int]]] = {}
-            root = etree.fromstring(self._text.encode('utf-8'), etree.XMLParser(
+            root = etree.fromstring(self.text.encode('utf-8'), etree.XMLParser(
                 resolve_entities=False, huge_tree=True))
             for element in root.iter(etree.Element):
                 line = element.sourceline
@@ -234,9 +235,14 @@ class _Builder(expatbuilder.ExpatBuilderNS):
 
 
 @contextmanager
-def recording(xacro: Any) -> Iterator[_Recorder]:
-    """Record the places of the elements of the expansions run inside (hold the lock)."""
+def recording(xacro: Any, texts: Mapping[str, str] | None = None) -> Iterator[_Recorder]:
+    """
+    Record the places of the elements of the expansions run inside (hold the lock).
+
+    ``texts`` (absolute path: text) are read instead of those files: an edit tried first.
+    """
     recorder = _Recorder()
+    texts = texts or {}
     saved = {name: getattr(xacro, name)
              for name in ('parse', 'handle_macro_call', 'process_include', 'grab_property')}
 
@@ -249,7 +255,10 @@ def recording(xacro: Any) -> Iterator[_Recorder]:
             return saved['parse'](inp, filename)  # xacro raises its own error
         via = recorder.included[-1] if recorder.included else ()
         with opened:
-            return _Builder(str(filename), via, recorder).parseFile(opened)
+            builder = _Builder(str(filename), via, recorder)
+            instead = texts.get(str(Path(opened.name).resolve())) if texts else None
+            return builder.parseString(instead) if instead is not None else \
+                builder.parseFile(opened)
 
     def handle_macro_call(node: Any, macros: Any, symbols: Any) -> Any:
         if not node.tagName.startswith('xacro:'):

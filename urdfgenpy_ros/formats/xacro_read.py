@@ -101,14 +101,16 @@ def _finding_with(resolver: PackageResolver) -> Iterator[None]:
 def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
                  resolver: PackageResolver | None = None,
                  warnings: list[ReadWarning] | None = None,
-                 maps: list[XacroMap] | None = None) -> tuple[str, list[str]]:
+                 maps: list[XacroMap] | None = None,
+                 texts: Mapping[str, str] | None = None) -> tuple[str, list[str]]:
     """
     Return the URDF text ``xacro`` makes of ``path`` and every file it included.
 
     What xacro would print on stderr is not printed: its warnings are appended to
     ``warnings`` (code X102) and, when expansion fails, end the error's one line.
     Given ``maps``, the source map of the text (where each element was written) is
-    appended to it; the text is the same either way.
+    appended to it; the text is the same either way. ``texts`` (absolute path: text,
+    with ``maps``) are expanded instead of those files, as if they had been saved.
 
     :raises ParseError: with xacro's message, when expansion fails (code X001).
     """
@@ -120,7 +122,7 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
     stack: list[str] = []
     try:
         with _LOCK, redirect_stderr(printed), _fresh_state(xacro) as includes, \
-                _finding_with(resolver), _mapping(xacro, maps is not None) as recorder:
+                _finding_with(resolver), _mapping(xacro, maps is not None, texts) as recorder:
             try:
                 document = xacro.process_file(str(path), mappings=dict(mappings or {}))
             except Exception:  # noqa: B902 - where it was, before the stacks are reset
@@ -156,12 +158,12 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
 
 
 @contextmanager
-def _mapping(xacro: Any, wanted: bool) -> Iterator[Any]:
+def _mapping(xacro: Any, wanted: bool, texts: Mapping[str, str] | None) -> Iterator[Any]:
     """Record the source map of the expansion inside, when ``wanted``."""
     if not wanted:
         yield None
         return
-    with recording(xacro) as recorder:
+    with recording(xacro, texts) as recorder:
         yield recorder
 
 
