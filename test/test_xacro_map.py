@@ -175,3 +175,25 @@ def test_a_copy_of_the_tree_expands_the_same(tmp_path: Path) -> None:
     expand_xacro(copy / LINES.name, maps=maps)
     files = {Path(origin.where.file).resolve().parent for origin in maps[0].lines.values()}
     assert files == {copy.resolve()}
+
+
+@pytest.mark.parametrize('name', corpus_cases(['husky/husky_description/urdf/husky.urdf.xacro']))
+def test_mjcf_losses_of_a_xacro_cite_the_lines_that_hold_the_elements(name: str) -> None:
+    from urdfgenpy_ros import Robot
+    from urdfgenpy_ros.formats.mjcf import write_mjcf
+    robot = Robot.from_xacro(CORPUS / name, {'is_sim': 'true'}, search_paths=[CORPUS])
+    findings = write_mjcf(robot, search_paths=[CORPUS]).findings
+    assert findings and all(f.location.line is not None for f in findings)
+    for finding in findings:
+        tag = finding.location.path.rsplit('/', 1)[-1].split('[', 1)[0]
+        row = Path(finding.location.file).read_text().splitlines()[finding.location.line - 1]
+        assert row[finding.location.column - 1:].startswith(f'<{tag}'), (finding, row)
+    assert any(place.path == '<xacro:husky_wheel>' for f in findings for place in f.location.via)
+
+
+def test_junit_cases_name_the_macro_call(tmp_path: Path) -> None:
+    report = _check(tmp_path, '--format', 'junit').stdout
+    cases = etree.fromstring(report.encode()).iter('testcase')
+    failures = [case.find('failure').text for case in cases if case.find('failure') is not None]
+    assert any(text.startswith('common.xacro:8:') and '(via <xacro:property name=' in text
+               and '<xacro:box_link> r.urdf.xacro:5:3' in text for text in failures)

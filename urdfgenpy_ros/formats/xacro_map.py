@@ -101,14 +101,14 @@ class XacroMap:
 
     def line_of(self, line: int, steps: list[tuple[str, int]]) -> int:
         """
-        Return the line of the element ``steps`` (tag, 1-based index) name below an owner.
+        Return the line of the element ``steps`` (tag, 1-based index or 0) name below an owner.
 
         ``line`` is the owner's, or of an element on the way (the steps after its tag).
         """
         here = [number for number, (tag, _) in enumerate(steps) if tag == self.tags.get(line)]
         for tag, index in steps[here[-1] + 1:] if here else steps:
             below = [row for name, row in self.children.get(line, ()) if name == tag]
-            if len(below) < index:
+            if not 0 < index <= len(below):  # not there, or chosen by a name: stop here
                 break
             line = below[index - 1]
         return line

@@ -43,8 +43,9 @@ def mapped(finding: ValidationError, source_map: XacroMap) -> ValidationError:
     where = finding.location
     if not (where.file or '').endswith(EXPANDED) or where.line is None:
         return finding
-    line = source_map.line_of(where.line, _steps(where.path))
-    if line not in source_map.raw:
+    steps = _steps(where.path)
+    line = source_map.line_of(where.line, steps)
+    if line not in source_map.raw or not _is_on_path(source_map, line, where.path, steps):
         location = SourceLocation(where.file, None, None, where.path)
     else:
         location = place(line, where.file[:-len(EXPANDED)], source_map, where.path,
@@ -54,11 +55,15 @@ def mapped(finding: ValidationError, source_map: XacroMap) -> ValidationError:
 
 
 _OWNER = re.compile(r"^/robot/[\w:.-]+\[@name='.*?'\]")
-_STEP = re.compile(r'([\w:.-]+)(?:\[(\d+)\])?$')
+_STEP = re.compile(r"([\w:.-]+)(?:\[(\d+)\]|(\[@name='.*'\]))?$")
 
 
 def _steps(path: str | None) -> list[tuple[str, int]]:
-    """Return the steps of an element path below its owner: ``/inertial/inertia``."""
+    """
+    Return the steps of an element path below its owner: ``/inertial/inertia``.
+
+    Each is (tag, 1-based index); a step chosen by name (``sensor[@name='gps']``) has 0.
+    """
     owner = _OWNER.match(path or '')
     if owner is None or path is None:
         return []
@@ -67,8 +72,23 @@ def _steps(path: str | None) -> list[tuple[str, int]]:
         step = _STEP.match(part)
         if step is None:
             break
-        steps.append((step.group(1), int(step.group(2) or 1)))
+        steps.append((step.group(1), 0 if step.group(3) else int(step.group(2) or 1)))
     return steps
+
+
+def _is_on_path(source_map: XacroMap, line: int, path: str | None,
+                steps: list[tuple[str, int]]) -> bool:
+    """
+    Return whether the expansion's line holds an element of the finding's path.
+
+    A finding on a robot edited since it was read (``convert --fix``) can carry a line of
+    the edited text: one that is no element of its path gets no place rather than a wrong one.
+    """
+    owner = _OWNER.match(path or '')
+    if owner is None:
+        return True  # a finding on the robot, or a block: nothing to compare
+    kind = owner.group(0)[len('/robot/'):].split('[', 1)[0]
+    return source_map.tags.get(line) in {kind, *(tag for tag, _ in steps)}
 
 
 def mapped_error(error: ParseError, source_map: XacroMap) -> ParseError:
