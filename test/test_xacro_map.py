@@ -197,3 +197,22 @@ def test_junit_cases_name_the_macro_call(tmp_path: Path) -> None:
     failures = [case.find('failure').text for case in cases if case.find('failure') is not None]
     assert any(text.startswith('common.xacro:8:') and '(via <xacro:property name=' in text
                and '<xacro:box_link> r.urdf.xacro:5:3' in text for text in failures)
+
+
+@pytest.mark.slow  # starts the viewer's server
+def test_the_viewer_names_the_xacro_line_and_the_macro_call(tmp_path: Path) -> None:
+    pytest.importorskip('viser')
+    from browser import free_port
+    from urdfgenpy_ros.formats import load
+    from urdfgenpy_ros.viewer.web import RobotViewer
+    _check(tmp_path)  # writes the files
+    path = tmp_path / 'r.urdf.xacro'
+    viewer = RobotViewer(lambda: load(path, {}, ()), port=free_port())
+    try:
+        (finding,) = [f for f in viewer.findings if f.code == 'I210']
+        viewer.select(finding)
+        shown = viewer._selection.content
+        assert f'`{tmp_path / "common.xacro"}:8:' in shown or '`common.xacro:8:' in shown
+        assert '*via* <xacro:box_link>' in shown
+    finally:
+        viewer.close()
