@@ -31,7 +31,7 @@ import subprocess
 import sys
 
 from click.testing import CliRunner
-from helpers import ament_index, CORPUS, CORPUS_PACKAGES, corpus_cases, environment, FIXTURES
+from helpers import ament_index, CORPUS, corpus_cases, CORPUS_PACKAGES, environment, FIXTURES
 from helpers import require_module
 from helpers import xacro_expand
 from lxml import etree

@@ -17,9 +17,9 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
-from os import PathLike
 import copy
 import difflib
+from os import PathLike
 from pathlib import Path
 
 import click
@@ -112,8 +112,9 @@ def _plan(robot: Robot, source_map: XacroMap, found: Review, defaults: dict[str,
     return accepted, refused, edits
 
 
-def _expands_to(path: Path, mappings: Mapping[str, str], search_paths: Sequence[str | PathLike[str]],
-                texts: Mapping[str, str], robot: Robot) -> bool:
+def _expands_to(path: Path, mappings: Mapping[str, str],
+                search_paths: Sequence[str | PathLike[str]], texts: Mapping[str, str],
+                robot: Robot) -> bool:
     """Return whether the real xacro expands the edited ``texts`` to ``robot``."""
     maps: list[XacroMap] = []
     try:

@@ -216,6 +216,10 @@ _START = expatbuilder.Namespaces.start_element_handler
 class _Builder(expatbuilder.ExpatBuilderNS):
     """minidom's builder, noting expat's position at each start tag."""
 
+    _parser: Any
+    curNode: Any
+    document: Any
+
     def __init__(self, file: str, via: tuple[SourceLocation, ...], recorder: _Recorder):
         super().__init__()
         self._file, self._via, self._origins = file, via, recorder.origins
@@ -250,7 +254,7 @@ def recording(xacro: Any, texts: Mapping[str, str] | None = None) -> Iterator[_R
         if inp is not None:
             return saved['parse'](inp, filename)
         try:
-            opened = open(os.path.join(xacro.root_dir, filename))  # as xacro.parse opens it
+            opened = open(os.path.join(xacro.root_dir, str(filename)))  # as xacro.parse does
         except OSError:
             return saved['parse'](inp, filename)  # xacro raises its own error
         via = recorder.included[-1] if recorder.included else ()

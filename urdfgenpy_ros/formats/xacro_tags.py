@@ -29,7 +29,7 @@ from pathlib import Path
 import re
 from typing import NamedTuple
 
-_ATTRIBUTE = re.compile(r'''([^\s=/>]+)\s*=\s*("[^"]*"|'[^']*')''')
+_ATTRIBUTE = re.compile(r"""([^\s=/>]+)\s*=\s*("[^"]*"|'[^']*')""")
 _EXPRESSION = re.compile(r'\$\{([^}]*)\}')
 
 

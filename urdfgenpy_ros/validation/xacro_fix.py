@@ -36,7 +36,7 @@ from urdfgenpy_ros.formats.xacro_tags import attributes, source_text
 if TYPE_CHECKING:
     from urdfgenpy_ros.formats.xacro_map import XacroMap
 
-_ATTRIBUTE = re.compile(r'''([^\s=/>]+)\s*=\s*"([^"]*)"''')
+_ATTRIBUTE = re.compile(r'([^\s=/>]+)\s*=\s*"([^"]*)"')
 _PROPERTY = re.compile(r'\$\{\s*([A-Za-z_]\w*)\s*\}')
 
 
@@ -74,27 +74,28 @@ def plan(source_map: XacroMap, before: str, after: str) -> tuple[list[XacroEdit]
 def _line_edits(source_map: XacroMap, line: int, before: str, after: str,
                 edits: dict[tuple[str, int, int, str], XacroEdit]) -> str | None:
     origin = source_map.at(line)
-    if origin is None or origin.where.file is None:
+    file = origin.where.file if origin is not None else None
+    if origin is None or file is None:
         return f'line {line} of the expansion comes from no tag of the files'
     was, now = _values(before), _values(after)
     if set(was) != set(now) or before.split('>')[0].split()[0] != after.split('>')[0].split()[0]:
         return 'a repair adds or removes attributes, which is no edit of a value'
     where = origin.where
-    written = {item.name: item for item in attributes(where.file, where.line or 0,
-                                                     where.column or 0)}
+    written = {item.name: item
+               for item in attributes(file, where.line or 0, where.column or 0)}
     made = sum(1 for raw in source_map.raw.values() if raw[:3] == where[:3])
     macro = origin.via[0].path if origin.via and origin.via[0].path != '<xacro:include>' \
         else None
     for name in (name for name in now if now[name] != was[name]):
         item = written.get(name)
         if item is None:
-            return f'{name}= of {where.file}:{where.line} is not written in its tag'
+            return f'{name}= of {file}:{where.line} is not written in its tag'
         target: tuple[str, int, int, str, str, int] = (
-            where.file, item.line, item.column, name, item.value, made)
+            file, item.line, item.column, name, item.value, made)
         if '$' in item.value:
-            target = _property(source_map, item.value, where.file) or target
+            target = _property(source_map, item.value, file) or target
             if '$' in target[4]:
-                return (f'{name}="{item.value}" at {where.file}:{item.line} is an '
+                return (f'{name}="{item.value}" at {file}:{item.line} is an '
                         'expression: change it by hand')
         key = target[:4]
         if key in edits and edits[key].new != now[name]:
@@ -113,12 +114,13 @@ def _property(source_map: XacroMap, value: str, file: str
     places = source_map.properties.get(found.group(1), []) if found else []
     if len(places) > 1:
         places = [place for place in places if place.file == file]
-    if len(places) != 1 or places[0].file is None:
+    found_file = places[0].file if len(places) == 1 else None
+    if found_file is None:
         return None
     place = places[0]
-    for item in attributes(place.file, place.line or 0, place.column or 0):
+    for item in attributes(found_file, place.line or 0, place.column or 0):
         if item.name == 'value':
-            return place.file, item.line, item.column, 'value', item.value, 0
+            return found_file, item.line, item.column, 'value', item.value, 0
     return None
 
 

@@ -48,7 +48,7 @@ def mapped(finding: ValidationError, source_map: XacroMap) -> ValidationError:
     if line not in source_map.raw or not _is_on_path(source_map, line, where.path, steps):
         location = SourceLocation(where.file, None, None, where.path)
     else:
-        location = place(line, where.file[:-len(EXPANDED)], source_map, where.path,
+        location = place(line, (where.file or '')[:-len(EXPANDED)], source_map, where.path,
                          f'{finding.message} {finding.hint}')
     return ValidationError(finding.code, finding.severity, finding.element, location,
                            finding.message, finding.hint)
