@@ -17,7 +17,6 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping, Sequence
-import copy
 import difflib
 from os import PathLike
 from pathlib import Path
@@ -25,16 +24,14 @@ from pathlib import Path
 import click
 
 from urdfgenpy_ros.cli.check_reports import FileReport
-from urdfgenpy_ros.errors import ParseError, ValidationError
-from urdfgenpy_ros.formats.urdf import urdf_file_bytes
+from urdfgenpy_ros.errors import ParseError
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
 from urdfgenpy_ros.formats.xacro_map import XacroMap
 from urdfgenpy_ros.formats.xacro_read import expand_xacro
 from urdfgenpy_ros.resources import PackageResolver
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.checklist import Review
-from urdfgenpy_ros.validation.fix import fix
-from urdfgenpy_ros.validation.xacro_fix import edited, plan, XacroEdit
+from urdfgenpy_ros.validation.xacro_fix import apply_fix, edited, plan_fix, XacroEdit
 from urdfgenpy_ros.validation.xacro_mapped import shown
 
 
@@ -51,10 +48,9 @@ def fix_xacro(path: Path, robot: Robot, found: Review, mappings: Mapping[str, st
     """
     source_map = robot.source_map
     assert source_map is not None
-    defaults = dict(found.options.limit_defaults)
-    accepted, refused, edits = _plan(robot, source_map, found, defaults)
+    accepted, refused, edits = plan_fix(found, source_map)
     texts = edited(list(edits.values())) if accepted else None
-    repairs = fix(robot, accepted, defaults) if texts is not None else []
+    repairs = apply_fix(found, accepted) if texts is not None else []
     if texts is not None and not _expands_to(path, mappings, search_paths, texts, robot):
         refused += [(finding, 'the edited Xacro does not expand to the repaired robot')
                     for finding in accepted]
@@ -82,34 +78,6 @@ def fix_xacro(path: Path, robot: Robot, found: Review, mappings: Mapping[str, st
         else:
             replace(Path(file), text)
     return not dry_run
-
-
-def _plan(robot: Robot, source_map: XacroMap, found: Review, defaults: dict[str, float]
-          ) -> tuple[list[ValidationError], list[tuple[ValidationError, str]],
-                     dict[tuple[str, int, int, str], XacroEdit]]:
-    """Return the repairs that are value edits, the others with why, and the edits."""
-    accepted: list[ValidationError] = []
-    refused: list[tuple[ValidationError, str]] = []
-    edits: dict[tuple[str, int, int, str], XacroEdit] = {}
-    robot.source_map = None  # not copied for each trial
-    try:
-        for finding in found.repairable:
-            trial = copy.deepcopy(robot)
-            if not fix(trial, [finding], defaults):
-                continue
-            after = urdf_file_bytes(trial, mend=False).decode('utf-8', 'surrogateescape')
-            made, problem = plan(source_map, source_map.text, after)
-            clash = [edit for edit in made if edit[:4] in edits and edits[edit[:4]] != edit]
-            if problem is None and clash:
-                problem = f'{clash[0].name}= at line {clash[0].line} needs two values'
-            if problem is not None:
-                refused.append((finding, problem))
-                continue
-            accepted.append(finding)
-            edits.update((edit[:4], edit) for edit in made)
-    finally:
-        robot.source_map = source_map
-    return accepted, refused, edits
 
 
 def _expands_to(path: Path, mappings: Mapping[str, str],

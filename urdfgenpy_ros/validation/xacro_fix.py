@@ -26,15 +26,20 @@ A repair that adds or removes elements is not an attribute edit: the file is lef
 from __future__ import annotations
 
 from collections.abc import Mapping
+import copy
 import difflib
 from pathlib import Path
 import re
 from typing import NamedTuple, TYPE_CHECKING
 
+from urdfgenpy_ros.errors import ValidationError
+from urdfgenpy_ros.formats.urdf import urdf_file_bytes
 from urdfgenpy_ros.formats.xacro_tags import attributes, source_text
+from urdfgenpy_ros.validation.fix import fix, Repair
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.formats.xacro_map import XacroMap
+    from urdfgenpy_ros.validation.checklist import Review
 
 _ATTRIBUTE = re.compile(r'([^\s=/>]+)\s*=\s*"([^"]*)"')
 _PROPERTY = re.compile(r'\$\{\s*([A-Za-z_]\w*)\s*\}')
@@ -149,3 +154,41 @@ def edited(edits: list[XacroEdit]) -> Mapping[str, str] | None:
         rows[edit.line - 1] = (f'{row[:start]}{edit.name}{found.group(1)}{found.group(2)}'
                                f'{edit.new}{found.group(2)}{row[found.end():]}')
     return {str(Path(file).resolve()): '\n'.join(rows) for file, rows in texts.items()}
+
+
+def plan_fix(found: Review, source_map: XacroMap
+             ) -> tuple[list[ValidationError], list[tuple[ValidationError, str]],
+                        dict[tuple[str, int, int, str], XacroEdit]]:
+    """
+    Return the repairs that are value edits, the others with why, and the edits.
+
+    Each of ``found``'s repairable findings is repaired alone, on a copy of the robot.
+    """
+    robot, defaults = found.robot, dict(found.options.limit_defaults)
+    accepted: list[ValidationError] = []
+    refused: list[tuple[ValidationError, str]] = []
+    edits: dict[tuple[str, int, int, str], XacroEdit] = {}
+    robot.source_map = None  # not copied for each trial
+    try:
+        for finding in found.repairable:
+            trial = copy.deepcopy(robot)
+            if not fix(trial, [finding], defaults):
+                continue
+            after = urdf_file_bytes(trial, mend=False).decode('utf-8', 'surrogateescape')
+            made, problem = plan(source_map, source_map.text, after)
+            clash = [edit for edit in made if edit[:4] in edits and edits[edit[:4]] != edit]
+            if problem is None and clash:
+                problem = f'{clash[0].name}= at line {clash[0].line} needs two values'
+            if problem is not None:
+                refused.append((finding, problem))
+                continue
+            accepted.append(finding)
+            edits.update((edit[:4], edit) for edit in made)
+    finally:
+        robot.source_map = source_map
+    return accepted, refused, edits
+
+
+def apply_fix(found: Review, accepted: list[ValidationError]) -> list[Repair]:
+    """Repair the ``accepted`` findings in ``found``'s robot, in place."""
+    return fix(found.robot, accepted, dict(found.options.limit_defaults))
