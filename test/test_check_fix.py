@@ -221,7 +221,7 @@ def test_a_clean_file_is_never_rewritten(tmp_path: Path) -> None:
     assert result.exit_code == 1 and ' error J101 ' in result.stdout
 
 
-def test_xacro_is_not_fixed_and_says_why(tmp_path: Path) -> None:
+def test_xacro_with_an_expression_to_edit_is_not_fixed_and_says_why(tmp_path: Path) -> None:
     text = broken('J104').replace('<robot name="fixture">', '<robot name="fixture" '
                                   'xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
                                   '  <xacro:property name="reach" value="1"/>')
@@ -234,7 +234,8 @@ def test_xacro_is_not_fixed_and_says_why(tmp_path: Path) -> None:
         assert result.exit_code == 2 and ' error J104 ' in result.stdout
         lines = result.stdout.splitlines()
         (note,) = [line for line in lines if 'not fixed' in line]
-        assert note.startswith(f'{path}: not fixed: it is Xacro')
+        assert note.startswith(f"{path}: not fixed: J104 joint 'wrist': upper=")
+        assert 'is an expression: change it by hand' in note
         assert lines[-1] == note  # after the findings it refers to
 
 

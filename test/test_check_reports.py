@@ -101,11 +101,11 @@ def test_sarif_to_a_file_and_ignore_is_an_external_suppression(files, tmp_path: 
 
 
 @pytest.mark.parametrize('macro', [False, True])
-def test_sarif_of_a_xacro_names_the_file_and_only_a_source_line(
+def test_sarif_of_a_xacro_cites_the_source_line_and_the_macro_call(
         macro: bool, tmp_path: Path) -> None:
     text = broken('J104').replace('<robot name="fixture">', '<robot name="fixture" '
                                   'xmlns:xacro="http://www.ros.org/wiki/xacro">')
-    if macro:  # the joint is made by a macro: no line of the file is its
+    if macro:  # the joint is made by a macro: its limit's line in the macro, and the call
         text = text.replace('<joint name="wrist"', '<xacro:macro name="m" params="n">\n'
                             '  <joint name="${n}"').replace('</robot>', '')
         end = text.rindex('</joint>') + len('</joint>')
@@ -113,15 +113,28 @@ def test_sarif_of_a_xacro_names_the_file_and_only_a_source_line(
     path = tmp_path / 'arm.urdf.xacro'
     path.write_text(text)
     log = json.loads(_run(tmp_path, '--format', 'sarif', str(path)).stdout)
+    jsonschema = require_module('jsonschema')
+    jsonschema.Draft4Validator(json.loads(SCHEMA.read_text())).validate(log)
     (result,) = log['runs'][0]['results']
     physical = result['locations'][0]['physicalLocation']
     assert physical['artifactLocation']['uri'] == 'arm.urdf.xacro'
+    lines = text.splitlines()
+    opening = next(number for number, row in enumerate(lines)
+                   if '<joint name="wrist"' in row or '<joint name="${n}"' in row)
+    line = next(number for number in range(opening, len(lines))
+                if '<limit' in lines[number]) + 1
+    assert lines[line - 1][physical['region']['startColumn'] - 1:].startswith('<limit')
+    assert physical['region']['startLine'] == line
+    related = result.get('relatedLocations', [])
     if macro:
-        assert physical['region'] == {'startLine': 1}
+        call = lines.index('<xacro:m n="wrist"/>') + 1
+        assert [place['physicalLocation']['region'] for place in related] == [
+            {'startLine': call, 'startColumn': 1}]
+        assert related[0]['message']['text'] == '<xacro:m>'
+        assert '[<xacro:m>](1)' in result['message']['text']
     else:
-        line = text.splitlines().index('  <joint name="wrist" type="revolute">') + 1
-        assert physical['region'] == {'startLine': line, 'startColumn': 3}
-    assert ('line 1 stands for the file' in result['message']['text']) == macro
+        assert related == []
+    assert 'line 1 stands for the file' not in result['message']['text']
 
 
 def test_junit_parses_with_junitparser(files, tmp_path: Path) -> None:

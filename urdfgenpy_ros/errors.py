@@ -37,12 +37,19 @@ class ModelTypeError(UrdfgenpyError, TypeError):
 
 
 class SourceLocation(NamedTuple):
-    """Where an element was read from: file, line, column and element path."""
+    """
+    Where an element was read from: file, line, column and element path.
+
+    ``via`` is, for an element of a Xacro expansion, the places that brought the text
+    there (macro call and include sites, innermost first, and the properties an
+    expression read), each with ``path`` saying what it is (``<xacro:arm>``).
+    """
 
     file: str | None = None
     line: int | None = None
     column: int | None = None
     path: str | None = None
+    via: tuple[SourceLocation, ...] = ()
 
     def __str__(self) -> str:
         """Return ``file:line:col`` when known, else the element path."""
@@ -51,6 +58,13 @@ class SourceLocation(NamedTuple):
             column = self.column if self.column is not None else 1
             return f'{where}:{self.line}:{column}'
         return self.path or self.file or '<model>'
+
+
+def _via(location: SourceLocation | None) -> str:
+    """Return `` (via WHAT FILE:LINE, ...)``: what brought a Xacro element there, or ''."""
+    if location is None or not location.via:
+        return ''
+    return ' (via ' + ', '.join(f'{place.path} {place}' for place in location.via) + ')'
 
 
 class ParseError(UrdfgenpyError):
@@ -62,7 +76,7 @@ class ParseError(UrdfgenpyError):
         self.code = code
         self.message = message
         prefix = f'{location}: ' if location is not None else ''
-        super().__init__(f'{prefix}error {code} {message}')
+        super().__init__(f'{prefix}error {code} {message}{_via(location)}')
 
 
 class ReadWarning(NamedTuple):
@@ -105,13 +119,16 @@ class ValidationError(UrdfgenpyError):
         self.location = location
         self.message = message
         self.hint = hint
-        super().__init__(f'{location}: {self.severity} {code} {element}: {message} ({hint})')
+        super().__init__(f'{location}: {self.severity} {code} {element}: {message} ({hint})'
+                         f'{_via(location)}')
 
     def as_dict(self) -> dict[str, object]:
         """Return the finding as plain data (for JSON output)."""
         return {'code': self.code, 'severity': str(self.severity), 'element': self.element,
                 'file': self.location.file, 'line': self.location.line,
                 'column': self.location.column, 'path': self.location.path,
+                'via': [{'file': place.file, 'line': place.line, 'column': place.column,
+                         'what': place.path} for place in self.location.via],
                 'message': self.message, 'hint': self.hint}
 
 

@@ -39,6 +39,8 @@ from urdfgenpy_ros.preserved import SourceDocument
 if TYPE_CHECKING:
     from typing_extensions import Self
 
+    from urdfgenpy_ros.formats.xacro_map import XacroMap
+
     from urdfgenpy_ros.robot import Robot
 
 
@@ -69,6 +71,7 @@ class RobotModel:
         self.extras: SourceDocument | None = None  # the record of the file read, if any
         self.read_warnings: list[ReadWarning] = []
         self.included_files: list[str] = []
+        self.source_map: XacroMap | None = None  # where a Xacro expansion's text came from
 
     def __repr__(self) -> str:
         """Return a one-line summary."""

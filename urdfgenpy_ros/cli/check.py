@@ -30,6 +30,7 @@ from urdfgenpy_ros.cli._options import ignore_option, input_options
 from urdfgenpy_ros.cli._options import parse_mappings
 from urdfgenpy_ros.cli.check_reports import FileReport, json_report, junit_report
 from urdfgenpy_ros.cli.check_reports import sarif_report
+from urdfgenpy_ros.cli.check_xacro import fix_xacro
 from urdfgenpy_ros.cli.inputs import description_files
 from urdfgenpy_ros.errors import ModelError, Severity, ValidationError
 from urdfgenpy_ros.formats import DH_SUFFIXES, load
@@ -252,6 +253,12 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
                          for line, word in found.unknown_suppressions]
         _render(report, found)
         if not options.fix:
+            return report
+        if robot.source_map is not None:  # Xacro: its values are edited where written
+            if fix_xacro(path, robot, found, mappings, options.review.search_paths,
+                         options.dry_run, report, _replace):
+                _render(report, review(load(path, mappings, options.review.search_paths),
+                                       options.review))
             return report
         repairs = found.fix()
         refusal = _not_rewritable(path, robot, _repairable(len(repairs), len(found.findings)))

@@ -105,10 +105,31 @@ def _location(finding: ValidationError, fallback: str) -> dict[str, object]:
     return location
 
 
+def _related(finding: ValidationError) -> list[dict[str, object]]:
+    """Return the SARIF related locations of a Xacro finding: calls, includes, properties."""
+    related: list[dict[str, object]] = []
+    for number, place in enumerate(finding.location.via, start=1):
+        if place.file is None or place.line is None:
+            continue
+        uri, relative = _uri(place.file)
+        artifact: dict[str, object] = {'uri': uri}
+        if relative:
+            artifact['uriBaseId'] = '%SRCROOT%'
+        region: dict[str, object] = {'startLine': place.line}
+        if place.column is not None:
+            region['startColumn'] = place.column
+        related.append({'id': number, 'message': {'text': place.path or 'via'},
+                        'physicalLocation': {'artifactLocation': artifact, 'region': region}})
+    return related
+
+
 def _message(finding: ValidationError) -> str:
     made = (' (made by a Xacro macro or expression: line 1 stands for the file)'
             if (finding.location.file or '').endswith(EXPANDED) else '')
-    return f'{finding.element}: {finding.message} ({finding.hint}){made}'
+    via = ''.join(f' (via [{place.path}]({number}))'
+                  for number, place in enumerate(finding.location.via, start=1)
+                  if place.file is not None and place.line is not None)
+    return f'{finding.element}: {finding.message} ({finding.hint}){made}{via}'
 
 
 def _version() -> str:
@@ -150,6 +171,9 @@ def sarif_report(reports: list[FileReport]) -> str:
                 'level': _LEVEL[finding.severity],
                 'message': {'text': _message(finding)},
                 'locations': [_location(finding, report.path)]}
+            related = _related(finding)
+            if related:
+                result['relatedLocations'] = related
             if kind is not None:
                 result['suppressions'] = [{'kind': kind}]
             results.append(result)

@@ -30,6 +30,7 @@ from urdfgenpy_ros.errors import (
     MissingDependencyError, ParseError, ReadWarning, SourceLocation)
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
 from urdfgenpy_ros.formats.xacro_args import unknown_arguments
+from urdfgenpy_ros.formats.xacro_map import pretty_print, recording, XacroMap
 from urdfgenpy_ros.report import folder_fix
 from urdfgenpy_ros.resources import PackageResolver
 
@@ -99,12 +100,17 @@ def _finding_with(resolver: PackageResolver) -> Iterator[None]:
 
 def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
                  resolver: PackageResolver | None = None,
-                 warnings: list[ReadWarning] | None = None) -> tuple[str, list[str]]:
+                 warnings: list[ReadWarning] | None = None,
+                 maps: list[XacroMap] | None = None,
+                 texts: Mapping[str, str] | None = None) -> tuple[str, list[str]]:
     """
     Return the URDF text ``xacro`` makes of ``path`` and every file it included.
 
     What xacro would print on stderr is not printed: its warnings are appended to
     ``warnings`` (code X102) and, when expansion fails, end the error's one line.
+    Given ``maps``, the source map of the text (where each element was written) is
+    appended to it; the text is the same either way. ``texts`` (absolute path: text,
+    with ``maps``) are expanded instead of those files, as if they had been saved.
 
     :raises ParseError: with xacro's message, when expansion fails (code X001).
     """
@@ -116,7 +122,7 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
     stack: list[str] = []
     try:
         with _LOCK, redirect_stderr(printed), _fresh_state(xacro) as includes, \
-                _finding_with(resolver):
+                _finding_with(resolver), _mapping(xacro, maps is not None, texts) as recorder:
             try:
                 document = xacro.process_file(str(path), mappings=dict(mappings or {}))
             except Exception:  # noqa: B902 - where it was, before the stacks are reset
@@ -124,6 +130,8 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
                 stack = [str(name) for name in getattr(xacro, 'filestack', None) or []]
                 raise
             names = list(dict.fromkeys(includes))
+            if recorder is not None:  # xacro's own print, with where each tag starts
+                text, source_map = pretty_print(recorder, document)
     except Exception as error:  # noqa: B902 - xacro raises many types; all are one line
         cause = getattr(error, 'exc', None)  # xacro wraps what substitutions raise
         shown = cause if isinstance(cause, _PackageMissing) else error
@@ -143,7 +151,20 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
         warnings += [ReadWarning(where, 'X102', f'xacro: {line}')
                      for line in _xacro_warnings(printed.getvalue())]
     included = [str(Path(name).resolve()) for name in names]
-    return document.toprettyxml(indent='  '), included
+    if maps is None:
+        return document.toprettyxml(indent='  '), included
+    maps.append(source_map)
+    return text, included
+
+
+@contextmanager
+def _mapping(xacro: Any, wanted: bool, texts: Mapping[str, str] | None) -> Iterator[Any]:
+    """Record the source map of the expansion inside, when ``wanted``."""
+    if not wanted:
+        yield None
+        return
+    with recording(xacro, texts) as recorder:
+        yield recorder
 
 
 _XML_AT = re.compile(r'line (\d+), column (\d+)')
@@ -193,14 +214,17 @@ def read_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = N
                cls: type[Robot] | None = None) -> Robot:
     """Expand the Xacro file ``path`` with ``mappings`` (``name: value``) and read it."""
     said: list[ReadWarning] = []
+    maps: list[XacroMap] = []
     text, included = expand_xacro(path, mappings, PackageResolver(search_paths, packages),
-                                  said)
+                                  said, maps)
     try:
         robot = read_urdf_bytes(text.encode('utf-8'), f'{path} (expanded)', cls)
     except ParseError as error:
         from urdfgenpy_ros.validation.xacro_source import error_in_source
         raise no_robot_in(path, text) or error_in_source(
-            error, text, [str(Path(path).resolve()), *included], str(path)) from None
+            error, text, [str(Path(path).resolve()), *included], str(path),
+            maps[0]) from None
+    robot.source_map = maps[0]
     if not robot.links:  # a macro library with a robot name (franka's fr3.xacro)
         library = no_robot_in(path, text)
         if library is not None:

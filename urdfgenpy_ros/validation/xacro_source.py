@@ -38,8 +38,10 @@ from typing import NamedTuple, TYPE_CHECKING
 from lxml import etree
 
 from urdfgenpy_ros.errors import ParseError, SourceLocation, ValidationError
+from urdfgenpy_ros.validation.xacro_mapped import mapped, mapped_error
 
 if TYPE_CHECKING:
+    from urdfgenpy_ros.formats.xacro_map import XacroMap
     from urdfgenpy_ros.robot import Robot
 
 EXPANDED = ' (expanded)'
@@ -55,10 +57,17 @@ def in_source(findings: list[ValidationError], robot: Robot) -> list[ValidationE
     """
     Return ``findings`` with each location in a Xacro expansion moved to the source.
 
-    A finding whose element has one literal source tag gets that file, line and column
-    (the element's tag, also for a finding about a part of it, such as its ``<limit>``);
-    any other keeps ``FILE (expanded)`` without a line. Other findings are unchanged.
+    With the expansion's source map (``Robot.from_xacro`` keeps it), a finding gets the
+    file, line and column of its element's start tag where it was written, the macro
+    calls and includes that brought it there, and for an attribute written as an
+    expression, that attribute's place and the properties it reads (``via``). Without
+    a map (an assembly of Xacro parts), a finding whose element has one literal source
+    tag gets that tag; any other keeps ``FILE (expanded)`` without a line. Other
+    findings are unchanged.
     """
+    source_map = getattr(robot, 'source_map', None)
+    if source_map is not None:
+        return [mapped(finding, source_map) for finding in findings]
     files = tuple(file for file in robot.included_files
                   if not file.lower().endswith(_NOT_XML))  # an assembly's YAML, a builder
     return [_moved(finding, files) for finding in findings]
@@ -83,17 +92,20 @@ def _moved(finding: ValidationError, files: tuple[str, ...]) -> ValidationError:
 
 
 def error_in_source(error: ParseError, expanded: str, files: list[str],
-                    source: str) -> ParseError:
+                    source: str, source_map: XacroMap | None = None) -> ParseError:
     """
     Return ``error``, found in the expansion of ``source``, placed at its source tag.
 
-    The failing element's top-level owner (``<joint name="k">``) is looked up as findings
-    are; when no single literal tag makes it, the error names ``FILE (expanded)`` and the
-    element path, without a line.
+    With the expansion's ``source_map``, the tag the failing element was written as;
+    without, the failing element's top-level owner (``<joint name="k">``) is looked up
+    as findings are; when no single literal tag makes it, the error names
+    ``FILE (expanded)`` and the element path, without a line.
     """
     where = error.location
     if where is None or where.line is None or not (where.file or '').endswith(EXPANDED):
         return error
+    if source_map is not None and where.line in source_map.raw:
+        return mapped_error(error, source_map)
     root = etree.fromstring(expanded.encode('utf-8'), etree.XMLParser(
         recover=True, resolve_entities=False, huge_tree=True))
     owner = None

@@ -314,7 +314,9 @@ class RobotViewer:
             self.selected = finding.element
             self._selection.content = (f'**{finding.code}** {finding.element}: '
                                        f'{finding.message}  \n*fix:* {finding.hint}  \n'
-                                       f'`{finding.location}`')
+                                       f'`{finding.location}`' + ''.join(
+                                           f'  \n*via* {place.path} `{place}`'
+                                           for place in finding.location.via))
             match = _ELEMENT.match(finding.element)
             if match is None:
                 return
