@@ -19,7 +19,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from click.testing import CliRunner
-from helpers import require_module
+from helpers import require_module, xacro_expand
 import pytest
 
 from urdfgenpy_ros import Robot
@@ -126,11 +126,15 @@ XACRO = """<?xml version="1.0"?>
 """
 
 
-def test_check_fix_on_xacro_counts_the_findings_it_would_repair(tmp_path: Path) -> None:
+def test_check_fix_on_xacro_repairs_in_place_and_counts_what_stays(tmp_path: Path) -> None:
+    """J102 and J104 are edits of the Xacro's own lines; the shapeless I202 stays, listed."""
     path = tmp_path / 'x.urdf.xacro'
     path.write_text(XACRO)
     result = CliRunner().invoke(main, ['check', str(path), '--fix', '--no-meshes'])
+    fixed = [line for line in result.output.splitlines() if ': fixed J10' in line]
     listed = [line for line in result.output.splitlines()
               if (' error ' in line or ' warning ' in line) and line.startswith(str(path))]
-    assert len(listed) == 3, result.output  # J102, J104, and I202 of a shapeless link
-    assert 'repair the 2 of the 3 findings above that --fix repairs by hand' in result.output
+    assert len(fixed) == 2 and len(listed) == 1 and ' I202 ' in listed[0], result.output
+    assert '1 error(s), 0 warning(s), 0 unreadable, 2 fixed' in result.output
+    expanded = xacro_expand(path)
+    assert 'xyz="0 0 1"' in expanded and 'lower="-1" upper="1"' in expanded
