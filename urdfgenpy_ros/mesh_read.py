@@ -41,6 +41,7 @@ class Part:
     rgba: tuple[float, float, float, float] | None  # None: the file gives no colour
     material: str = ''  # the file's material name (id), for a readable MJCF name
     textured: bool = False  # its colour is a texture image (not carried)
+    material_id: str = ''  # the file's material id ('' for none)
 
 
 def dae_unit(path: str | Path) -> float:
@@ -112,21 +113,23 @@ def dae_parts(path: str | Path) -> list[Part]:
     unit = dae_unit(path)
     groups: dict[Any, list[Any]] = {}
     for primitive in _primitives(document, collada):
-        rgba, name, textured = _colour(getattr(primitive, 'material', None))
+        material = getattr(primitive, 'material', None)
+        rgba, name, textured = _colour(material)
         vertices = numpy.asarray(primitive.vertex, dtype=float) * unit
         faces = numpy.asarray(primitive.vertex_index, dtype=numpy.int64).reshape(-1, 3)
         if not len(faces):
             continue
-        groups.setdefault((rgba, textured), []).append((vertices, faces, name))
+        groups.setdefault((rgba, textured), []).append(
+            (vertices, faces, name, str(getattr(material, 'id', '') or '')))
     parts = []
     for (rgba, textured), pieces in groups.items():
         offset, all_vertices, all_faces = 0, [], []
-        for vertices, faces, _ in pieces:
+        for vertices, faces, _, _ in pieces:
             all_vertices.append(vertices)
             all_faces.append(faces + offset)
             offset += len(vertices)
         parts.append(Part(numpy.concatenate(all_vertices), numpy.concatenate(all_faces),
-                          rgba, pieces[0][2], textured))
+                          rgba, pieces[0][2], textured, pieces[0][3]))
     if not parts:
         raise ModelError(f'{path}: no triangles in it (a mesh needs a surface)')
     return parts

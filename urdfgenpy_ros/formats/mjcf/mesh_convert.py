@@ -117,8 +117,15 @@ def _convert_quietly(path: Path) -> bytes | None:
         return None
 
 
+_keys: dict[tuple[Path, int, int], str] = {}  # (file, size, mtime) -> its key, this process
+
+
 def _key(path: Path) -> str:
-    return mesh_cache.key(f'obj{VERSION}{path.suffix.lower()}', path.read_bytes())
+    status = path.stat()
+    stamp = (path, status.st_size, status.st_mtime_ns)
+    if stamp not in _keys:
+        _keys[stamp] = mesh_cache.key(f'obj{VERSION}{path.suffix.lower()}', path.read_bytes())
+    return _keys[stamp]
 
 
 def _convert(path: Path) -> Converted:

@@ -68,6 +68,7 @@ class MeshAssets:
     notes: list[str] = field(default_factory=list)  # rewritten files, textures not carried
     _names: dict[tuple[Path, int], str] = field(default_factory=dict)
     _textured: list[str] = field(default_factory=list)
+    _conversions: dict[Path, Converted] = field(default_factory=dict)
 
     def prepare(self, robot: Robot) -> None:
         """Convert the robot's mesh files that need it, in parallel when there are many."""
@@ -136,10 +137,12 @@ class MeshAssets:
         return self.assets[key][0]
 
     def _converted(self, path: Path) -> Converted:
-        try:
-            return converted(path)
-        except (ModelError, OSError) as error:
-            raise MeshNotWritten(str(error)) from None
+        if path not in self._conversions:
+            try:
+                self._conversions[path] = converted(path)
+            except (ModelError, OSError) as error:
+                raise MeshNotWritten(str(error)) from None
+        return self._conversions[path]
 
     def _file_name(self, path: Path, part: int) -> str:
         if (path, part) in self._names:
