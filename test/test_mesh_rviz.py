@@ -183,8 +183,8 @@ def test_a_conversion_is_taken_from_the_cache(tmp_path: Path, monkeypatch) -> No
             (tmp_path / 'b' / 'assets' / name).read_bytes()
 
 
-def test_many_conversions_in_worker_processes_equal_one_by_one(tmp_path: Path,
-                                                                monkeypatch) -> None:
+def test_many_conversions_in_worker_processes_equal_one_by_one(
+        tmp_path: Path, monkeypatch) -> None:
     trimesh = require_module('trimesh')
     from urdfgenpy_ros import mesh_cache
     from urdfgenpy_ros.formats.mjcf import mesh_convert

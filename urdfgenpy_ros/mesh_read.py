@@ -26,6 +26,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 import logging
+from os import PathLike
 from pathlib import Path
 from typing import Any
 
@@ -44,7 +45,7 @@ class Part:
     material_id: str = ''  # the file's material id ('' for none)
 
 
-def dae_unit(path: str | Path) -> float:
+def dae_unit(path: str | PathLike[str]) -> float:
     """Return a COLLADA file's ``<asset><unit meter>`` (1 when absent), as RViz reads it."""
     from lxml import etree
     try:
@@ -65,7 +66,7 @@ def dae_unit(path: str | Path) -> float:
     return 1.0
 
 
-def load_mesh(path: str | Path) -> Any:
+def load_mesh(path: str | PathLike[str]) -> Any:
     """
     Return the triangles of ``path`` as one trimesh mesh, placed as RViz places them.
 
@@ -80,7 +81,7 @@ def load_mesh(path: str | Path) -> Any:
             from None
     with _quiet():
         try:
-            mesh = trimesh.load(str(path), force='mesh', process=False)
+            mesh: Any = trimesh.load(str(path), force='mesh', process=False)
         except Exception as error:  # noqa: B902 - trimesh raises many kinds for a bad file
             raise ModelError(f'{path}: trimesh cannot read it ({error})') from None
     if not len(getattr(mesh, 'faces', ())):
@@ -92,7 +93,7 @@ def load_mesh(path: str | Path) -> Any:
     return mesh
 
 
-def dae_parts(path: str | Path) -> list[Part]:
+def dae_parts(path: str | PathLike[str]) -> list[Part]:
     """
     Return a COLLADA file's triangles grouped by material colour, as RViz places them.
 

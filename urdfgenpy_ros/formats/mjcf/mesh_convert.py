@@ -216,7 +216,7 @@ def readable(path: Path) -> tuple[bytes, str, str]:
             from None
     again = mujoco_refusal('m.obj', data)
     if again is not None:
-        raise ModelError(f'{path}: MuJoCo cannot read it ({refusal}), nor trimesh\'s '
+        raise ModelError(f"{path}: MuJoCo cannot read it ({refusal}), nor trimesh's "
                          f'rewrite of it ({again})')
     return data, '.obj', (f'{path}: MuJoCo cannot read it as written ({refusal}): written '
-                          'as OBJ from trimesh\'s reading of it')
+                          "as OBJ from trimesh's reading of it")

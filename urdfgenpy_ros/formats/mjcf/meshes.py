@@ -33,8 +33,8 @@ from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.errors import ModelError, UrdfgenpyError
 from urdfgenpy_ros.floats import fmt_vec
-from urdfgenpy_ros.formats.mjcf.mesh_convert import (convert_many, converted, Converted,
-                                                     COPIED, CONVERTED, mujoco_refusal,
+from urdfgenpy_ros.formats.mjcf.mesh_convert import (convert_many, CONVERTED, Converted,
+                                                     converted, COPIED, mujoco_refusal,
                                                      needs_conversion, readable, Rgba)
 from urdfgenpy_ros.geometry import Mesh
 from urdfgenpy_ros.resources import PackageResolver
@@ -75,9 +75,9 @@ class MeshAssets:
         if self.meshdir is None:
             return
         paths = []
-        for mesh in [shape.geometry for link in robot.links
-                     for shape in (*link.visuals, *link.collisions)
-                     if isinstance(shape.geometry, Mesh)]:
+        shapes: list[Any] = [shape for link in robot.links
+                             for shape in (*link.visuals, *link.collisions)]
+        for mesh in [shape.geometry for shape in shapes if isinstance(shape.geometry, Mesh)]:
             try:
                 path = self.resolver.resolve(mesh.filename, self.base).resolve()
                 if path.is_file() and needs_conversion(path):
