@@ -255,3 +255,20 @@ def test_robots_with_dae_meshes_are_assembled_as_rviz_shows_them(
                            and model.geom_matid[geom] >= 0]).reshape(-1, 4)
     for rgba in mesh_judge.dae_colours(path, search_paths):  # trimesh reads 8 bits
         assert (numpy.abs(written - rgba).max(axis=1) <= 0.5 / 255 + 1e-6).any(), rgba
+
+
+def test_render_and_view_read_a_dae_as_rviz_does(tmp_path: Path) -> None:
+    require_module('trimesh')
+    from urdfgenpy_ros.viewer.scene import robot_parts
+    mesh_judge.write_y_up_dae(tmp_path / 'part.dae')
+    robot = Robot('part').add_link(Link('base_link', visuals=[Visual(Mesh(
+        str(tmp_path / 'part.dae')))]))
+    parts = robot_parts(robot)
+    assert len(parts) == 1 and parts[0].textured  # the file's own colours are drawn
+    theirs = mesh_judge.rviz_vertices(tmp_path / 'part.dae')
+    mine = numpy.asarray(parts[0].mesh.vertices)
+    assert numpy.allclose([mine.min(axis=0), mine.max(axis=0)],
+                          [theirs.min(axis=0), theirs.max(axis=0)], rtol=0.0, atol=1e-9)
+    colours = {tuple(row) for row in numpy.asarray(parts[0].mesh.visual.face_colors)}
+    assert colours == {tuple(round(value * 255) for value in colour)
+                       for colour in (mesh_judge.RED, mesh_judge.BLUE)}
