@@ -197,6 +197,9 @@ def rewritten(path: Path) -> bytes:
                                             path.read_bytes()), make)
 
 
+_readable: dict[tuple[Path, int, int], tuple[bytes, str, str]] = {}  # this process's
+
+
 def readable(path: Path) -> tuple[bytes, str, str]:
     """
     Return the bytes to write for an STL or OBJ, their suffix, and a note ('' for none).
@@ -205,6 +208,14 @@ def readable(path: Path) -> tuple[bytes, str, str]:
 
     :raises ModelError: when MuJoCo reads neither.
     """
+    status = path.stat()
+    stamp = (path, status.st_size, status.st_mtime_ns)
+    if stamp not in _readable:
+        _readable[stamp] = _readable_now(path)
+    return _readable[stamp]
+
+
+def _readable_now(path: Path) -> tuple[bytes, str, str]:
     data = path.read_bytes()
     refusal = mujoco_refusal(path.name, data)
     if refusal is None:
