@@ -21,7 +21,8 @@ left arm with ``left_`` names) written to a temporary folder. Each command runs 
 process, timed by the wall clock, for each code tree given (``--code DIR``: the package
 at that folder on PYTHONPATH; e.g. 6684634 installed beside), with an empty mesh cache
 (cold: every run its own cache folder) and with the cache a first run filled (warm).
-Medians of ``--repeat`` runs, and the spread (min-max).
+Medians of ``--repeat`` runs, and the spread (min-max); the CPU seconds the process used
+(user + system) say what it costs on a machine others share.
 
     python bench/bench_meshes.py --repeat 5 --code /work/base-6684634 --code .
 """
@@ -32,6 +33,7 @@ import argparse
 from importlib import metadata
 import os
 from pathlib import Path
+import resource
 import shutil
 import statistics
 import subprocess
@@ -91,17 +93,19 @@ COMMANDS = {
 }
 
 
-def run(code: Path, command: list[str], cache: Path, folder: Path) -> float:
-    """Return the seconds one ``urdfgenpy`` process takes, the package at ``code``."""
+def run(code: Path, command: list[str], cache: Path, folder: Path) -> tuple[float, float]:
+    """Return the wall and CPU seconds of one ``urdfgenpy`` process, the package at ``code``."""
     environment = dict(os.environ, PYTHONPATH=str(code), URDFGENPY_CACHE_DIR=str(cache))
+    used = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     done = subprocess.run([sys.executable, '-c', 'import sys; sys.argv[0] = "urdfgenpy"; '
                            'from urdfgenpy_ros.cli import main; main()', *command],
                           cwd=folder, env=environment, capture_output=True, text=True)
     seconds = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if done.returncode != 0:
         raise SystemExit(f'{code}: urdfgenpy {" ".join(command)} failed:\n{done.stderr}')
-    return seconds
+    return seconds, (after.ru_utime - used.ru_utime) + (after.ru_stime - used.ru_stime)
 
 
 def main() -> None:
@@ -110,12 +114,12 @@ def main() -> None:
     parser.add_argument('--repeat', type=int, default=5)
     parser.add_argument('--code', type=Path, action='append', required=True)
     arguments = parser.parse_args()
-    print('| command | code | cache | median s | spread s |')
-    print('|---|---|---|---:|---:|')
+    print('| command | code | cache | median wall s | spread s | median CPU s |')
+    print('|---|---|---|---:|---:|---:|')
     for name, make in COMMANDS.items():
         for code in arguments.code:
             for warm in (False, True):
-                times = []
+                times, cpu = [], []
                 with tempfile.TemporaryDirectory() as temporary:
                     root = Path(temporary)
                     urdf = write_arm(root / 'src')
@@ -126,14 +130,17 @@ def main() -> None:
                         out = root / f'run{number}'
                         out.mkdir()
                         use = cache if warm else root / f'cache{number}'
-                        times.append(run(code.resolve(), make(urdf, out), use, root))
+                        wall, spent = run(code.resolve(), make(urdf, out), use, root)
+                        times.append(wall)
+                        cpu.append(spent)
                         for made in (urdf.parent.parent / 'meshes' / 'visual').glob('*mirror*'):
                             made.unlink()  # mirror writes beside the originals
                         for made in (urdf.parent.parent / 'meshes' / 'collision').glob(
                                 '*mirror*'):
                             made.unlink()
                 print(f'| {name} | {code} | {"warm" if warm else "cold"} | '
-                      f'{statistics.median(times):.2f} | {min(times):.2f}-{max(times):.2f} |',
+                      f'{statistics.median(times):.2f} | {min(times):.2f}-{max(times):.2f} | '
+                      f'{statistics.median(cpu):.2f} |',
                       flush=True)
 
 
