@@ -17,6 +17,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
+import os
 from pathlib import Path
 import shutil
 import subprocess
@@ -38,6 +39,18 @@ def pytest_addoption(parser: pytest.Parser) -> None:
 def pytest_configure(config: pytest.Config) -> None:
     """Select the fast lane when asked and name slow unmarked tests (lanes.py)."""
     lanes.configure(config)
+
+
+@pytest.fixture(autouse=True, scope='session')
+def _mesh_cache(tmp_path_factory: pytest.TempPathFactory) -> Iterator[None]:
+    """Keep converted meshes in a folder of the run's own, not the user's cache."""
+    saved = os.environ.get('URDFGENPY_CACHE_DIR')
+    os.environ['URDFGENPY_CACHE_DIR'] = str(tmp_path_factory.mktemp('mesh-cache'))
+    yield
+    if saved is None:
+        os.environ.pop('URDFGENPY_CACHE_DIR', None)
+    else:
+        os.environ['URDFGENPY_CACHE_DIR'] = saved
 
 
 @pytest.fixture

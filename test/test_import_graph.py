@@ -26,8 +26,8 @@ user's builder functions, the viewer's optional engines) are not read.
 The layers (docs/architecture.md), each importing only those below it:
 
 1. **Model** (:data:`MODEL`): the elements (``geometry``, ``link``, ``joint``,
-   ``inertial``, ...), ``dh_row``, ``mesh_inertia`` and ``model.RobotModel``, the robot's
-   data and tree.
+   ``inertial``, ...), ``dh_row``, ``mesh_inertia``, ``mesh_read`` and
+   ``model.RobotModel``, the robot's data and tree.
 2. **Operations** on a model: ``formats/``, ``validation/``, ``dynamics/``, ``reshape/``,
    ``assembly``, ``assembly_file``, ``builders``, ``tree``, ``lumping``, ``resources``,
    ``dh``, ``urdf_versions``, ``kinematics``, ``plugins``. They name ``Robot`` only for
@@ -55,7 +55,8 @@ Graph = dict[str, set[str]]
 PACKAGE = 'urdfgenpy_ros'
 MODEL = frozenset(f'{PACKAGE}.{name}' for name in (
     'checks', 'dh_row', 'errors', 'extensions', 'floats', 'geometry', 'inertial', 'joint',
-    'lazy_lists', 'link', 'material', 'mesh_inertia', 'model', 'owned_names', 'preserved',
+    'lazy_lists', 'link', 'material', 'mesh_inertia', 'mesh_read', 'model', 'owned_names',
+    'preserved',
     'sensors', 'transforms', 'value_kinds'))
 """The model layer: these import only each other."""
 USE_ROBOT = (PACKAGE, f'{PACKAGE}.cli.', f'{PACKAGE}.publisher.', f'{PACKAGE}.scaffold.',

@@ -184,9 +184,9 @@ def test_a_dae_mesh_keeps_its_volume_and_place(tmp_path: Path) -> None:
     source = trimesh.load(str(tmp_path / 'part.dae'), force='mesh')
     converted = trimesh.load(str(tmp_path / 'out' / 'meshes' / 'part.obj'), force='mesh')
     assert abs(converted.volume - source.volume * 1e-9) <= 1e-6 * abs(converted.volume)
-    # where the URDF puts it: millimetres to metres, Y up to Z up, the scale, the origins
+    # where the URDF puts it: millimetres to metres (the up axis ignored, as RViz does),
+    # the scale, the origins
     vertices = numpy.asarray(source.vertices) * 0.001
-    vertices = vertices @ numpy.array([[1, 0, 0], [0, 0, 1], [0, -1, 0]], dtype=float)
     vertices = vertices * (1.0, 2.0, 1.0)
     for xyz, rpy in (((0.1, 0.2, 0.3), (0.3, 0.2, 0.1)), ((0.0, 0.0, 1.0), (0.0, 0.0, 0.5))):
         matrix = trimesh.transformations.euler_matrix(*rpy, axes='sxyz')

@@ -51,8 +51,9 @@ def _share() -> Path:
 
 
 def _absolute(text: str) -> str:
-    """Return URDF text whose package:// mesh URIs are absolute paths (for MuJoCo)."""
-    return text.replace('package://example-robot-data/', f'{_share()}/example-robot-data/')
+    """Return URDF text whose package:// and file:// mesh URIs are paths (for MuJoCo)."""
+    return text.replace('package://example-robot-data/', f'{_share()}/example-robot-data/'
+                        ).replace('file://', '')
 
 
 def _reflection(axis: int):
@@ -116,7 +117,7 @@ def test_mirrored_mesh_keeps_volume_and_its_bounds_are_reflected(tmp_path: Path)
     for name, link in before.items():
         for old, new in zip(link.visuals, robot.get_link(_renamed(name, rename)).visuals):
             source = trimesh.load(_absolute(old.geometry.filename), force='mesh')
-            mirrored = trimesh.load(new.geometry.filename, force='mesh')
+            mirrored = trimesh.load(_absolute(new.geometry.filename), force='mesh')
             assert mirrored.volume == pytest.approx(source.volume, rel=1e-9)
             assert mirrored.is_winding_consistent and mirrored.volume > 0
             low, high = source.bounds

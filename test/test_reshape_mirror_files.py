@@ -93,7 +93,8 @@ def test_two_meshes_of_one_name_get_a_mirrored_file_each(tmp_path: Path) -> None
         assert result.exit_code == 0, result.output
     arm = Robot.from_urdf(tmp_path / 'two1.urdf').get_link('right_arm')
     visual, collision = arm.visuals[0].geometry.filename, arm.collisions[0].geometry.filename
-    assert visual != collision
+    assert visual != collision and visual.startswith('file:///')  # never a bare path
+    visual, collision = visual.removeprefix('file://'), collision.removeprefix('file://')
     _assert_reflection(Path(visual), seen)
     _assert_reflection(Path(collision), hit)
 

@@ -16,7 +16,8 @@
 Inertia of closed meshes, and of MeshLab's "Compute Geometric Measures" figures.
 
 The volume integrals are Eberly's (Polyhedral Mass Properties, 2002): exact for a closed,
-consistently wound triangle mesh. trimesh (optional extra ``mesh``) only reads the file.
+consistently wound triangle mesh. trimesh (optional extra ``mesh``) only reads the file,
+as RViz reads it (:mod:`urdfgenpy_ros.mesh_read`: a DAE's unit applied, its up axis not).
 """
 
 from __future__ import annotations
@@ -54,15 +55,20 @@ def _numpy() -> Any:
 
 
 def load_triangles(path: str | PathLike[str]) -> Any:
-    """Return the mesh's triangles as an (n, 3, 3) array (STL, OBJ, DAE via trimesh)."""
+    """Return the mesh's triangles as an (n, 3, 3) array, placed as RViz places them."""
+    from urdfgenpy_ros.errors import ModelError
+    from urdfgenpy_ros.mesh_read import load_mesh
     try:
-        import trimesh
+        import trimesh  # noqa: F401 (the extra it needs, named in its own words)
     except ImportError:
         raise MissingDependencyError('trimesh', 'mesh', 'Inertial.from_mesh') from None
     try:
-        mesh: Any = trimesh.load(str(path), force='mesh', process=False)
-    except (OSError, ValueError, KeyError) as error:
-        raise UrdfgenpyError(f'{path}: cannot read the mesh ({error})') from None
+        mesh: Any = load_mesh(path)  # a DAE's unit applied, its up axis not (as RViz)
+    except ModelError as error:
+        reason = str(error).removeprefix(f'{path}: ')
+        if reason.startswith('no triangles'):
+            return _numpy().zeros((0, 3, 3))
+        raise UrdfgenpyError(f'{path}: cannot read the mesh ({reason})') from None
     return mesh.vertices[mesh.faces]
 
 

@@ -132,7 +132,9 @@ def _poly_data(part: Part, matrix: Any) -> Any:
     data.SetPoints(points)
     data.SetPolys(cells)
     if part.textured:
-        colours = numpy.asarray(part.mesh.visual.to_color().vertex_colors, dtype=numpy.uint8)
+        visual = part.mesh.visual  # a texture's colours, or colours by vertex or face
+        colours = numpy.asarray((visual.to_color() if hasattr(visual, 'to_color') else visual)
+                                .vertex_colors, dtype=numpy.uint8)
         if len(colours) == len(vertices):
             array = numpy_to_vtk(numpy.ascontiguousarray(colours[:, :3]), deep=True)
             array.SetName('colours')

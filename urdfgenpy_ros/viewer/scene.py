@@ -131,7 +131,12 @@ class MeshCache:
             level = logger.level
             logger.setLevel(logging.CRITICAL)  # it logs tracebacks for a missing texture
             try:
-                loaded = trimesh.load(key, force='mesh')
+                loaded = _coloured_dae(path) if path.suffix.lower() == '.dae' else None
+                if loaded is None:
+                    loaded = trimesh.load(key, force='mesh')
+                    if path.suffix.lower() == '.dae':  # as RViz: the unit applied
+                        from urdfgenpy_ros.mesh_read import dae_unit
+                        loaded.apply_scale(dae_unit(path))
             except Exception as error:  # noqa: B902 - trimesh raises many kinds
                 self.problems.append(f'{path}: cannot read the mesh ({error})')
                 loaded = None
@@ -145,6 +150,43 @@ class MeshCache:
         if mesh.scale is not None:
             result.apply_scale(mesh.scale)
         return result
+
+
+def _coloured_dae(path: Path) -> Any | None:
+    """
+    Return a DAE as one trimesh coloured by face, as RViz places it; None when textured.
+
+    Read once by content (the mesh cache): its triangles and each material's colour.
+    """
+    import io
+
+    import numpy
+    import trimesh
+
+    from urdfgenpy_ros import mesh_cache
+    from urdfgenpy_ros.mesh_read import dae_parts
+
+    def make() -> bytes:
+        parts = dae_parts(path)
+        if any(part.textured for part in parts):
+            return b''
+        colours = [numpy.tile(numpy.asarray(part.rgba or DEFAULT_RGBA) * 255.0,
+                              (len(part.faces), 1)) for part in parts]
+        offsets = numpy.cumsum([0] + [len(part.vertices) for part in parts])[:-1]
+        stream = io.BytesIO()
+        numpy.savez(stream, vertices=numpy.concatenate([part.vertices for part in parts]),
+                    faces=numpy.concatenate([part.faces + offset for part, offset
+                                             in zip(parts, offsets)]),
+                    colours=numpy.round(numpy.concatenate(colours)).astype(numpy.uint8))
+        return stream.getvalue()
+    data = mesh_cache.cached(mesh_cache.key('view1.dae', path.read_bytes()), make)
+    if not data:
+        return None
+    arrays = numpy.load(io.BytesIO(data))
+    mesh = trimesh.Trimesh(arrays['vertices'], arrays['faces'], process=False,
+                           face_colors=arrays['colours'])
+    mesh.remove_unreferenced_vertices()
+    return mesh
 
 
 def geometry_mesh(geometry: Any, cache: MeshCache) -> Any | None:

@@ -192,9 +192,11 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     asset = etree.SubElement(document, 'asset')
     worldbody = etree.SubElement(document, 'worldbody')
     declared = declared_friction(robot)
+    meshes.prepare(written)  # converts what needs it, in parallel when there is much
     writer = BodyWriter(written, meshes, taken, sites)
     writer.friction = ({link: value.text for link, value in declared.items()}, owners)
     tree = writer.write(worldbody)
+    notes.extend(meshes.said())
     for element, attributes in meshes.elements():
         etree.SubElement(asset, element, attributes)
     for name, rgba in tree.materials.items():

@@ -197,7 +197,7 @@ class BodyWriter:
                 if not has_size(item.geometry):
                     continue  # MuJoCo refuses a geom of size 0: the loss report says so
                 try:
-                    attributes.update(geometry_attributes(item.geometry, self.meshes, where))
+                    pieces = self._pieces(item, where)
                 except MeshNotWritten as error:
                     assert isinstance(item.geometry, Mesh)
                     self.tree.missing[item.geometry.filename] = (str(error), error.hint)
@@ -212,7 +212,31 @@ class BodyWriter:
                     owner = owners[link.name][number - 1] if link.name in owners else link.name
                     if owner in friction:
                         attributes['friction'] = friction[owner]
-                etree.SubElement(body, 'geom', attributes)
+                for piece, (shape, rgba, colour) in enumerate(pieces):
+                    written = {**attributes, **shape}
+                    if piece and 'name' in written:  # a DAE's colours: one geom each
+                        written.pop('name')
+                        if f"{attributes['name']}_{piece + 1}" not in self._geom_names:
+                            written['name'] = f"{attributes['name']}_{piece + 1}"
+                            self._geom_names.add(written['name'])
+                    if rgba is not None:  # the mesh's own colour wins, as in RViz
+                        written['material'] = self._colour(colour or 'mesh', rgba)
+                    etree.SubElement(body, 'geom', written)
+
+    def _pieces(self, item: Shape, where: str) -> list[tuple[dict[str, str], Any, str]]:
+        """Return a shape's geoms: one, or one per colour of a visual DAE."""
+        if isinstance(item, Visual) and isinstance(item.geometry, Mesh):
+            return [({'type': 'mesh', 'mesh': name}, rgba, colour) for name, rgba, colour
+                    in self.meshes.add_coloured(item.geometry, where)]
+        return [(geometry_attributes(item.geometry, self.meshes, where), None, '')]
+
+    def _colour(self, base: str, rgba: tuple[float, ...]) -> str:
+        """Return the name of a material of colour ``rgba`` (``base``, or numbered)."""
+        name, number = base, 2
+        while name in self.tree.materials and self.tree.materials[name] != tuple(rgba):
+            name, number = f'{base}_{number}', number + 1
+        self.tree.materials[name] = tuple(rgba)
+        return name
 
     def _material(self, visual: Visual) -> str | None:
         material = visual.material
@@ -223,13 +247,7 @@ class BodyWriter:
             rgba = self.robot.get_material(material.name).rgba
         if rgba is None:
             return None
-        base = material.name or 'material'  # URDF allows name="" on a visual's colour
-        name, number = base, 2
-        while name in self.tree.materials and self.tree.materials[name] != tuple(rgba) \
-                or not name:
-            name, number = f'{base}_{number}', number + 1
-        self.tree.materials[name] = tuple(rgba)
-        return name
+        return self._colour(material.name or 'material', rgba)  # name="" is allowed
 
     def _joint(self, body: Any, joint: Joint, top: bool) -> None:
         kind = joint.type

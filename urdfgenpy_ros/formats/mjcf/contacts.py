@@ -38,8 +38,11 @@ def write_excludes(document: Any, assets: dict[str, bytes], meshdir: str | None
                 "pip install 'urdfgenpy_ros[engines]')")
     files = {f'{meshdir}/{name}' if meshdir else name: data for name, data in assets.items()}
     try:
-        model = mujoco.MjModel.from_xml_string(etree.tostring(document, encoding='unicode'),
-                                               files)
+        try:
+            model = mujoco.MjModel.from_xml_string(_without_visuals(document), files)
+        except ValueError:  # an overlay names a visual geom: the whole model, then
+            model = mujoco.MjModel.from_xml_string(
+                etree.tostring(document, encoding='unicode'), files)
     except ValueError as error:
         return f'contacts: no self-collision excluded: MuJoCo refuses the model ({error})'
     pairs = _pairs(mujoco, model)
@@ -61,6 +64,21 @@ def write_excludes(document: Any, assets: dict[str, bytes], meshdir: str | None
     return (f'contacts: {len(new)} body pair(s) excluded from self-collision (a body and '
             "its world-welded parent, and bodies touching at the 'home' keyframe, as "
             'MuJoCo finds them; Gazebo has no self-collision by default)')
+
+
+def _without_visuals(document: Any) -> str:
+    """Return the model's text without visual geoms and the meshes only they use (faster)."""
+    import copy
+    model = copy.deepcopy(document)
+    for geom in list(model.iter('geom')):
+        if geom.get('class') == 'visual':
+            geom.getparent().remove(geom)
+    used = {geom.get('mesh') for geom in model.iter('geom')}
+    asset = model.find('asset')
+    for mesh in list(asset.iter('mesh')) if asset is not None else ():
+        if mesh.get('name') not in used:
+            asset.remove(mesh)
+    return etree.tostring(model, encoding='unicode')
 
 
 def _pairs(mujoco: Any, model: Any) -> list[tuple[str, str]]:

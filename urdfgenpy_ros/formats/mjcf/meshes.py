@@ -17,26 +17,31 @@
 The mesh assets of an MJCF model: resolved, named uniquely, written beside it.
 
 URIs resolve as everywhere in the package (``package://``, ``file://``, paths relative to
-the description). STL and OBJ files are copied as they are; DAE, GLB, GLTF and PLY are
-converted to OBJ with trimesh, a DAE's ``<unit meter>`` and ``<up_axis>`` applied (as
-RViz and Gazebo read it). A mesh's ``scale`` goes on its asset.
+the description). STL and OBJ files are copied as they are when MuJoCo's own loader reads
+them, else rewritten; DAE, GLB, GLTF and PLY are converted to OBJ (:mod:`.mesh_convert`),
+placed as RViz places them (a DAE's ``<unit meter>`` applied, its ``<up_axis>`` not). A
+visual DAE of several colours becomes one OBJ per colour. A mesh's ``scale`` goes on its
+asset.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+import re
+from typing import Any, TYPE_CHECKING
 from urllib.parse import urlparse
 
-from urdfgenpy_ros.errors import MissingDependencyError, ModelError, UrdfgenpyError
+from urdfgenpy_ros.errors import ModelError, UrdfgenpyError
 from urdfgenpy_ros.floats import fmt_vec
+from urdfgenpy_ros.formats.mjcf.mesh_convert import (convert_many, CONVERTED, Converted,
+                                                     converted, COPIED, mujoco_refusal,
+                                                     needs_conversion, readable, Rgba)
 from urdfgenpy_ros.geometry import Mesh
 from urdfgenpy_ros.resources import PackageResolver
 
-COPIED = ('.stl', '.obj')
-CONVERTED = ('.dae', '.glb', '.gltf', '.ply')
-
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 PACKAGE_HINT = ('source its workspace, or give the folder holding its package: '
                 '--package-path on the command line, search_paths in Python')
@@ -53,18 +58,58 @@ class MeshNotWritten(ModelError):
 
 @dataclass
 class MeshAssets:
-    """Mesh assets by (file, scale): their names, and the files to write in ``meshdir``."""
+    """Mesh assets by (file, scale, colour part): their names, and the files to write."""
 
     resolver: PackageResolver
     base: Path | None
     meshdir: str | None  # None: reference each file where it is (no conversion possible)
-    assets: dict[tuple[Path, Any], tuple[str, str]] = field(default_factory=dict)
+    assets: dict[tuple[Path, Any, int], tuple[str, str]] = field(default_factory=dict)
     files: dict[str, bytes] = field(default_factory=dict)  # name -> content (copied, or
     # converted to OBJ): read when added, so a bad file is a finding, not an abort
-    _names: dict[Path, str] = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)  # rewritten files, textures not carried
+    _names: dict[tuple[Path, int], str] = field(default_factory=dict)
+    _textured: list[str] = field(default_factory=list)
+    _conversions: dict[Path, Converted] = field(default_factory=dict)
+
+    def prepare(self, robot: Robot) -> None:
+        """Convert the robot's mesh files that need it, in parallel when there are many."""
+        if self.meshdir is None:
+            return
+        paths = []
+        shapes: list[Any] = [shape for link in robot.links
+                             for shape in (*link.visuals, *link.collisions)]
+        for mesh in [shape.geometry for shape in shapes if isinstance(shape.geometry, Mesh)]:
+            try:
+                path = self.resolver.resolve(mesh.filename, self.base).resolve()
+                if path.is_file() and needs_conversion(path):
+                    paths.append(path)
+            except (UrdfgenpyError, OSError):
+                continue  # said when the geom is written
+        convert_many(paths)
 
     def add(self, mesh: Mesh, where: str) -> str:
         """Return the asset name of ``mesh`` (read at ``where``), adding it when new."""
+        return self._asset(self._path(mesh), mesh.scale, -1)
+
+    def add_coloured(self, mesh: Mesh, where: str) -> list[tuple[str, Rgba | None, str]]:
+        """
+        Return the assets of a visual ``mesh``: one per colour its file gives (a DAE's).
+
+        Each is (asset name, RGBA or None when the file gives none, the file's material).
+        """
+        path = self._path(mesh)
+        if path.suffix.lower() != '.dae' or self.meshdir is None:
+            return [(self._asset(path, mesh.scale, -1), None, '')]
+        conversion = self._converted(path)
+        if conversion.textured and str(path) not in self._textured:
+            self._textured.append(str(path))
+        if len(conversion.parts) <= 1:
+            rgba, name = (conversion.parts[0][1:] if conversion.parts else (None, ''))
+            return [(self._asset(path, mesh.scale, -1), rgba, name)]
+        return [(self._asset(path, mesh.scale, number), rgba, name)
+                for number, (_, rgba, name) in enumerate(conversion.parts)]
+
+    def _path(self, mesh: Mesh) -> Path:
         try:
             path = self.resolver.resolve(mesh.filename, self.base).resolve()
         except UrdfgenpyError as error:  # one hint, said below, not the resolver's too
@@ -72,15 +117,18 @@ class MeshAssets:
             if reason.endswith(')') and ' (' in reason:
                 reason = reason.rsplit(' (', 1)[0]
             raise MeshNotWritten(reason, self._where_hint(mesh.filename)) from None
-        key = (path, mesh.scale)
+        suffix = path.suffix.lower()
+        if suffix not in COPIED + CONVERTED:
+            raise MeshNotWritten(f'MuJoCo reads STL and OBJ, and urdfgenpy converts '
+                                 f'{", ".join(CONVERTED)}', f'the model has no such '
+                                 f'geom: convert the {suffix} file to one of them')
+        return path
+
+    def _asset(self, path: Path, scale: Any, part: int) -> str:
+        key = (path, scale, part)
         if key not in self.assets:
-            suffix = path.suffix.lower()
-            if suffix not in COPIED + CONVERTED:
-                raise MeshNotWritten(f'MuJoCo reads STL and OBJ, and urdfgenpy converts '
-                                     f'{", ".join(CONVERTED)}', f'the model has no such '
-                                     f'geom: convert the {suffix} file to one of them')
             try:
-                written = self._file_name(path)
+                written = self._file_name(path, part)
             except (ModelError, OSError) as error:  # unreadable: its geom is left out
                 if self.meshdir is None and isinstance(error, ModelError):
                     raise  # it needs a folder to go to: an option, not the mesh
@@ -99,29 +147,50 @@ class MeshAssets:
                 f'{folder}, and the file is not in it: correct the file name, or install the '
                 'mesh into that package')
 
-    def _file_name(self, path: Path) -> str:
-        if path in self._names:
-            return self._names[path]
+    def _converted(self, path: Path) -> Converted:
+        if path not in self._conversions:
+            try:
+                self._conversions[path] = converted(path)
+            except (ModelError, OSError) as error:
+                raise MeshNotWritten(str(error)) from None
+        return self._conversions[path]
+
+    def _file_name(self, path: Path, part: int) -> str:
+        if (path, part) in self._names:
+            return self._names[(path, part)]
         suffix = path.suffix.lower()
-        convert = suffix in CONVERTED or (suffix == '.stl' and not is_mujoco_stl(path))
+        convert = needs_conversion(path)
         if self.meshdir is None:
             if convert:
                 raise ModelError(f'{path.name}: a {suffix} mesh is converted to an OBJ file '
                                  'written beside the model: give the MJCF a path')
             name = str(path)
         else:
-            data = converted_obj(path) if convert else path.read_bytes()
+            stem = path.stem
+            if convert:
+                conversion = self._converted(path)
+                data, suffix = conversion.whole, '.obj'
+                if part >= 0:
+                    data, _, material = conversion.parts[part]
+                    stem = f'{stem}_{_safe(material) or part + 1}'
+                refusal = mujoco_refusal('m.obj', data)
+                if refusal is not None:
+                    raise ModelError(f'{path}: MuJoCo cannot read its conversion to OBJ '
+                                     f'({refusal})')
+            else:
+                data, suffix, note = readable(path)
+                if note:
+                    self.notes.append(note)
             taken = {Path(name).stem.lower() for name in self.files}
-            stem = _unique(path.stem, taken, lower=True)
-            name = stem + ('.obj' if convert else suffix)
+            name = _unique(stem, taken, lower=True) + suffix
             self.files[name] = data
-        self._names[path] = name
+        self._names[(path, part)] = name
         return name
 
     def elements(self) -> list[tuple[str, dict[str, str]]]:
         """Return the ``<mesh>`` assets' attributes, in the order they were added."""
         found = []
-        for (_, scale), (name, written) in self.assets.items():
+        for (_, scale, _), (name, written) in self.assets.items():
             attributes = {'name': name, 'file': written}
             if scale is not None:
                 attributes['scale'] = fmt_vec(scale)
@@ -132,18 +201,19 @@ class MeshAssets:
         """Return each file to write in ``meshdir``: copied, or converted to OBJ."""
         return dict(self.files)
 
+    def said(self) -> list[str]:
+        """Return the lines to say: files rewritten, texture images not carried."""
+        lines = list(self.notes)
+        if self._textured:
+            lines.append('meshes: the texture image of ' + ', '.join(self._textured) +
+                         ' is not carried (MuJoCo takes a PNG texture with OBJ texture '
+                         'coordinates; its geoms keep the colours the file gives)')
+        return lines
 
-STL_FACES = 200000  # MuJoCo's stl_decoder reads binary STL of 1 to 200000 triangles
 
-
-def is_mujoco_stl(path: Path) -> bool:
-    """Return whether MuJoCo reads the STL file ``path`` (binary, at most 200000 faces)."""
-    with open(path, 'rb') as stream:
-        head = stream.read(1024)
-    if head.lstrip().startswith(b'solid') and b'facet' in head:
-        return False  # ASCII
-    count = int.from_bytes(head[80:84], 'little') if len(head) >= 84 else 0
-    return 1 <= count <= STL_FACES
+def _safe(name: str) -> str:
+    """Return ``name`` as a file-name part (letters, digits, ``_``, ``-``, ``.``)."""
+    return re.sub(r'[^A-Za-z0-9_.-]+', '_', name).strip('._')[:40]
 
 
 def _unique(name: str, taken: set[str], lower: bool = False) -> str:
@@ -151,79 +221,3 @@ def _unique(name: str, taken: set[str], lower: bool = False) -> str:
     while (candidate.lower() if lower else candidate) in taken:
         candidate, number = f'{name}_{number}', number + 1
     return candidate
-
-
-def converted_obj(path: Path) -> bytes:
-    """Return the OBJ text of the mesh file ``path`` (a DAE's unit and up axis applied)."""
-    try:
-        import numpy
-        import trimesh
-    except ImportError:
-        raise MissingDependencyError('trimesh', 'mesh', f'converting {path.name} for '
-                                     'MuJoCo') from None
-    mesh = load_mesh(path)
-    if path.suffix.lower() == '.dae':
-        unit, up = dae_frame(path)
-        transform = numpy.eye(4) * unit
-        transform[3, 3] = 1.0
-        if up == 'Y_UP':  # +Y up becomes +Z up: +90 degrees about X
-            transform = transform @ trimesh.transformations.rotation_matrix(
-                numpy.pi / 2.0, (1, 0, 0))
-        elif up == 'X_UP':  # +X up becomes +Z up: -90 degrees about Y
-            transform = transform @ trimesh.transformations.rotation_matrix(
-                -numpy.pi / 2.0, (0, 1, 0))
-        mesh.apply_transform(transform)
-    return obj_text(mesh.vertices.ravel().tolist(), (mesh.faces + 1).ravel().tolist())
-
-
-def obj_text(coordinates: list[float], corners: list[int]) -> bytes:
-    """
-    Return OBJ text of a triangle mesh, each coordinate exact (the shortest repr).
-
-    ``coordinates`` are x, y, z of each vertex in a row; ``corners`` the three 1-based
-    vertex numbers of each face in a row.
-    """
-    numbers = list(map(repr, coordinates))
-    vertices = map('v {} {} {}'.format, numbers[0::3], numbers[1::3], numbers[2::3])
-    faces = map('f {} {} {}'.format, corners[0::3], corners[1::3], corners[2::3])
-    return ('\n'.join(vertices) + '\n' + '\n'.join(faces) + '\n').encode('ascii')
-
-
-def load_mesh(path: Path) -> Any:
-    """Return the triangles of ``path`` as one trimesh mesh (scene transforms applied)."""
-    import logging
-
-    import trimesh
-    logger = logging.getLogger('trimesh')
-    level = logger.level
-    logger.setLevel(logging.CRITICAL)  # textures it cannot find: MuJoCo takes no texture
-    try:
-        mesh = trimesh.load(str(path), force='mesh', process=False)
-    except Exception as error:  # noqa: B902 - trimesh raises many kinds for a bad file
-        raise ModelError(f'{path}: trimesh cannot read it ({error})') from None
-    finally:
-        logger.setLevel(level)
-    if not len(getattr(mesh, 'faces', ())):
-        raise ModelError(f'{path}: no triangles in it (MuJoCo needs a surface)')
-    return mesh
-
-
-def dae_frame(path: Path) -> tuple[float, str]:
-    """Return a DAE file's ``<unit meter>`` (1 when absent) and ``<up_axis>`` (Z_UP)."""
-    from lxml import etree
-    try:
-        root = etree.parse(str(path), etree.XMLParser(huge_tree=True, no_network=True,
-                                                      resolve_entities=False)).getroot()
-    except (OSError, etree.XMLSyntaxError) as error:
-        raise ModelError(f'{path}: not readable as COLLADA ({error})') from None
-    unit, up = 1.0, 'Z_UP'
-    for element in root.iter('{*}unit'):
-        try:
-            unit = float(element.get('meter', '1') or 1.0)
-        except ValueError:
-            pass
-        break
-    for element in root.iter('{*}up_axis'):
-        up = (element.text or 'Z_UP').strip().upper()
-        break
-    return unit, up
