@@ -164,7 +164,8 @@ class RigidTorque:
             d[:, above] += (held * step[:, None] * axis)[:, None, :]
             return
         before = d[:, link].copy()
-        z[:, below] = _turned(z[:, below], axis, step)
+        turned = _turned(z[:, below], axis, step)  # unit again: errors would grow each turn
+        z[:, below] = turned / numpy.sqrt((turned * turned).sum(axis=2, keepdims=True))
         d[:, below] = _turned(d[:, below], axis, step)
         d[:, above] += (d[:, link] - before)[:, None, :]
 
