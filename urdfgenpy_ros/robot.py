@@ -300,7 +300,8 @@ class Robot(RobotModel):
 
         Rows: linear velocity of the link's origin, then angular velocity, in the root's
         axes (``frame='world'``) or the link's (``'local'``). Columns:
-        :attr:`movable_joints`; a mimic joint counts in its leader's column.
+        :attr:`movable_joints`; a mimic joint counts in its leader's column. ``q`` and
+        ``strict`` as for :meth:`fk`.
         """
         from urdfgenpy_ros.dynamics import jacobian
         return jacobian(self, link, q, frame, base, strict)
@@ -312,7 +313,8 @@ class Robot(RobotModel):
         Return the torque (N m) or force (N) each movable joint needs to hold still at ``q``.
 
         ``payload``: ``{'link': 'tool0', 'mass': 2.0, 'com': (0, 0, 0.05)}`` (com in the
-        link's frame). A floating root is held where it is.
+        link's frame). A floating root is held where it is. ``q`` and ``strict`` as for
+        :meth:`fk`.
         """
         from urdfgenpy_ros.dynamics import gravity_torques
         return gravity_torques(self, q, gravity, payload, strict)
