@@ -199,12 +199,13 @@ def test_the_ways_to_give_q_agree_and_mistakes_are_named() -> None:
 
 def test_q_names_only_joints_it_moves_and_only_finite_numbers() -> None:
     robot = odd_robot()
-    # a mimic joint follows its leader (d follows c, which follows a): naming it is a mistake
+    # a mimic joint follows its leader (d follows c, which follows a): with strict, a value
+    # that disagrees is a mistake (test_a_joint_state_names_mimic_joints: a warning without)
     with pytest.raises(ModelError, match="q names 'c', a mimic joint: it follows 'a'; give a "
                                          "value for 'a' instead"):
-        robot.fk({'a': 0.3, 'c': 99.0})
+        robot.fk({'a': 0.3, 'c': 99.0}, strict=True)
     with pytest.raises(ModelError, match="q names 'd', a mimic joint: it follows 'a'"):
-        robot.gravity_torques({'d': 0.1})
+        robot.gravity_torques({'d': 0.1}, strict=True)
     with pytest.raises(ModelError, match="q names 'g', a joint q does not move "
                                          r'\(fixed, floating or planar; movable joints: '
                                          r'a, b, e\)'):
@@ -228,6 +229,44 @@ def test_q_names_only_joints_it_moves_and_only_finite_numbers() -> None:
         robot.gravity_torques([0, 0, 0], payload={'link': 'hand', 'mass': 1.0})
     with pytest.raises(ModelError, match='mass must be a finite number >= 0'):
         robot.gravity_torques([0, 0, 0], payload={'link': 'link_d', 'mass': -1.0})
+
+
+@pytest.mark.parametrize('source', ['kinova_robotiq.urdf', 'odd'])
+def test_a_joint_state_names_mimic_joints(source: str) -> None:
+    """
+    A JointState's names and positions, mimic joints included, as robot_state_publisher.
+
+    It computes each mimic joint from its leader; pinocchio (mimic joints moved by hand by
+    the leader's formula) judges the poses. A value that disagrees is one warning line and
+    the leader's value wins; with ``strict`` a ModelError.
+    """
+    robot = odd_robot() if source == 'odd' else _robot(
+        next(path for path in robots() if path.name == source))
+    judge = Pinocchio(robot)
+    if not judge.followers:
+        pytest.skip(f'{source} has no mimic joints')
+    pin, model, data = judge.pin, judge.model, judge.data
+    values = _configurations(robot, 1, 3)[0]
+    names = [*judge.names, *(name for name, *_ in judge.followers)]
+    given = [*values, *(multiplier * values[column] + offset
+                        for _, column, multiplier, offset in judge.followers)]
+    state = dict(zip(names, given))
+    with warnings.catch_warnings():
+        warnings.simplefilter('error')
+        poses = robot.fk(state, strict=True)
+    pin.framesForwardKinematics(model, data, judge.q(values))
+    links = [link for link in poses if model.existFrame(link)]
+    expected = {link: data.oMf[model.getFrameId(link)].homogeneous for link in links}
+    assert max(abs(poses[link] - expected[link]).max() for link in links) < 1e-12
+    follower = judge.followers[0][0]
+    state[follower] += 0.25
+    with pytest.warns(UserWarning) as caught:
+        poses = robot.fk(state)
+    assert len(caught) == 1 and '\n' not in str(caught[0].message)
+    assert f'mimic joint {follower!r} follows' in str(caught[0].message)
+    assert max(abs(poses[link] - expected[link]).max() for link in links) < 1e-12
+    with pytest.raises(ModelError, match=f'q names {follower!r}, a mimic joint'):
+        robot.fk(state, strict=True)
 
 
 def test_an_edited_robot_is_compiled_again() -> None:

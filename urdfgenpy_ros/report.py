@@ -30,7 +30,6 @@ from contextlib import contextmanager
 from contextvars import ContextVar
 from dataclasses import dataclass
 import sys
-import traceback
 
 from urdfgenpy_ros.errors import UrdfgenpyError
 
@@ -105,6 +104,7 @@ def boundary(front_end: FrontEnd) -> Iterator[None]:
         yield
     except (*KNOWN_ERRORS, *front_end.usage_errors) as error:
         if front_end.verbose():
+            import traceback  # only with --verbose (start-up)
             traceback.print_exc()
         for line in getattr(error, 'lines', ()):
             front_end.say(str(line))

@@ -280,40 +280,44 @@ class Robot(RobotModel):
         from urdfgenpy_ros.dynamics import movable_joints
         return movable_joints(self)
 
-    def fk(self, q: Any = None, base: Any = None) -> Any:
+    def fk(self, q: Any = None, base: Any = None, strict: bool = False) -> Any:
         """
         Return every link's pose in the root frame, e.g. a 4x4 ``poses['tool0']``.
 
         ``q``: a mapping of joint names (missing ones 0), an array over
         :attr:`movable_joints`, or an (N, dof) array, which gives N x 4 x 4 poses. Mimic
-        joints follow their leaders (naming one, or a fixed joint, is a ModelError).
-        ``base``: a 4x4 pose for the root (default: identity).
+        joints follow their leaders: a mapping may name them (a JointState's names and
+        positions), and a value that disagrees is a warning (a ModelError with ``strict``);
+        naming a fixed joint is a ModelError. ``base``: a 4x4 pose for the root.
         """
         from urdfgenpy_ros.dynamics import fk
-        return fk(self, q, base)
+        return fk(self, q, base, strict)
 
-    def jacobian(self, link: str, q: Any = None, frame: str = 'world', base: Any = None
-                 ) -> Any:
+    def jacobian(self, link: str, q: Any = None, frame: str = 'world', base: Any = None,
+                 strict: bool = False) -> Any:
         """
         Return the geometric Jacobian of ``link`` (6 x dof; N x 6 x dof for N configs).
 
         Rows: linear velocity of the link's origin, then angular velocity, in the root's
         axes (``frame='world'``) or the link's (``'local'``). Columns:
-        :attr:`movable_joints`; a mimic joint counts in its leader's column.
+        :attr:`movable_joints`; a mimic joint counts in its leader's column. ``q`` and
+        ``strict`` as for :meth:`fk`.
         """
         from urdfgenpy_ros.dynamics import jacobian
-        return jacobian(self, link, q, frame, base)
+        return jacobian(self, link, q, frame, base, strict)
 
     def gravity_torques(self, q: Any = None, gravity: tuple[float, float, float] = (
-            0.0, 0.0, -9.81), payload: dict[str, Any] | None = None) -> Any:
+            0.0, 0.0, -9.81), payload: dict[str, Any] | None = None, strict: bool = False
+            ) -> Any:
         """
         Return the torque (N m) or force (N) each movable joint needs to hold still at ``q``.
 
         ``payload``: ``{'link': 'tool0', 'mass': 2.0, 'com': (0, 0, 0.05)}`` (com in the
-        link's frame). A floating root is held where it is.
+        link's frame). A floating root is held where it is. ``q`` and ``strict`` as for
+        :meth:`fk`.
         """
         from urdfgenpy_ros.dynamics import gravity_torques
-        return gravity_torques(self, q, gravity, payload)
+        return gravity_torques(self, q, gravity, payload, strict)
 
     # ---- MuJoCo --------------------------------------------------------------------
 

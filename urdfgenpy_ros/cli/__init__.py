@@ -12,25 +12,61 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""The ``urdfgenpy`` command: one click group, one module per sub-command."""
+"""
+The ``urdfgenpy`` command: one click group, one module per sub-command.
+
+A sub-command's module is imported when the command is looked up (to run it or to list
+its help), so ``urdfgenpy check`` loads what checking needs and nothing of the others.
+"""
 
 from __future__ import annotations
 
+import importlib
+from typing import Any
+
 import click
 
-from urdfgenpy_ros.cli.attach import attach
-from urdfgenpy_ros.cli.check import check
-from urdfgenpy_ros.cli.convert import convert
-from urdfgenpy_ros.cli.dh import dh
-from urdfgenpy_ros.cli.example import example
-from urdfgenpy_ros.cli.graph import graph
-from urdfgenpy_ros.cli.inertia import inertia
-from urdfgenpy_ros.cli.init import init
-from urdfgenpy_ros.cli.mirror import mirror
-from urdfgenpy_ros.cli.render import render
-from urdfgenpy_ros.cli.tree import tree
-from urdfgenpy_ros.cli.view import view
 from urdfgenpy_ros.report import boundary, FrontEnd
+
+COMMANDS = ('example', 'tree', 'convert', 'check', 'inertia', 'init', 'graph', 'render',
+            'view', 'attach', 'dh', 'mirror')
+"""The sub-commands, each the function of that name in ``urdfgenpy_ros.cli.<name>``."""
+
+
+class _Commands(dict[str, click.Command]):
+    """The group's commands by name; a command's module is imported on first look-up."""
+
+    def __missing__(self, name: str) -> click.Command:
+        if name not in COMMANDS:
+            raise KeyError(name)
+        command = getattr(importlib.import_module(f'urdfgenpy_ros.cli.{name}'), name)
+        self[name] = command
+        return command
+
+    def get(self, name: str, default: Any = None) -> Any:
+        """Return the command called ``name`` (imported now if need be), else ``default``."""
+        return self[name] if name in self else default
+
+    def __contains__(self, name: object) -> bool:
+        return name in COMMANDS or dict.__contains__(self, name)
+
+    def __iter__(self) -> Any:
+        return iter(dict.fromkeys([*COMMANDS, *dict.keys(self)]))
+
+    def __len__(self) -> int:
+        return len(dict.fromkeys([*COMMANDS, *dict.keys(self)]))
+
+    def keys(self) -> Any:
+        """Return every command name, imported or not."""
+        return list(self)
+
+    def values(self) -> Any:
+        """Return every command (each imported now)."""
+        return [self[name] for name in self]
+
+    def items(self) -> Any:
+        """Return every (name, command) (each imported now)."""
+        return [(name, self[name]) for name in self]
 
 
 class _Group(click.Group):
@@ -64,6 +100,4 @@ def main(ctx: click.Context, verbose: bool) -> None:
     ctx.obj = {'verbose': verbose}
 
 
-for command in (example, tree, convert, check, inertia, init, graph, render, view, attach,
-                dh, mirror):
-    main.add_command(command)
+main.commands = _Commands()

@@ -17,11 +17,9 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-import difflib
 import math
 import os
 from pathlib import Path
-import tempfile
 
 import click
 
@@ -275,6 +273,7 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
             return report
         report.repairs = repairs
         if options.dry_run:
+            import difflib  # only for --fix --dry-run (start-up)
             click.echo(''.join(difflib.unified_diff(
                 old.splitlines(keepends=True), new.splitlines(keepends=True),
                 f'a/{path.as_posix()}', f'b/{path.as_posix()}')), nl=False)
@@ -322,6 +321,7 @@ def _replace(path: Path, text: str) -> None:
     """Write ``text`` over ``path`` atomically, keeping its permissions (and symlinks)."""
     path = path.resolve()
     mode = path.stat().st_mode
+    import tempfile  # only for --fix (start-up)
     handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f'.{path.name}.')
     try:
         with os.fdopen(handle, 'wb') as stream:

@@ -17,12 +17,9 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from importlib import metadata
-import json
 import os
 from pathlib import Path
 from urllib.parse import quote
-from xml.etree import ElementTree
 
 from urdfgenpy_ros.errors import Severity, ValidationError
 from urdfgenpy_ros.validation.checklist import Suppressed
@@ -53,6 +50,7 @@ class FileReport:
 
 def json_report(reports: list[FileReport]) -> str:
     """Return the JSON document: per file its findings, suppressed findings and repairs."""
+    import json  # each report's modules only when it is asked for (start-up)
     files = []
     for report in reports:
         entry: dict[str, object] = {'file': report.path, 'readable': report.error is None}
@@ -133,6 +131,7 @@ def _message(finding: ValidationError) -> str:
 
 
 def _version() -> str:
+    from importlib import metadata  # only for SARIF: a check without it starts sooner
     try:
         return metadata.version('urdfgenpy_ros')
     except metadata.PackageNotFoundError:
@@ -148,6 +147,7 @@ def sarif_report(reports: list[FileReport]) -> str:
     suppression (``inSource`` for a comment, ``external`` for ``--ignore``), and a file
     that could not be read (or that --fix did not rewrite) is a tool notification.
     """
+    import json  # each report's modules only when it is asked for (start-up)
     everything = [finding for report in reports for finding in report.findings]
     everything += [item.finding for report in reports for item in report.suppressed]
     codes = sorted({finding.code for finding in everything})
@@ -209,6 +209,7 @@ def junit_report(reports: list[FileReport], strict: bool) -> str:
     output is the warning), a suppressed finding is skipped, an unreadable file (or one
     --fix did not rewrite) is an error, and a clean file is one passing case.
     """
+    from xml.etree import ElementTree  # only when asked for (start-up)
     suites = ElementTree.Element('testsuites', name='urdfgenpy check')
     totals = {'tests': 0, 'failures': 0, 'errors': 0, 'skipped': 0}
     for report in reports:

@@ -61,28 +61,29 @@ def movable_joints(robot: Robot) -> list[str]:
     return list(compiled(robot).movable)
 
 
-def fk(robot: Robot, q: Any = None, base: Any = None) -> LinkPoses:
+def fk(robot: Robot, q: Any = None, base: Any = None, strict: bool = False) -> LinkPoses:
     """Return every link's 4x4 pose (N x 4 x 4 for N configurations) in the root frame."""
     model = compiled(robot)
-    values, single = positions(model, q)
+    values, single = positions(model, q, strict)
     matrices = link_matrices(model, values, base)
     return LinkPoses(model.links, matrices[0] if single else matrices)
 
 
 def jacobian(robot: Robot, link: str, q: Any = None, frame: str = 'world',
-             base: Any = None) -> numpy.ndarray:
+             base: Any = None, strict: bool = False) -> numpy.ndarray:
     """Return the geometric Jacobian (6 x dof, or N x 6 x dof) of ``link``."""
     model = compiled(robot)
-    values, single = positions(model, q)
+    values, single = positions(model, q, strict)
     result = _jacobian(model, link, values, frame, base)
     return result[0] if single else result
 
 
 def gravity_torques(robot: Robot, q: Any = None,
                     gravity: Sequence[float] = (0.0, 0.0, -9.81),
-                    payload: Mapping[str, object] | None = None) -> numpy.ndarray:
+                    payload: Mapping[str, object] | None = None, strict: bool = False
+                    ) -> numpy.ndarray:
     """Return the torque or force (dof, or N x dof) each movable joint needs to hold still."""
     model = compiled(robot)
-    values, single = positions(model, q)
+    values, single = positions(model, q, strict)
     result = _gravity(model, mass_model(robot, model, payload), values, gravity)
     return result[0] if single else result

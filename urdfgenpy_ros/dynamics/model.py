@@ -32,6 +32,7 @@ from typing import Any, TYPE_CHECKING
 
 import numpy
 
+from urdfgenpy_ros.caller import warn_caller
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.joint import Joint, JointType
 
@@ -39,6 +40,7 @@ if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
 
 FIXED, REVOLUTE, PRISMATIC = 0, 1, 2
+AGREE = 1e-9  # relative: a mimic joint's given value this close to its leader's formula agrees
 _MOTION = {JointType.REVOLUTE: REVOLUTE, JointType.CONTINUOUS: REVOLUTE,
            JointType.PRISMATIC: PRISMATIC}
 
@@ -160,22 +162,30 @@ def fingerprint(robot: Robot) -> tuple:
             tuple(map(_NAME, robot.links)))
 
 
-def positions(model: ChainModel, q: Any) -> tuple[numpy.ndarray, bool]:
+def positions(model: ChainModel, q: Any, strict: bool = False) -> tuple[numpy.ndarray, bool]:
     """
     Return ``q`` as an (N, dof) array, and whether it was a single configuration.
 
-    ``q`` is a mapping of joint names (missing joints: 0; a mimic joint, which follows its
-    leader, or a fixed one is a ModelError), an array over the movable joints, or an
-    (N, dof) array of configurations; values must be finite numbers.
+    ``q`` is a mapping of joint names (missing joints: 0; a fixed one is a ModelError), an
+    array over the movable joints, or an (N, dof) array of configurations; values must be
+    finite numbers. A mimic joint in a mapping (a JointState names them all) follows its
+    leader, as robot_state_publisher computes it: a value that disagrees is one warning,
+    or a ModelError with ``strict``.
     """
     dof = len(model.movable)
     if isinstance(q, Mapping):
         row = numpy.zeros(dof)
         columns = {name: number for number, name in enumerate(model.movable)}
+        followers = []
         for name, value in q.items():
-            if name not in columns:
+            if name in columns:
+                row[columns[name]] = _finite(value, name)
+            elif name in model.joints and model.source[model.joints.index(name)] >= 0:
+                followers.append((name, _finite(value, name)))
+            else:
                 raise ModelError(_not_a_column(model, name))
-            row[columns[name]] = _finite(value, name)
+        if followers:
+            _check_followers(model, row, followers, strict)
         return row[None, :], True
     try:
         values = numpy.asarray(q if q is not None else numpy.zeros(dof), dtype=float)
@@ -191,6 +201,30 @@ def positions(model: ChainModel, q: Any) -> tuple[numpy.ndarray, bool]:
     raise ModelError(f'q has shape {values.shape}: give {dof} values in robot.movable_joints '
                      f'order ({", ".join(model.movable)}), an (N, {dof}) array, or a mapping '
                      'of joint names')
+
+
+def _check_followers(model: ChainModel, row: numpy.ndarray,
+                     followers: list[tuple[str, float]], strict: bool) -> None:
+    """Warn (raise with ``strict``) when a mimic joint's value is not its leader's formula."""
+    wrong = []
+    for name, value in followers:
+        link = model.joints.index(name)
+        leader = model.movable[model.source[link]]
+        factor, shift = float(model.multiplier[link]), float(model.offset[link])
+        expected = factor * float(row[model.source[link]]) + shift
+        if abs(value - expected) > AGREE * max(1.0, abs(expected)):
+            wrong.append(f'q[{name!r}] is {value:g}, {factor:g} * q[{leader!r}] + {shift:g} '
+                         f'is {expected:g}')
+            first = name, leader
+    if not wrong:
+        return
+    more = f' (and {len(wrong) - 1} more)' if len(wrong) > 1 else ''
+    name, leader = first
+    if strict:
+        raise ModelError(f'q names {name!r}, a mimic joint: it follows {leader!r}; give a value '
+                         f'for {leader!r} instead ({wrong[0]}{more})')
+    warn_caller(f'mimic joint {name!r} follows {leader!r}: {wrong[0]}{more}; the value '
+                f'from {leader!r} is used, as robot_state_publisher does')
 
 
 def _finite(value: Any, name: str) -> float:

@@ -23,8 +23,11 @@ climbs on. Along a joint that turns one link the torque is ``A cos q + B sin q +
 three evaluations give A, B and C, and the extremes inside the limits are among the
 turning points and the ends, so each step is exact (and the whole search, for a single
 joint); along a slider it is linear (the ends). A joint shared by mimic joints has several
-frequencies: a dense set of samples along it joins the turning points. Of equal results
-the pose nearest zero is named, with angles in (-pi, pi].
+frequencies: a dense set of samples along it joins the turning points. Each step is taken
+in closed form on the pose's rigid-motion state (:mod:`.rigid`), without forward
+kinematics; the torque itself is computed on the links that matter, those on fixed joints
+merged (:func:`~.bound.lumped`). Of equal results the pose nearest zero is named, with
+angles in (-pi, pi].
 """
 
 from __future__ import annotations
@@ -36,8 +39,11 @@ from typing import TYPE_CHECKING
 
 import numpy
 
-from urdfgenpy_ros.dynamics.gravity import gravity_torques, MassModel
+from urdfgenpy_ros.dynamics.bound import lumped
+from urdfgenpy_ros.dynamics.forward import link_frames
+from urdfgenpy_ros.dynamics.gravity import MassModel
 from urdfgenpy_ros.dynamics.model import ChainModel, PRISMATIC, REVOLUTE
+from urdfgenpy_ros.dynamics.rigid import along, RigidTorque
 from urdfgenpy_ros.joint import JointType
 
 if TYPE_CHECKING:
@@ -51,6 +57,7 @@ LONG_POSE = 8
 SHORTER = 1e-3  # a pose of more joints gives this much up for joints at 0
 SAMPLES = 17
 SWEEPS = 12
+PROBES = numpy.array([0.0, math.pi / 2.0, math.pi])
 
 
 @dataclass(frozen=True)
@@ -121,11 +128,30 @@ class _Torque:
 
     def __init__(self, model: ChainModel, masses: MassModel, gravity: numpy.ndarray,
                  column: int) -> None:
-        model, masses = _restricted(model, masses, relevant_links(model, column))
+        model, masses = lumped(*_restricted(model, masses, relevant_links(model, column)))
         self.model, self.masses, self.gravity, self.column = model, masses, gravity, column
+        self.carried = numpy.flatnonzero(model.source == column)
+        self.under = numpy.flatnonzero(model.below[self.carried].any(axis=0))
+        self.below = model.below[numpy.ix_(self.carried, self.under)]
+        self.held = self.below @ masses.mass[self.under]
+        self.factor = model.multiplier[self.carried]
+        self.turning = model.motion[self.carried] == REVOLUTE
 
     def __call__(self, q: numpy.ndarray) -> numpy.ndarray:
-        return gravity_torques(self.model, self.masses, q, self.gravity)[:, self.column]
+        """Return the torque of the column at each of the (N, dof) configurations ``q``."""
+        rotation, position = link_frames(self.model, q)
+        under = self.under
+        first = (self.masses.mass[under, None] * position[:, under]
+                 + (rotation[:, under] @ self.masses.moment[under, :, None])[..., 0])
+        lever = (numpy.einsum('cl,nlj->ncj', self.below, first)
+                 - self.held[:, None] * position[:, self.carried])
+        axes = (rotation[:, self.carried] @ self.model.axis[self.carried, :, None])[..., 0]
+        g = self.gravity
+        across = numpy.stack([g[1] * axes[..., 2] - g[2] * axes[..., 1],
+                              g[2] * axes[..., 0] - g[0] * axes[..., 2],
+                              g[0] * axes[..., 1] - g[1] * axes[..., 0]], axis=-1)
+        torque = numpy.where(self.turning, (lever * across).sum(axis=2), self.held * (axes @ g))
+        return -(torque @ self.factor)
 
 
 def _grid(bounds: numpy.ndarray, columns: list[int], base: numpy.ndarray) -> numpy.ndarray:
@@ -147,8 +173,12 @@ def _turning_points(torque: _Torque, seeds: numpy.ndarray, column: int,
                     low: float, high: float) -> numpy.ndarray:
     """Return, per seed, the extremes of ``A cos q + B sin q + C`` inside [low, high]."""
     probes = numpy.repeat(seeds, 3, axis=0)
-    probes[:, column] = numpy.tile([0.0, math.pi / 2.0, math.pi], len(seeds))
-    values = torque(probes).reshape(len(seeds), 3)
+    probes[:, column] = numpy.tile(PROBES, len(seeds))
+    return _extremes(torque(probes).reshape(len(seeds), 3), low, high)
+
+
+def _extremes(values: numpy.ndarray, low: float, high: float) -> numpy.ndarray:
+    """Return the turning points inside [low, high] of the sinusoids through ``values``."""
     a = (values[:, 0] - values[:, 2]) / 2.0
     b = values[:, 1] - (values[:, 0] + values[:, 2]) / 2.0
     phase = numpy.arctan2(b, a)
@@ -204,15 +234,40 @@ def worst_case(model: ChainModel, masses: MassModel, bounds: numpy.ndarray, colu
     home = numpy.clip(numpy.zeros(len(bounds)), bounds[:, 0], bounds[:, 1])  # ties go to it
     seeds = _starts(grid, size, bounds, columns, home) if columns else home[None, :]
     best = numpy.abs(torque(seeds))
+    seeds, best = _climb(torque, model, seeds, best, bounds, columns)
+    winner = _plainest(torque, seeds, best, bounds, columns)
+    value = float(torque(winner[None, :])[0])
+    return WorstCase(model.movable[column], value,
+                     {model.movable[moved]: float(winner[moved])
+                      for moved in _mattering(torque, winner, bounds, columns, value)})
+
+
+def _rigid(torque: _Torque) -> RigidTorque | None:
+    """Return the closed-form torque of a joint that turns or shifts one link, else None."""
+    carried = numpy.flatnonzero(torque.model.source == torque.column)
+    if len(carried) != 1:
+        return None
+    return RigidTorque(torque.model, torque.masses, torque.gravity, torque.column)
+
+
+def _climb(torque: _Torque, model: ChainModel, seeds: numpy.ndarray, best: numpy.ndarray,
+           bounds: numpy.ndarray, columns: list[int]) -> tuple[numpy.ndarray, numpy.ndarray]:
+    """
+    Return the seeds climbed one joint at a time, and their ``|torque|``.
+
+    A joint that moves one of the links that matter is stepped in closed form on each
+    pose's rigid-motion state (:mod:`.rigid`); one that moves several (mimic) by evaluating
+    the torque along it.
+    """
     single, linear = _kinds(model)
-    turning = {int(model.source[link])
-               for link in numpy.flatnonzero(model.motion == REVOLUTE)}
+    turning = {int(model.source[link]) for link in numpy.flatnonzero(model.motion == REVOLUTE)}
+    rigid = _rigid(torque)
+    z, d = rigid.state(seeds) if rigid is not None else (seeds, seeds)
     active = numpy.arange(len(seeds))  # the seeds still climbing
     for sweep in range(SWEEPS):
         if sweep == PRUNE:  # keep the most promising climbs
-            order = numpy.argsort(-best, kind='stable')
-            kept = order[:max(4, len(order) // 4)]
-            seeds, best = seeds[kept], best[kept]
+            kept = numpy.argsort(-best, kind='stable')[:max(4, len(best) // 4)]
+            seeds, best, z, d = seeds[kept], best[kept], z[kept], d[kept]
             active = numpy.arange(len(seeds))
         before = best[active].copy()
         for moved in columns:
@@ -222,26 +277,40 @@ def worst_case(model: ChainModel, masses: MassModel, bounds: numpy.ndarray, colu
                 tries = numpy.array([[low, high]]).repeat(len(active), axis=0)
             else:
                 tries = numpy.linspace(low, high, SAMPLES)[None, :].repeat(len(active), axis=0)
-            if moved in turning:
-                tries = numpy.concatenate(
-                    [tries, _turning_points(torque, climbing, moved, low, high)], axis=1)
-            trial = numpy.repeat(climbing, tries.shape[1], axis=0)
-            trial[:, moved] = tries.ravel()
-            values = numpy.abs(torque(trial)).reshape(len(active), -1)
+            link = rigid.link_of(moved) if rigid is not None else None
+            current = climbing[:, moved, None]
+            if rigid is None:
+                if moved in turning:
+                    tries = numpy.concatenate(
+                        [tries, _turning_points(torque, climbing, moved, low, high)], axis=1)
+                trial = numpy.repeat(climbing, tries.shape[1], axis=0)
+                trial[:, moved] = tries.ravel()
+                values = numpy.abs(torque(trial)).reshape(len(active), -1)
+            elif link is None:  # a column that moves several links: each moved in turn
+                if moved in turning:
+                    probes = rigid.sweep(z[active], d[active], moved, PROBES[None, :] - current)
+                    tries = numpy.concatenate([tries, _extremes(probes, low, high)], axis=1)
+                values = numpy.abs(rigid.sweep(z[active], d[active], moved, tries - current))
+            else:
+                factor = float(rigid.multiplier[link])
+                shape = rigid.coefficients(z[active], d[active], link)
+                if moved in turning:
+                    probes = along(shape, factor * (PROBES[None, :] - current))
+                    tries = numpy.concatenate([tries, _extremes(probes, low, high)], axis=1)
+                values = numpy.abs(along(shape, factor * (tries - current)))
             pick = values.argmax(axis=1)
             top = values[numpy.arange(len(active)), pick]
             better = top > best[active]
-            seeds[active[better], moved] = tries[better, pick[better]]
+            rows, chosen = active[better], tries[better, pick[better]]
+            if rigid is not None:
+                rigid.move(z, d, rows, moved, chosen - seeds[rows, moved])
+            seeds[rows, moved] = chosen
             best[active] = numpy.maximum(best[active], top)
         moving = best[active] - before > 1e-12 * max(1.0, float(best.max()))
         active = active[moving]
         if not len(active):
             break
-    winner = _plainest(torque, seeds, best, bounds, columns)
-    value = float(torque(winner[None, :])[0])
-    return WorstCase(model.movable[column], value,
-                     {model.movable[moved]: float(winner[moved])
-                      for moved in _mattering(torque, winner, bounds, columns, value)})
+    return seeds, best
 
 
 def _wrapped(values: numpy.ndarray, bounds: numpy.ndarray) -> numpy.ndarray:

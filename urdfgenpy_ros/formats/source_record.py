@@ -26,7 +26,6 @@ text to the scanner; the document type declaration is refused before this is use
 
 from __future__ import annotations
 
-from difflib import SequenceMatcher
 import html
 import re
 from typing import Any
@@ -233,6 +232,7 @@ class Spans:
                                             for span, node in zip(found, nodes)):
             pairs = list(zip(found, nodes))
         else:
+            from difflib import SequenceMatcher  # only for an edited file (start-up)
             moved = True
             matcher = SequenceMatcher(None, [_key(self.text, span) for span in found],
                                       [_node_key(node) for node in nodes], autojunk=False)

@@ -190,9 +190,16 @@ def _compile(element: Element) -> Writer:
     return namespace['fresh']
 
 
-FRESH: dict[type, Writer] = {}
+class _Writers(dict[type, Writer]):
+    """Each class's writer, compiled when first asked for (a check that writes compiles none)."""
+
+    def __missing__(self, cls: type) -> Writer:
+        writer = self[cls] = _compile(OF_CLASS[cls])
+        return writer
+
+
+FRESH: dict[type, Writer] = _Writers()
 """The fast writer of each model class, for objects built in Python."""
-FRESH.update({cls: _compile(element) for cls, element in OF_CLASS.items()})
 
 
 def write_new_robot(writer: Any, sensor_block: Callable[[Any, str], Any]) -> str:

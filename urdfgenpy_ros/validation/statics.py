@@ -20,7 +20,9 @@ continuous joints over a full turn) is found by :func:`~urdfgenpy_ros.dynamics.w
 worst_case` and compared with ``<limit effort>`` times the margin asked for: T801 at the
 joint's ``<limit>`` line gives the torque, the pose and the effort that passes. Joints
 gravity cannot load (a vertical axis, a wheel turning about its centre of mass) are
-never reported. The root is held still; a floating joint stays at its origin.
+never reported; nor is a joint whose effort passes a bound on its torque over every pose
+(:func:`~urdfgenpy_ros.dynamics.bound.torque_bounds`), which is not searched. The root is
+held still; a floating joint stays at its origin.
 """
 
 from __future__ import annotations
@@ -32,6 +34,7 @@ from typing import TYPE_CHECKING
 import numpy
 
 from urdfgenpy_ros.dynamics import compiled
+from urdfgenpy_ros.dynamics.bound import torque_bounds
 from urdfgenpy_ros.dynamics.gravity import mass_model
 from urdfgenpy_ros.dynamics.worst import is_prismatic, LONG_POSE, ranges, worst_case
 from urdfgenpy_ros.dynamics.worst import WorstCase
@@ -43,6 +46,7 @@ if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
 
 UNLOADED = 1e-9  # of the robot's weight times a metre: gravity cannot load the joint
+SAFE = 1e-9  # relative: the bound is raised by this much against rounding
 
 
 def check_statics(robot: Robot, findings: Findings,
@@ -61,10 +65,13 @@ def check_statics(robot: Robot, findings: Findings,
     scale = UNLOADED * max(1.0, float(masses.mass.sum()) * float(numpy.linalg.norm(g)))
     bounds = ranges(robot, model)
     held = _held(robot)
+    most = torque_bounds(model, masses, bounds, g) * (1.0 + SAFE) + SAFE * scale
     for column, name in enumerate(model.movable):
         limit = robot.get_joint(name).limit
         if limit is None or not math.isfinite(limit.effort) or limit.effort <= 0.0:
             continue  # J103, J105, J106 or R305 says what is wrong with it
+        if most[column] <= scale or limit.effort >= most[column] * margin:
+            continue  # no pose can need more: no search
         worst = worst_case(model, masses, bounds, column, g)
         need = abs(worst.torque) * margin
         if abs(worst.torque) <= scale or limit.effort >= need:
