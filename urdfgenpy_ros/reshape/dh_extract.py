@@ -209,7 +209,9 @@ def dh_from_robot(robot, base: str, tip: str, convention: str = 'standard', *, c
     """
     Return the DH table (a ``cls``) of the chain from link ``base`` to link ``tip``.
 
-    Its rows are named after the joints and carry their limits; ``base`` and ``tool``
+    Its rows are named after the joints and carry their types (a continuous joint stays
+    continuous) and limits, no more (a joint without ``<limit>`` has no effort or
+    velocity); ``base`` and ``tool``
     hold the transforms from the base link to DH frame 0 and from the last DH frame to
     the tip link, so ``table.to_robot()`` has the chain's forward kinematics.
 
@@ -226,12 +228,12 @@ def dh_from_robot(robot, base: str, tip: str, convention: str = 'standard', *, c
     for axis, previous, current in zip(axes, frames, frames[1:]):
         a, alpha, d, theta = (_snap(value) for value in measure(previous, current))
         joint = axis.joint
-        limit = joint.limit if joint.type is not JointType.CONTINUOUS else None
-        rows.append(DHRow(joint.name, a, alpha, d, theta,
-                          'prismatic' if joint.type is JointType.PRISMATIC else 'revolute',
-                          lower=limit.lower if limit is not None else None,
-                          upper=limit.upper if limit is not None else None,
-                          effort=limit.effort if limit is not None else 100.0,
-                          velocity=limit.velocity if limit is not None else 2.0))
+        limit = joint.limit
+        bounded = limit is not None and joint.type is not JointType.CONTINUOUS
+        rows.append(DHRow(joint.name, a, alpha, d, theta, joint.type.value,
+                          lower=limit.lower if bounded else None,  # type: ignore[union-attr]
+                          upper=limit.upper if bounded else None,  # type: ignore[union-attr]
+                          effort=limit.effort if limit is not None else None,
+                          velocity=limit.velocity if limit is not None else None))
     return cls(style, rows, base=origin_of(frames[0]),
                tool=origin_of(multiply(inverse(frames[-1]), tip_pose)))
