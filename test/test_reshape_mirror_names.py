@@ -31,7 +31,7 @@ import pytest
 from test_reshape_dh import example_robot
 
 from urdfgenpy_ros import (
-    Box, Collision, Joint, JointLimit, Link, ModelError, Origin, Robot, Visual)
+    Box, Collision, Extension, Joint, JointLimit, Link, ModelError, Origin, Robot, Visual)
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.reshape.mirror import mirror_subtree
 
@@ -143,3 +143,18 @@ def test_names_the_renaming_would_merge_are_refused_naming_both(tmp_path: Path) 
         " would both be named 'openarm_x_finger' in the copy (pass --rename OLD:NEW that "
         'tells them apart)')
     assert not (tmp_path / 'out.urdf').exists()
+
+
+def test_an_empty_key_is_a_prefix_of_names_only(tmp_path: Path) -> None:
+    yourdfpy = require_module('yourdfpy')
+    robot = _openarm()
+    robot.get_link('openarm_left_hand').add_extension(Extension.gazebo('<mu1>0.8</mu1>'))
+    robot.mirror('openarm_left_link0', rename={'': 'm_'})
+    robot.to_urdf(tmp_path / 'arm.urdf')
+    read = yourdfpy.URDF.load(str(tmp_path / 'arm.urdf'), load_meshes=False,
+                              build_scene_graph=False)
+    assert {f'm_openarm_left_{part}' for part in _ARM} <= set(read.link_map)
+    assert len(read.robot.links) == 1 + 2 * len(_ARM)
+    text = (tmp_path / 'arm.urdf').read_text()
+    assert '<gazebo reference="m_openarm_left_hand">' in text
+    assert text.count('<mu1>0.8</mu1>') == 2

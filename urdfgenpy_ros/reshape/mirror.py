@@ -299,8 +299,8 @@ def _rename_texts(piece: Any, renamed: Any) -> None:
                 if not isinstance(element.tag, str) or len(element) or not element.text:
                     continue
                 text = element.text.strip()
-                if text and renamed(text) != text:
-                    element.text = element.text.replace(text, renamed(text))
+                if text and renamed(text, False) != text:
+                    element.text = element.text.replace(text, renamed(text, False))
 
 
 def _joints_named(element: Any, robot: Any) -> set[str]:

@@ -82,17 +82,20 @@ def _tells_apart(name: str, index: int, key: str, names: frozenset[str]) -> bool
     return False
 
 
-def limb_renamer(rename: Mapping[str, str], names: Iterable[str]) -> Callable[[str], str]:
+def limb_renamer(rename: Mapping[str, str], names: Iterable[str]) -> Callable[..., str]:
     """
     Return the renaming of the copy of a limb whose names are ``names`` (see the module).
 
-    The returned function also renames texts that hold the limb's names (topics, frames).
+    An empty key's value goes before every name. The returned function also renames
+    texts that hold the limb's names (topics, frames): ``renamed(text, False)`` leaves
+    such a prefix out (``<mu1>0.8</mu1>`` is no name).
     """
     keys = sorted((key for key in rename if key), key=len, reverse=True)
     limb = frozenset(names)
+    prefix = rename.get('', '')  # an empty key: a prefix before every name
 
-    def renamed(name: str) -> str:
-        parts, start, seen = [], 0, set()
+    def renamed(name: str, named: bool = True) -> str:
+        parts, start, seen = [prefix if named else ''], 0, set()
         for index, key in _occurrences(name, keys):
             if key in seen and _tells_apart(name, index, key, limb):
                 continue
