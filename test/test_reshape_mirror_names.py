@@ -158,3 +158,17 @@ def test_an_empty_key_is_a_prefix_of_names_only(tmp_path: Path) -> None:
     text = (tmp_path / 'arm.urdf').read_text()
     assert '<gazebo reference="m_openarm_left_hand">' in text
     assert text.count('<mu1>0.8</mu1>') == 2
+
+
+def test_the_command_takes_a_prefix_for_a_limb_without_a_side(tmp_path: Path) -> None:
+    yourdfpy = require_module('yourdfpy')
+    source, target = tmp_path / 'arm.urdf', tmp_path / 'two.urdf'
+    _openarm().to_urdf(source)
+    result = CliRunner().invoke(main, ['mirror', str(source), '--root', 'openarm_left_link0',
+                                       '--rename', ':m_', '-o', str(target)])
+    assert result.exit_code == 0, result.output
+    read = yourdfpy.URDF.load(str(target), load_meshes=False, build_scene_graph=False)
+    assert {f'm_openarm_left_{part}' for part in _ARM} <= set(read.link_map)
+    refused = CliRunner().invoke(main, ['mirror', str(source), '--root', 'openarm_left_link0',
+                                        '--rename', ':', '-o', str(target), '-f'])
+    assert refused.exit_code == 2 and "':' is not OLD:NEW" in refused.output
