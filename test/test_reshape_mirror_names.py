@@ -172,3 +172,24 @@ def test_the_command_takes_a_prefix_for_a_limb_without_a_side(tmp_path: Path) ->
     refused = CliRunner().invoke(main, ['mirror', str(source), '--root', 'openarm_left_link0',
                                         '--rename', ':', '-o', str(target), '-f'])
     assert refused.exit_code == 2 and "':' is not OLD:NEW" in refused.output
+
+
+@pytest.mark.parametrize('relative, left, right, rename', [
+    ('romeo_description/urdf/romeo.urdf', 'LHipYawLink', 'RHipYawLink', {'L': 'R', 'l_': 'r_'}),
+    pytest.param('baxter_description/urdf/baxter.urdf', 'left_arm_mount', 'right_arm_mount',
+                 {'left_': 'right_', 'l_': 'r_'}, marks=pytest.mark.slow)])  # its DAE meshes
+def test_a_mirrored_limb_takes_the_names_of_the_robots_other_limb(
+        relative: str, left: str, right: str, rename: dict[str, str], tmp_path: Path) -> None:
+    yourdfpy = require_module('yourdfpy')
+    source = example_robot(relative)
+    robot = Robot.from_urdf(source)
+    for link in reversed(robot.subtree(right)):
+        robot.remove_link(link.name)
+    robot.mirror(left, rename=rename, mesh_folder=tmp_path / 'meshes',
+                 search_paths=[example_robot('.').parent.parent])
+    robot.to_urdf(tmp_path / 'mirrored.urdf')
+    theirs = yourdfpy.URDF.load(str(source), load_meshes=False, build_scene_graph=False)
+    mine = yourdfpy.URDF.load(str(tmp_path / 'mirrored.urdf'), load_meshes=False,
+                              build_scene_graph=False)
+    assert set(mine.link_map) == set(theirs.link_map)  # Romeo's LFsrFL_frame: RFsrFL_frame
+    assert set(mine.joint_map) == set(theirs.joint_map)

@@ -17,14 +17,14 @@ The names a mirrored limb takes: every occurrence of the limb's token, one to on
 
 A key of the renaming (``left_``) is replaced where it stands as a word of the name: at
 its start or after a separator (``_``, ``/``, ``-``, ...), a change between letters and
-digits or from lower to upper case, and ending likewise (``l_`` is not found in
-``roll_link``). Its first occurrence in a name is the limb's; a later one is the limb's
-too (ANYmal's ``LF_HIP_LF_hip_fixed`` by ``LF_: RF_`` is ``RF_HIP_RF_hip_fixed``) unless
-the limb has a name that differs from this one there, up to the next word (PR2's
-``l_gripper_l_finger...`` beside ``l_gripper_r_finger...``, OpenArm's
-``openarm_left_left_finger`` beside ``openarm_left_right_finger``): then it tells parts
-of the limb apart and stays.
-Two names of one kind that would become one are refused, naming both.
+digits or from lower to upper case, before a capitalised word, and ending likewise (``l_``
+is not found in ``roll_link``; ``L`` is found in Romeo's ``LHipYawLink``). Its first
+occurrence in a name is the limb's; a later one is the limb's too (ANYmal's
+``LF_HIP_LF_hip_fixed`` by ``LF_: RF_`` is ``RF_HIP_RF_hip_fixed``) unless the limb has a
+name that differs from this one there, up to the next word (PR2's ``l_gripper_l_finger...``
+beside ``l_gripper_r_finger...``, OpenArm's ``openarm_left_left_finger`` beside
+``openarm_left_right_finger``): then it tells parts of the limb apart and stays. Two names
+of one kind that would become one are refused, naming both.
 """
 
 from __future__ import annotations
@@ -35,11 +35,23 @@ import re
 from urdfgenpy_ros.errors import ModelError
 
 
-def _apart(before: str, after: str) -> bool:
-    """Return whether a word of a name ends between the characters ``before`` and ``after``."""
+def _apart(before: str, after: str, following: str = '') -> bool:
+    """
+    Return whether a word of a name ends between the characters ``before`` and ``after``.
+
+    ``following`` is the character after ``after``: an upper-case letter that starts a
+    capitalised word ends the word before it (``L|Hip``, ``LFsr|Center``).
+    """
     if not (before.isalnum() and after.isalnum()):
         return True
-    return before.isdigit() != after.isdigit() or (before.islower() and after.isupper())
+    return before.isdigit() != after.isdigit() or (before.islower() and after.isupper()) \
+        or (before.isupper() and after.isupper() and following.islower())
+
+
+def _bounded(name: str, index: int) -> bool:
+    """Return whether a word of ``name`` starts or ends at ``index``."""
+    return index in (0, len(name)) or _apart(name[index - 1], name[index],
+                                             name[index + 1:index + 2])
 
 
 def _occurrences(name: str, keys: list[str]) -> list[tuple[int, str]]:
@@ -49,8 +61,7 @@ def _occurrences(name: str, keys: list[str]) -> list[tuple[int, str]]:
     while index < len(name):
         for key in keys:  # longest first
             end = index + len(key)
-            if name.startswith(key, index) and (index == 0 or _apart(name[index - 1], key[0])) \
-                    and (end == len(name) or _apart(key[-1], name[end])):
+            if name.startswith(key, index) and _bounded(name, index) and _bounded(name, end):
                 found.append((index, key))
                 index = end
                 break
