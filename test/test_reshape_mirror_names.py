@@ -176,6 +176,9 @@ def test_the_command_takes_a_prefix_for_a_limb_without_a_side(tmp_path: Path) ->
 
 @pytest.mark.parametrize('relative, left, right, rename', [
     ('romeo_description/urdf/romeo.urdf', 'LHipYawLink', 'RHipYawLink', {'L': 'R', 'l_': 'r_'}),
+    ('anymal_c_simple_description/urdf/anymal.urdf', 'LF_HAA', 'RF_HAA', {'L': 'R'}),
+    ('simple_humanoid_description/urdf/simple_humanoid.urdf', 'LARM_LINK1', 'RARM_LINK1',
+     {'L': 'R', 'l_': 'r_'}),
     pytest.param('baxter_description/urdf/baxter.urdf', 'left_arm_mount', 'right_arm_mount',
                  {'left_': 'right_', 'l_': 'r_'}, marks=pytest.mark.slow)])  # its DAE meshes
 def test_a_mirrored_limb_takes_the_names_of_the_robots_other_limb(
@@ -191,5 +194,6 @@ def test_a_mirrored_limb_takes_the_names_of_the_robots_other_limb(
     theirs = yourdfpy.URDF.load(str(source), load_meshes=False, build_scene_graph=False)
     mine = yourdfpy.URDF.load(str(tmp_path / 'mirrored.urdf'), load_meshes=False,
                               build_scene_graph=False)
-    assert set(mine.link_map) == set(theirs.link_map)  # Romeo's LFsrFL_frame: RFsrFL_frame
+    # Romeo's LFsrFL_frame is RFsrFL_frame; ANYmal's LF_HIP_LF_hip_fixed RF_HIP_RF_hip_fixed
+    assert set(mine.link_map) == set(theirs.link_map)
     assert set(mine.joint_map) == set(theirs.joint_map)

@@ -111,7 +111,8 @@ def mirror_subtree(robot, root: str, plane: str = 'xz', frame: str | None = None
                      if joint.parent in {link.name for link in links})]
     shapes = {shape.name for link in links for shape in (*link.visuals, *link.collisions)
               if shape.name}
-    renamed = limb_renamer(rename, [*(item.name for item in (*links, *joints)), *shapes])
+    renamed = limb_renamer(rename, [*(item.name for item in (*links, *joints)), *shapes],
+                           [item.name for item in (*robot.links, *robot.joints)])
     link_names = {link.name: renamed(link.name) for link in links}
     joint_names = {joint.name: renamed(joint.name) for joint in joints}
     for kind, names in (('link', link_names), ('joint', joint_names),
