@@ -31,7 +31,8 @@ import pytest
 from test_reshape_dh import example_robot
 
 from urdfgenpy_ros import (
-    Box, Collision, Extension, Joint, JointLimit, Link, ModelError, Origin, Robot, Visual)
+    Box, Collision, Extension, Joint, JointLimit, Link, ModelError, Origin, Robot,
+    UrdfgenpyError, Visual)
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.reshape.mirror import mirror_subtree
 
@@ -197,3 +198,51 @@ def test_a_mirrored_limb_takes_the_names_of_the_robots_other_limb(
     # Romeo's LFsrFL_frame is RFsrFL_frame; ANYmal's LF_HIP_LF_hip_fixed RF_HIP_RF_hip_fixed
     assert set(mine.link_map) == set(theirs.link_map)
     assert set(mine.joint_map) == set(theirs.joint_map)
+
+
+SIDES = (('left_', 'right_'), ('l_', 'r_'), ('L', 'R'), ('LF_', 'RF_'), ('LH_', 'RH_'),
+         ('FL_', 'FR_'), ('HL_', 'HR_'), ('Left', 'Right'), ('left', 'right'))
+
+
+def _left_limbs(robot: Robot):
+    """Yield each limb whose first link is named by a left side and has a right twin."""
+    names = {link.name for link in robot.links}
+    for old, new in SIDES:
+        for link in robot.links:
+            twin = new + link.name[len(old):]
+            parent = robot.parent_joint(link.name)
+            if link.name.startswith(old) and twin in names and parent is not None \
+                    and not parent.parent.startswith(old) \
+                    and link.name not in {item.name for item in robot.subtree(twin)}:
+                yield link.name, twin, {old: new}
+
+
+@pytest.mark.slow  # every robot of example-robot-data, their meshes mirrored
+def test_a_left_limb_takes_its_right_twins_names_or_is_refused(tmp_path: Path) -> None:
+    """The robots' own right limbs are the oracle: exactly their names, or one line."""
+    yourdfpy = require_module('yourdfpy')
+    share = example_robot('.').parent.parent
+    checked = 0
+    for source in sorted(example_robot('.').glob('*/urdf/*.urdf')):
+        try:
+            original = Robot.from_urdf(source)
+        except UrdfgenpyError:  # a file urdfdom refuses too (ur3.urdf: no robot name)
+            continue
+        theirs = yourdfpy.URDF.load(str(source), load_meshes=False, build_scene_graph=False)
+        for left, right, rename in list(_left_limbs(original)):
+            robot = Robot.from_urdf(source)
+            for link in reversed(robot.subtree(right)):
+                robot.remove_link(link.name)
+            try:
+                robot.mirror(left, rename=rename, mesh_folder=tmp_path / str(checked),
+                             search_paths=[share])
+            except ModelError as error:
+                assert '\n' not in str(error)
+                continue
+            robot.to_urdf(tmp_path / 'mirrored.urdf')
+            mine = yourdfpy.URDF.load(str(tmp_path / 'mirrored.urdf'), load_meshes=False,
+                                      build_scene_graph=False)
+            assert (set(mine.link_map), set(mine.joint_map)) == (
+                set(theirs.link_map), set(theirs.joint_map)), (source.name, left, rename)
+            checked += 1
+    assert checked >= 50
