@@ -156,6 +156,10 @@ DEFECTS: dict[str, tuple[set[str], list[tuple[str, str]]]] = {
     'R306': ({'R306'}, [('<material name="grey"/>\n    </visual>',
                          '<material name="grey"/>\n    </visual>\n    <visual><geometry>'
                          '<mesh filename="missing.dae"/><!--D--></geometry></visual>')]),
+    'R309': ({'R309', 'R306'}, [('<material name="grey"/>\n    </visual>',
+                                 '<material name="grey"/>\n    </visual>\n    <visual>'
+                                 '<geometry><mesh filename="/no_such_folder/arm.dae"/><!--D-->'
+                                 '</geometry></visual>')]),
 }
 
 

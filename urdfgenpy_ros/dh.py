@@ -38,7 +38,7 @@ from urdfgenpy_ros.dh_row import DHConvention, DHRow
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Origin, Sphere
 from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.joint import Joint, JointLimit, JointType
+from urdfgenpy_ros.joint import Joint, JointLimit
 from urdfgenpy_ros.link import Collision, Link, Visual
 from urdfgenpy_ros.model import robot_class
 from urdfgenpy_ros.transforms import (
@@ -69,7 +69,7 @@ class DHTable:
 
     def _split(self, row: DHRow, q: float) -> tuple[float, float]:
         """Return (theta, d) of ``row`` at joint value ``q``."""
-        if row.joint_type == 'revolute':
+        if row.turns:
             return row.theta_offset + q, row.d
         return row.theta_offset, row.d + q
 
@@ -154,13 +154,9 @@ class DHTable:
             robot.add_link(_placeholder(link_name, reach, link_geometry, link_radius,
                                         link_mass))
             xyz, rpy = to_xyz_rpy(origin)
-            kind = JointType(row.joint_type)
-            default = (-math.pi, math.pi) if kind is JointType.REVOLUTE else (0.0, 1.0)
-            limit = JointLimit(default[0] if row.lower is None else row.lower,
-                               default[1] if row.upper is None else row.upper,
-                               effort=row.effort, velocity=row.velocity)
-            robot.add_joint(Joint(row.name, kind, parent, link_name, origin=Origin(xyz, rpy),
-                                  axis=(0.0, 0.0, 1.0), limit=limit))
+            robot.add_joint(Joint(row.name, row.joint_type, parent, link_name,
+                                  origin=Origin(xyz, rpy), axis=(0.0, 0.0, 1.0),
+                                  limit=_limit(row)))
             parent = link_name
         xyz, rpy = to_xyz_rpy(flange)
         robot.add_link(Link('flange'))
@@ -202,6 +198,25 @@ class DHTable:
         """
         from urdfgenpy_ros.formats.dh_table import write_table
         write_table(self, path, degrees)
+
+
+def _limit(row: DHRow) -> JointLimit | None:
+    """
+    Return the joint limit of ``row``: its own values, else the defaults.
+
+    A continuous row has none unless it gives an effort or a velocity (and then only what
+    it gives).
+    """
+    if row.joint_type == 'continuous':
+        if row.effort is None and row.velocity is None:
+            return None
+        return JointLimit(row.lower or 0.0, row.upper or 0.0, effort=row.effort or 0.0,
+                          velocity=row.velocity or 0.0)
+    default = (-math.pi, math.pi) if row.joint_type == 'revolute' else (0.0, 1.0)
+    return JointLimit(default[0] if row.lower is None else row.lower,
+                      default[1] if row.upper is None else row.upper,
+                      effort=100.0 if row.effort is None else row.effort,
+                      velocity=2.0 if row.velocity is None else row.velocity)
 
 
 def _placeholder(name: str, reach: Matrix4, kind: str, radius: float, mass: float) -> Link:

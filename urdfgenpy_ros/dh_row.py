@@ -28,6 +28,9 @@ import math
 from urdfgenpy_ros.errors import ModelError
 
 
+JOINT_TYPES = ('revolute', 'continuous', 'prismatic')
+
+
 class DHConvention(str, Enum):
     """Which Denavit-Hartenberg convention a table uses."""
 
@@ -40,8 +43,10 @@ class DHRow:
     """
     One joint: ``DHRow(joint, a, alpha, d, theta_offset, joint_type)``.
 
-    ``joint`` is a number or a name; lengths in metres, angles in radians. Limits are
-    optional (revolute: -pi..pi; prismatic: 0..1 m by default).
+    ``joint`` is a number or a name; lengths in metres, angles in radians. ``joint_type``
+    is revolute, continuous (a revolute row without position limits: a wheel) or
+    prismatic. Limits are optional (revolute: -pi..pi; prismatic: 0..1 m by default);
+    a continuous row whose ``effort`` and ``velocity`` are None has no ``<limit>``.
     """
 
     joint: int | str
@@ -53,19 +58,24 @@ class DHRow:
     _: KW_ONLY
     lower: float | None = None
     upper: float | None = None
-    effort: float = 100.0
-    velocity: float = 2.0
+    effort: float | None = 100.0
+    velocity: float | None = 2.0
 
     def __post_init__(self) -> None:
         """Check the joint type and coerce numbers."""
-        if self.joint_type not in ('revolute', 'prismatic'):
-            raise ModelError(f'DH row {self.joint!r}: joint_type must be revolute or '
-                             f'prismatic, got {self.joint_type!r}')
+        if self.joint_type not in JOINT_TYPES:
+            raise ModelError(f'DH row {self.joint!r}: joint_type must be revolute, '
+                             f'continuous or prismatic, got {self.joint_type!r}')
         for name in ('a', 'alpha', 'd', 'theta_offset'):
             value = float(getattr(self, name))
             if not math.isfinite(value):
                 raise ModelError(f'DH row {self.joint!r}: {name} must be finite')
             setattr(self, name, value)
+
+    @property
+    def turns(self) -> bool:
+        """Return whether the row's variable is theta (revolute or continuous)."""
+        return self.joint_type != 'prismatic'
 
     @property
     def name(self) -> str:

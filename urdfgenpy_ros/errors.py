@@ -16,6 +16,7 @@
 
 from __future__ import annotations
 
+from dataclasses import FrozenInstanceError
 from enum import Enum
 from typing import NamedTuple
 
@@ -34,6 +35,14 @@ class ModelError(UrdfgenpyError, ValueError):
 
 class ModelTypeError(UrdfgenpyError, TypeError):
     """An object of the wrong kind handed to the model (``add_link(joint)``)."""
+
+
+class FrozenValueError(UrdfgenpyError, FrozenInstanceError):
+    """
+    A value object (an ``Origin``, a shape) changed in place: assign a new one instead.
+
+    It is a ``dataclasses.FrozenInstanceError`` (an ``AttributeError``) too, as before.
+    """
 
 
 class SourceLocation(NamedTuple):

@@ -22,7 +22,7 @@ import math
 
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.checks import Vec3
-from urdfgenpy_ros.errors import ModelError, SourceLocation
+from urdfgenpy_ros.errors import FrozenValueError, ModelError, SourceLocation
 from urdfgenpy_ros.preserved import Preserved
 from urdfgenpy_ros.transforms import (
     from_xyz_rpy, Matrix4, matrix_rpy, quaternion_matrix, rpy_quaternion)
@@ -331,3 +331,18 @@ class Mesh:
 
 
 Geometry = Box | Cylinder | Sphere | Capsule | Mesh
+
+
+def _refuse_change(value: object, name: str, *_: object) -> None:
+    """Refuse to change a value in place, saying what to assign instead."""
+    kind = type(value).__name__
+    owner = 'joint.origin' if kind == 'Origin' else 'visual.geometry'
+    raise FrozenValueError(
+        f'cannot assign to field {name!r}: {kind} is a value type, never changed in place; '
+        f'assign a new one: {owner} = {kind}(...) (or {owner} = '
+        f'dataclasses.replace({owner}, {name}=...))')
+
+
+for _value_class in (Origin, Box, Cylinder, Sphere, Capsule, Mesh):
+    setattr(_value_class, '__setattr__', _refuse_change)
+    setattr(_value_class, '__delattr__', _refuse_change)

@@ -17,6 +17,7 @@
 from __future__ import annotations
 
 from pathlib import Path
+import warnings
 
 import click
 
@@ -45,7 +46,12 @@ def dh(source: Path, arguments: tuple[str, ...], base: str, tip: str, convention
     if output.exists() and not force:
         raise UrdfgenpyError(f'{output} exists: pass --force to overwrite it')
     robot = read_robot(source, arguments, package_paths)
-    table = DHTable.from_robot(robot, base, tip, convention)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter('always')
+        table = DHTable.from_robot(robot, base, tip, convention)
+    for warning in caught:  # ours, as one line each
+        if str(warning.message).startswith('dh:'):
+            click.echo(f'warning: {warning.message}', err=True)
     table.save(output, degrees)  # refuses a .csv for a table with base or tool transforms
     click.echo(f'wrote {output}: {len(table.rows)} rows ({convention}) from {base!r} to '
                f'{tip!r}')

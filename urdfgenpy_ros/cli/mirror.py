@@ -33,17 +33,17 @@ def _renames(pairs: tuple[str, ...]) -> dict[str, str]:
     renames = {}
     for pair in pairs:
         old, separator, new = pair.partition(':')
-        if not separator or not old:
-            raise click.BadParameter(f'{pair!r} is not OLD:NEW (e.g. left_:right_)',
-                                     param_hint='--rename')
+        if not separator or not (old or new):
+            raise click.BadParameter(f'{pair!r} is not OLD:NEW (e.g. left_:right_, or :m_ '
+                                     'for a prefix)', param_hint='--rename')
         renames[old] = new
     return renames
 
 
 def _in_option_words(text: str) -> str:
     """Return a library message with its fix said in this command's options."""
-    text = re.sub(r'pass rename= that changes them; it was \{.*\}',
-                  'pass --rename OLD:NEW that changes them', text)
+    text = re.sub(r'pass rename= that ([a-z ]+); it was \{.*?\}',
+                  r'pass --rename OLD:NEW that \1', text)
     return text.replace('mesh_folder=', '--mesh-folder').replace('rename=', '--rename')
 
 
@@ -56,9 +56,9 @@ def _in_option_words(text: str) -> str:
 @click.option('--frame', default=None,
               help="The link whose plane it is (default: the robot's root link).")
 @click.option('--rename', 'renames', multiple=True, metavar='OLD:NEW',
-              help='Rename the copy: a name starting with OLD starts with NEW instead; '
-                   'OLD only further in a name is replaced wherever it is (repeatable; '
-                   'default left_:right_).')
+              help='Rename the copy: OLD becomes NEW wherever it is a word of a name, '
+                   'except a later OLD that tells parts of the limb apart; :NEW puts NEW '
+                   'before every name (repeatable; default left_:right_).')
 @click.option('--mesh-folder', type=click.Path(file_okay=False, path_type=Path), default=None,
               help='Write the mirrored meshes here (default: beside the originals).')
 @click.option('--output', '-o', required=True, type=click.Path(dir_okay=False, path_type=Path),

@@ -69,18 +69,21 @@ def _row(values: dict[str, Any], degrees: bool, where: SourceLocation) -> DHRow:
         except (TypeError, ValueError):
             raise ParseError(f'DH row {values["joint"]}: {column} {raw!r} is not a number',
                              where, 'D002') from None
-    angular_limits = kind == 'revolute'
+    angular_limits = kind != 'prismatic'
     for column in (*_ANGLES, *(('lower', 'upper') if angular_limits else ())):
         if degrees and numbers[column] is not None:
             numbers[column] = math.radians(numbers[column])  # type: ignore[arg-type]
     joint = values['joint']
     joint = int(joint) if isinstance(joint, int) or str(joint).isdigit() else str(joint)
+    free = kind == 'continuous'  # without effort and velocity: no <limit>, as in URDF
     try:
         return DHRow(joint, numbers['a'] or 0.0, numbers['alpha'] or 0.0, numbers['d'] or 0.0,
                      numbers['theta_offset'] or 0.0, kind, lower=numbers['lower'],
                      upper=numbers['upper'],
-                     effort=100.0 if numbers['effort'] is None else numbers['effort'],
-                     velocity=2.0 if numbers['velocity'] is None else numbers['velocity'])
+                     effort=numbers['effort'] if free or numbers['effort'] is not None
+                     else 100.0,
+                     velocity=numbers['velocity'] if free or numbers['velocity'] is not None
+                     else 2.0)
     except ValueError as error:
         raise ParseError(str(error), where, 'D002') from None
 
@@ -201,7 +204,7 @@ def write_table(table: DHTable, path: str | PathLike[str], degrees: bool = False
     rows = []
     for row in table.rows:
         limits: tuple[float | None, ...] = (row.lower, row.upper)
-        if row.joint_type == 'revolute':
+        if row.turns:
             limits = tuple(None if v is None else angle(v) for v in limits)
         rows.append({'joint': row.joint, 'a': row.a, 'alpha': angle(row.alpha), 'd': row.d,
                      'theta_offset': angle(row.theta_offset), 'type': row.joint_type,

@@ -50,10 +50,10 @@ def apply_dh(robot, table, base: str, tip: str) -> list[str]:
                          f'{tip!r} {len(axes)} movable joints ({names}): give one row per '
                          'joint, base to tip')
     for row, axis in zip(table.rows, axes):
-        kind = 'prismatic' if axis.joint.type is JointType.PRISMATIC else 'revolute'
-        if row.joint_type != kind:
+        if row.turns == (axis.joint.type is JointType.PRISMATIC):
             raise ModelError(f'DH row {row.joint!r} is {row.joint_type}, joint '
-                             f'{axis.joint.name!r} is {kind}: the rows follow the chain')
+                             f'{axis.joint.name!r} is {axis.joint.type.value}: the rows '
+                             'follow the chain')
     nominal = dh_from_robot(robot, base, tip, table.convention, cls=type(table))
     zero = [0.0] * len(axes)
     old_frames, new_frames = nominal.link_frames(zero), table.link_frames(zero)

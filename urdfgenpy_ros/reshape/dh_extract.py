@@ -30,6 +30,8 @@ table's forward kinematics is the chain's.
 from __future__ import annotations
 
 import math
+import random
+import warnings
 
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.joint import Joint, JointType
@@ -38,6 +40,12 @@ from urdfgenpy_ros.reshape._frames import (
 from urdfgenpy_ros.transforms import IDENTITY4, Matrix4, multiply
 
 _PARALLEL = 1e-9  # |z1 x z2| below this: the axes are parallel
+# Axes closer than this (radians) are taken as parallel: their common normal lies
+# (separation / angle) away, kilometres for the 1.5708 of a URDF's rounded pi/2 (hundreds
+# of metres for 1.57, 3.14). A warning gives the error this costs, when above _EXACT.
+NEARLY_PARALLEL = 5e-3
+_EXACT = 1e-9  # metres: a table this close to the chain is its forward kinematics
+_SAMPLES = 16
 _SAME = 1e-12  # distances below this (metres): the lines meet
 _MOVING = (JointType.REVOLUTE, JointType.CONTINUOUS, JointType.PRISMATIC)
 
@@ -113,10 +121,10 @@ def _normal(origin: Vec, z: Vec, point: Vec, u: Vec, x_previous: Vec) -> tuple[V
     w = cross(z, u)
     between = sub(point, origin)
     if norm(w) > _PARALLEL:
-        c = dot(z, u)
+        c, square = dot(z, u), dot(w, w)  # |z x u|^2 = 1 - c^2, without the cancellation
         bz, bu = dot(between, z), dot(between, u)
-        s = (bz - bu * c) / (1.0 - c * c)
-        t = (bz * c - bu) / (1.0 - c * c)
+        s = (bz - bu * c) / square
+        t = (bz * c - bu) / square
         first, second = add(origin, z, s), add(point, u, t)
         gap = sub(second, first)
         return first, second, _closer(unit(gap) if norm(gap) > _SAME else unit(w), x_previous)
@@ -209,7 +217,9 @@ def dh_from_robot(robot, base: str, tip: str, convention: str = 'standard', *, c
     """
     Return the DH table (a ``cls``) of the chain from link ``base`` to link ``tip``.
 
-    Its rows are named after the joints and carry their limits; ``base`` and ``tool``
+    Its rows are named after the joints and carry their types (a continuous joint stays
+    continuous) and limits, no more (a joint without ``<limit>`` has no effort or
+    velocity); ``base`` and ``tool``
     hold the transforms from the base link to DH frame 0 and from the last DH frame to
     the tip link, so ``table.to_robot()`` has the chain's forward kinematics.
 
@@ -217,7 +227,8 @@ def dh_from_robot(robot, base: str, tip: str, convention: str = 'standard', *, c
     """
     from urdfgenpy_ros.dh_row import DHConvention, DHRow
     style = DHConvention(convention)
-    _, axes, tip_pose = chain_axes(robot, base, tip)
+    joints, axes, tip_pose = chain_axes(robot, base, tip)
+    snapped = _snap_parallel(axes)
     if style is DHConvention.STANDARD:
         frames, measure = _standard_frames(axes, tip_pose), _standard_row
     else:
@@ -226,12 +237,88 @@ def dh_from_robot(robot, base: str, tip: str, convention: str = 'standard', *, c
     for axis, previous, current in zip(axes, frames, frames[1:]):
         a, alpha, d, theta = (_snap(value) for value in measure(previous, current))
         joint = axis.joint
-        limit = joint.limit if joint.type is not JointType.CONTINUOUS else None
-        rows.append(DHRow(joint.name, a, alpha, d, theta,
-                          'prismatic' if joint.type is JointType.PRISMATIC else 'revolute',
-                          lower=limit.lower if limit is not None else None,
-                          upper=limit.upper if limit is not None else None,
-                          effort=limit.effort if limit is not None else 100.0,
-                          velocity=limit.velocity if limit is not None else 2.0))
-    return cls(style, rows, base=origin_of(frames[0]),
-               tool=origin_of(multiply(inverse(frames[-1]), tip_pose)))
+        limit = joint.limit
+        bounded = limit is not None and joint.type is not JointType.CONTINUOUS
+        rows.append(DHRow(joint.name, a, alpha, d, theta, joint.type.value,
+                          lower=limit.lower if bounded else None,  # type: ignore[union-attr]
+                          upper=limit.upper if bounded else None,  # type: ignore[union-attr]
+                          effort=limit.effort if limit is not None else None,
+                          velocity=limit.velocity if limit is not None else None))
+    table = cls(style, rows, base=origin_of(frames[0]),
+                tool=origin_of(multiply(inverse(frames[-1]), tip_pose)))
+    if snapped:
+        distance, angle = _deviation(table, joints)
+        if max(distance, angle) > _EXACT:
+            _warn_parallel(snapped, distance, angle)
+    return table
+
+
+def _snap_parallel(axes: list[Axis]) -> list[tuple[str, str, float]]:
+    """
+    Turn each axis within :data:`NEARLY_PARALLEL` of the one before onto its direction.
+
+    Return ``(joint before, joint, angle)`` for each axis turned.
+    """
+    snapped = []
+    for previous, axis in zip(axes, axes[1:]):
+        sine = norm(cross(previous.direction, axis.direction))
+        if 0.0 < sine < NEARLY_PARALLEL:
+            sense = 1.0 if dot(previous.direction, axis.direction) > 0.0 else -1.0
+            axis.direction = tuple(sense * v for v in previous.direction)  # type: ignore
+            snapped.append((previous.joint.name, axis.joint.name, math.asin(sine)))
+    return snapped
+
+
+def _deviation(table, joints: list[Joint]) -> tuple[float, float]:
+    """Return the largest distance and angle between the table's tip and the chain's."""
+    from urdfgenpy_ros.transforms import translation
+    rng = random.Random(0)
+    moving = [joint for joint in joints if joint.type is not JointType.FIXED]
+    distance = angle = 0.0
+    for sample in range(_SAMPLES):
+        q = [0.0 if sample == 0 else rng.uniform(*_span(joint)) for joint in moving]
+        values = iter(q)
+        pose = IDENTITY4
+        for joint in joints:
+            pose = multiply(pose, joint.origin.matrix())
+            if joint.type is JointType.PRISMATIC:
+                x, y, z = (v * next(values) for v in unit(joint.effective_axis))
+                pose = multiply(pose, translation(x, y, z))
+            elif joint.type is not JointType.FIXED:
+                pose = multiply(pose, _turn(unit(joint.effective_axis), next(values)))
+        mine = table.flange(q)
+        distance = max(distance, norm(sub(column(mine, 3), column(pose, 3))))
+        turn = [[sum(mine[k][i] * pose[k][j] for k in range(3)) for j in range(3)]
+                for i in range(3)]  # mine^T pose: its skew part is the sine of the angle
+        angle = max(angle, norm((turn[2][1] - turn[1][2], turn[0][2] - turn[2][0],
+                                 turn[1][0] - turn[0][1])) / 2.0)
+    return distance, angle
+
+
+def _span(joint: Joint) -> tuple[float, float]:
+    """Return the range of ``joint``'s positions to sample: its limits, else a turn or 0.1 m."""
+    limit = joint.limit
+    if limit is not None and joint.type is not JointType.CONTINUOUS \
+            and limit.lower < limit.upper:
+        return limit.lower, limit.upper
+    return (-0.1, 0.1) if joint.type is JointType.PRISMATIC else (-math.pi, math.pi)
+
+
+def _turn(axis: Vec, angle: float) -> Matrix4:
+    """Return the rotation by ``angle`` about the unit ``axis`` (Rodrigues)."""
+    x, y, z = axis
+    c, s = math.cos(angle), math.sin(angle)
+    k = 1.0 - c
+    return [[c + x * x * k, x * y * k - z * s, x * z * k + y * s, 0.0],
+            [y * x * k + z * s, c + y * y * k, y * z * k - x * s, 0.0],
+            [z * x * k - y * s, z * y * k + x * s, c + z * z * k, 0.0],
+            [0.0, 0.0, 0.0, 1.0]]
+
+
+def _warn_parallel(snapped: list[tuple[str, str, float]], distance: float,
+                   angle: float) -> None:
+    pairs = ', '.join(f'{a!r} and {b!r} ({turn:.1e} rad)' for a, b, turn in snapped)
+    warnings.warn(f'dh: the axes of joints {pairs} are taken as parallel (their common '
+                  'normal lies hundreds of metres away or more): the tip of the table is up '
+                  f"to {distance:.1e} m and {angle:.1e} rad from the URDF's ({_SAMPLES} "
+                  'configurations sampled within the limits)', stacklevel=4)

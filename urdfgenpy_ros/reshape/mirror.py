@@ -43,6 +43,7 @@ from urdfgenpy_ros.geometry import Mesh, Origin
 from urdfgenpy_ros.joint import Joint, JointMimic, JointType
 from urdfgenpy_ros.reshape._frames import general_multiply, inverse, origin_of, require_link
 from urdfgenpy_ros.reshape.mirror_mesh import FLIPPED_AXIS, MeshWriter
+from urdfgenpy_ros.reshape.mirror_names import limb_renamer, require_one_to_one
 from urdfgenpy_ros.transforms import IDENTITY4, Matrix4, multiply
 
 PLANES = FLIPPED_AXIS
@@ -85,21 +86,6 @@ def _conjugate(origin: Origin, flip: Matrix4) -> Origin:
     return Origin(xyz, rpy, source=origin.source, extras=origin.extras)
 
 
-def _renamer(rename: Mapping[str, str]):
-    """
-    Return the renaming: a name starting with a key has that prefix replaced, only it.
-
-    (``l_gripper_l_finger_joint`` by ``l_: r_`` is ``r_gripper_l_finger_joint``, as in
-    PR2.) A key found elsewhere in a name only (``leg_left_1`` by ``left: right``) is
-    replaced wherever it occurs.
-    """
-    def renamed(name: str) -> str:
-        for old, new in rename.items():
-            name = new + name[len(old):] if name.startswith(old) else name.replace(old, new)
-        return name
-    return renamed
-
-
 def mirror_subtree(robot, root: str, plane: str = 'xz', frame: str | None = None,
                    rename: Mapping[str, str] | None = None, *,
                    mesh_folder: str | PathLike[str] | None = None,
@@ -115,7 +101,6 @@ def mirror_subtree(robot, root: str, plane: str = 'xz', frame: str | None = None
     if plane not in PLANES:
         raise ModelError(f"mirror: plane {plane!r} is not one of 'xz', 'yz', 'xy'")
     rename = {'left_': 'right_'} if rename is None else dict(rename)
-    renamed = _renamer(rename)
     top = robot.parent_joint(require_link(robot, root, 'mirror: root'))
     at_frame = require_link(robot, frame, 'mirror: frame') if frame is not None else None
     if top is None:
@@ -124,8 +109,15 @@ def mirror_subtree(robot, root: str, plane: str = 'xz', frame: str | None = None
     links = robot.subtree(root)
     joints = [top, *(joint for joint in robot.joints
                      if joint.parent in {link.name for link in links})]
+    shapes = {shape.name for link in links for shape in (*link.visuals, *link.collisions)
+              if shape.name}
+    renamed = limb_renamer(rename, [*(item.name for item in (*links, *joints)), *shapes],
+                           [item.name for item in (*robot.links, *robot.joints)])
     link_names = {link.name: renamed(link.name) for link in links}
     joint_names = {joint.name: renamed(joint.name) for joint in joints}
+    for kind, names in (('link', link_names), ('joint', joint_names),
+                        ('visual and collision name', {name: renamed(name) for name in shapes})):
+        require_one_to_one(kind, names, rename)
     taken = [f'link {new!r}' for new in link_names.values() if robot.has_link(new)]
     taken += [f'joint {new!r}' for new in joint_names.values() if robot.has_joint(new)]
     if taken:
@@ -154,6 +146,8 @@ def mirror_subtree(robot, root: str, plane: str = 'xz', frame: str | None = None
                 _mirror_pose_text(pose, flip, f'joint {joint.name!r}')
     for link in piece.links:
         _mirror_link(link, flip, meshes)
+        for shape in (*link.visuals, *link.collisions):
+            shape.name = renamed(shape.name) if shape.name else shape.name
     blocks = _robot_blocks(robot, joint_names, link_names, renamed)
     _rename_texts(piece, renamed)
     _rename(piece, _Renaming(link_names, joint_names))
@@ -306,8 +300,8 @@ def _rename_texts(piece: Any, renamed: Any) -> None:
                 if not isinstance(element.tag, str) or len(element) or not element.text:
                     continue
                 text = element.text.strip()
-                if text and renamed(text) != text:
-                    element.text = element.text.replace(text, renamed(text))
+                if text and renamed(text, False) != text:
+                    element.text = element.text.replace(text, renamed(text, False))
 
 
 def _joints_named(element: Any, robot: Any) -> set[str]:

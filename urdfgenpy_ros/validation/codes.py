@@ -83,6 +83,7 @@ CODES: dict[str, tuple[Severity, str]] = {
     'R306': (W, 'visual mesh file not found'),
     'R307': (W, 'zero size or zero scale on a visual (it draws nothing)'),
     'R308': (W, 'relative path written as a file:// URI (not portable)'),
+    'R309': (W, 'mesh named by a bare absolute path (not portable)'),
     # URDF versions (validation/versions.py, urdf_versions.py)
     'V701': (E, 'URDF version the target ROS cannot read'),
     'V702': (W, 'URDF 1.1/1.2 feature in a file whose version lacks it (urdfdom 6 ignores it)'),

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 import os
-from pathlib import Path
+from pathlib import Path, PurePosixPath, PureWindowsPath
 from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Sphere
@@ -53,6 +53,8 @@ def check_references(robot: Robot, findings: Findings, resolver: PackageResolver
                 element = f'link {link.name!r}'
                 _check_geometry(shape.geometry, element, where, findings,
                                 'R304' if kind == 'collision' else 'R307')
+                if isinstance(shape.geometry, Mesh):
+                    _check_bare_path(shape.geometry, element, where, findings)
                 if isinstance(shape.geometry, Mesh) and resolver is not None:
                     missing = 'R302' if kind == 'collision' else 'R306'
                     _check_mesh(shape.geometry, element, where, findings, resolver, base,
@@ -113,6 +115,20 @@ def _check_geometry(geometry: Any, element: str, where: str, findings: Findings,
                      f'mesh scale {geometry.scale} has a zero',
                      'a zero scale flattens the mesh: use 1 (or 0.001 for millimetres)',
                      'mesh')
+
+
+def _check_bare_path(mesh: Mesh, element: str, where: str, findings: Findings) -> None:
+    """Warn on a mesh named by a bare absolute path: a file of this machine only."""
+    name = mesh.filename
+    if '://' in name or not (PurePosixPath(name).is_absolute()
+                             or PureWindowsPath(name).is_absolute()):
+        return
+    findings.add('R309', mesh, element, f'{where}/geometry/mesh',
+                 f'{name!r} is a bare absolute path: it names a file of this machine only, '
+                 'and is not a URI as ROS tools expect',
+                 'write package://<package>/<path in the package>, or '
+                 f'{Path(name).as_uri() if name.startswith("/") else "file:///" + name} '
+                 'if it must stay absolute', 'mesh')
 
 
 def _check_mesh(mesh: Mesh, element: str, where: str, findings: Findings,
