@@ -28,6 +28,7 @@ from urdfgenpy_ros.cli.inertia import inertia
 from urdfgenpy_ros.cli.init import init
 from urdfgenpy_ros.cli.mirror import mirror
 from urdfgenpy_ros.cli.render import render
+from urdfgenpy_ros.cli.srdf import srdf
 from urdfgenpy_ros.cli.tree import tree
 from urdfgenpy_ros.cli.view import view
 from urdfgenpy_ros.report import boundary, FrontEnd
@@ -65,5 +66,5 @@ def main(ctx: click.Context, verbose: bool) -> None:
 
 
 for command in (example, tree, convert, check, inertia, init, graph, render, view, attach,
-                dh, mirror):
+                dh, mirror, srdf):
     main.add_command(command)
