@@ -183,6 +183,6 @@ def test_srdf_command_missing_package_is_one_line(tmp_path: Path) -> None:
     assert result.output.strip().splitlines() == [
         "urdfgenpy: link 'panda_link0': collision mesh package 'example-robot-data' of "
         "'package://example-robot-data/robots/panda_description/meshes/collision/link0.stl'"
-        " not found (give the folder holding its package: --package-path, or search_paths"
-        " in Python)"]
+        ' not found (give the folder holding its package: --package-path, or search_paths'
+        ' in Python)']
     assert not (tmp_path / 'x.srdf').exists()
