@@ -25,6 +25,7 @@ from urdfgenpy_ros.cli._options import input_options, read_robot
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.moveit.collision_matrix import Reason
 from urdfgenpy_ros.moveit.srdf import Srdf, VIRTUAL_JOINTS, write_srdf
+from urdfgenpy_ros.moveit.srdf_update import update_srdf
 
 
 @click.command()
@@ -45,15 +46,31 @@ from urdfgenpy_ros.moveit.srdf import Srdf, VIRTUAL_JOINTS, write_srdf
               default='fixed', show_default=True,
               help='How the root is held to the world: fixed for an arm, floating or '
                    'planar for a legged or mobile base.')
+@click.option('--update', 'existing', type=click.Path(exists=True, dir_okay=False,
+                                                     path_type=Path), metavar='EXISTING',
+              help='Recompute the collision matrix of this SRDF and keep the rest as written '
+                   '(groups, states, comments, layout, User pairs); OUTPUT may be the same '
+                   'file.')
 @click.option('--force', '-f', is_flag=True, help='Overwrite OUTPUT if it exists.')
 @input_options
 def srdf(source: Path, arguments: tuple[str, ...], output: Path, samples: int, seed: int,
-         groups: tuple[str, ...], default_state: str | None, virtual_joint: str, force: bool,
-         package_paths: tuple[Path, ...]) -> None:
+         groups: tuple[str, ...], default_state: str | None, virtual_joint: str,
+         existing: Path | None, force: bool, package_paths: tuple[Path, ...]) -> None:
     """Write the SRDF of SOURCE: groups, states, end effectors and collision matrix."""
-    if output.exists() and not force:
+    same = existing is not None and output.exists() and output.samefile(existing)
+    if output.exists() and not force and not same:
         raise UrdfgenpyError(f'{output} exists: pass --force to overwrite it')
     robot = read_robot(source, arguments, package_paths)
+    if existing is not None:
+        if groups:
+            raise click.UsageError('--group makes a new SRDF: with --update, edit the '
+                                   "file's groups by hand")
+        update = update_srdf(robot, existing, samples, seed, default_state, package_paths)
+        output.write_bytes(update.text.encode('utf-8', 'surrogateescape'))
+        for line in update.lines() or ['the collision matrix is unchanged']:
+            click.echo(line)
+        click.echo(f'wrote {output}')
+        return
     result = write_srdf(robot, output, samples=samples, seed=seed, groups=list(groups),
                         default_state=default_state,
                         virtual_joint=None if virtual_joint == 'none' else virtual_joint,
