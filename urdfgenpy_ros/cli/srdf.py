@@ -46,8 +46,8 @@ from urdfgenpy_ros.moveit.srdf_update import update_srdf
               default='fixed', show_default=True,
               help='How the root is held to the world: fixed for an arm, floating or '
                    'planar for a legged or mobile base.')
-@click.option('--update', 'existing', type=click.Path(exists=True, dir_okay=False,
-                                                     path_type=Path), metavar='EXISTING',
+@click.option('--update', 'existing', metavar='EXISTING',
+              type=click.Path(exists=True, dir_okay=False, path_type=Path),
               help='Recompute the collision matrix of this SRDF and keep the rest as written '
                    '(groups, states, comments, layout, User pairs); OUTPUT may be the same '
                    'file.')

@@ -46,7 +46,7 @@ if TYPE_CHECKING:
 _ELEMENT = re.compile(r'<disable_collisions\b[^>]*?/>|<disable_collisions\b.*?'
                       r'</disable_collisions\s*>', re.S)
 _COMMENT = re.compile(r'<!--.*?-->', re.S)
-_ATTRIBUTE = re.compile(r'''\b(link1|link2|reason)\s*=\s*(["'])(.*?)\2''', re.S)
+_ATTRIBUTE = re.compile(r"""\b(link1|link2|reason)\s*=\s*(["'])(.*?)\2""", re.S)
 _COMPUTED = {reason.value for reason in Reason}
 
 
@@ -95,7 +95,7 @@ def update_text(text: str, matrix: CollisionMatrix, file: str = '<srdf>') -> Upd
             seen.add(key)
             if wanted[key] != reason:
                 element = text[start:end]
-                new = re.sub(r'''(\breason\s*=\s*["'])[^"']*''', r'\g<1>' + wanted[key],
+                new = re.sub(r"""(\breason\s*=\s*["'])[^"']*""", r'\g<1>' + wanted[key],
                              element, count=1)
                 edits.append((start, end, new))
                 update.changed.append((key, reason, wanted[key]))
