@@ -186,3 +186,21 @@ def test_srdf_command_missing_package_is_one_line(tmp_path: Path) -> None:
         ' not found (give the folder holding its package: --package-path, or search_paths'
         ' in Python)']
     assert not (tmp_path / 'x.srdf').exists()
+
+
+def test_groups_of_panda_and_wheels_are_not_fingers() -> None:
+    from urdfgenpy_ros.moveit.groups import find_groups
+    panda = Robot.from_urdf(_urdf('panda'))
+    groups, effectors = find_groups(panda)
+    urdf = etree.parse(str(_urdf('panda'))).getroot()
+    arm = [j.get('name') for j in urdf.iter('joint') if j.get('type') == 'revolute']
+    chain = groups[0]
+    assert [j.name for j in panda.chain(chain.tip, chain.base)
+            if j.type.is_movable] == arm  # the seven arm joints, no finger
+    assert effectors[0].parent_link == chain.tip and effectors[0].parent_group == chain.name
+    rover = Robot.from_urdf_string(
+        '<robot name="rover"><link name="base_link"/><link name="left"/><link name="right"/>'
+        '<joint name="l" type="continuous"><parent link="base_link"/><child link="left"/>'
+        '<axis xyz="0 1 0"/></joint><joint name="r" type="continuous">'
+        '<parent link="base_link"/><child link="right"/><axis xyz="0 1 0"/></joint></robot>')
+    assert find_groups(rover) == ([], [])  # two wheels are not a gripper

@@ -74,7 +74,7 @@ def srdf(source: Path, arguments: tuple[str, ...], output: Path, samples: int, s
     result = write_srdf(robot, output, samples=samples, seed=seed, groups=list(groups),
                         default_state=default_state,
                         virtual_joint=None if virtual_joint == 'none' else virtual_joint,
-                        search_paths=package_paths)
+                        search_paths=package_paths, rates=True)
     for line in summary(result):
         click.echo(line)
     click.echo(f'wrote {output}')

@@ -76,7 +76,8 @@ class CollisionMatrix:
     rounds: int
     """How many rounds of 200 states the "Always" step drew before the ``samples``."""
     rates: dict[Pair, float] = field(default_factory=dict)
-    """The share of the ``samples`` states in which each Default pair is in contact."""
+    """The share of the ``samples`` states in which each Default pair is in contact (when
+    asked for)."""
 
     def reason(self, one: str, two: str) -> Reason | None:
         """Return why the pair is disabled, or None if it is checked."""
@@ -113,8 +114,13 @@ def adjacent_pairs(robot: Robot, with_geometry: Iterable[str]) -> set[Pair]:
 
 def compute_matrix(robot: Robot, samples: int = 10000, seed: int = 0,
                    default_values: Mapping[str, float] | None = None,
-                   search_paths: Any = ()) -> CollisionMatrix:
-    """Return the collision matrix of ``robot`` (see the module docstring)."""
+                   search_paths: Any = (), rates: bool = False) -> CollisionMatrix:
+    """
+    Return the collision matrix of ``robot`` (see the module docstring).
+
+    ``rates``: also count, over the ``samples`` states, how often each Default pair is in
+    contact (every state tested for those pairs: the costly part on a humanoid).
+    """
     if samples < 0:
         from urdfgenpy_ros.errors import ModelError
         raise ModelError(f'samples must be 0 or more, got {samples}')
@@ -136,12 +142,12 @@ def compute_matrix(robot: Robot, samples: int = 10000, seed: int = 0,
         disabled.update((key, Reason.ALWAYS) for key in always)
         if not always:
             break
-    rates = _never(shapes, ranges, generator, samples, candidates, disabled, seen)
+    counted = _never(shapes, ranges, generator, samples, candidates, disabled, seen, rates)
     for key in candidates:
         if key not in disabled and key not in seen:
             disabled[key] = Reason.NEVER
     return CollisionMatrix(dict(sorted(disabled.items())), links, samples, seed, rounds,
-                           rates)
+                           counted)
 
 
 def _open(candidates: list[Pair], disabled: Mapping[Pair, Reason]) -> list[Pair]:
@@ -174,9 +180,9 @@ def _first(states: States, key: Pair, indices: numpy.ndarray, which: numpy.ndarr
 
 def _never(shapes: ShapeSet, ranges: numpy.ndarray, generator: numpy.random.Generator,
            samples: int, candidates: list[Pair], disabled: Mapping[Pair, Reason],
-           seen: set[Pair]) -> dict[Pair, float]:
+           seen: set[Pair], rates: bool) -> dict[Pair, float]:
     """Test the open pairs not yet seen over ``samples`` states; count the Default pairs."""
-    defaults = [key for key in candidates if disabled.get(key) is Reason.DEFAULT]
+    defaults = [key for key in candidates if rates and disabled.get(key) is Reason.DEFAULT]
     hits = dict.fromkeys(defaults, 0)
     for start in range(0, samples, CHUNK):
         q = sampling.random_states(ranges, min(CHUNK, samples - start), generator)
@@ -185,4 +191,4 @@ def _never(shapes: ShapeSet, ranges: numpy.ndarray, generator: numpy.random.Gene
         seen.update(states.first_contacts(unseen))
         for key, count in states.counts(defaults).items():
             hits[key] += count
-    return {key: count / samples for key, count in hits.items()} if samples else {}
+    return {key: count / samples for key, count in hits.items()} if samples and rates else {}

@@ -74,6 +74,8 @@ class States:
         self.world = world
         self.centers = centers
         self.count = world.shape[0]
+        self._placed: dict[tuple[int, int], Any] = {}  # (state, shape): coal's transform
+        self._pairs: dict[Pair, list[tuple[int, int]]] = {}
 
     def near(self, pairs: Sequence[Pair]) -> list[tuple[numpy.ndarray, numpy.ndarray]]:
         """
@@ -109,18 +111,26 @@ class States:
     def touch(self, pair: Pair, state: int, which: numpy.ndarray) -> bool:
         """Return whether the links of ``pair`` touch in ``state`` (``which`` shape pairs)."""
         coal, shapes = self.shapes.coal, self.shapes
-        world = self.world[state]
+        pairs = self._pairs.get(pair)
+        if pairs is None:
+            pairs = self._pairs[pair] = [(a, b) for a in shapes.of_link[pair[0]]
+                                         for b in shapes.of_link[pair[1]]]
         result = coal.CollisionResult()
-        pairs = [(a, b) for a in shapes.of_link[pair[0]] for b in shapes.of_link[pair[1]]]
         for (a, b), maybe in zip(pairs, which):
-            if not maybe:
-                continue
-            result.clear()
-            if coal.collide(shapes.geometry[a], _transform(coal, world[a]),
-                            shapes.geometry[b], _transform(coal, world[b]),
-                            shapes.request, result):
+            if maybe and coal.collide(shapes.geometry[a], self._place(state, a),
+                                      shapes.geometry[b], self._place(state, b),
+                                      shapes.request, result):
                 return True
         return False
+
+    def _place(self, state: int, shape: int) -> Any:
+        """Return coal's transform of ``shape`` in ``state``, made once."""
+        placed = self._placed.get((state, shape))
+        if placed is None:
+            matrix = self.world[state, shape]
+            placed = self._placed[(state, shape)] = self.shapes.coal.Transform3s(
+                matrix[:3, :3], matrix[:3, 3])
+        return placed
 
     def first_contacts(self, pairs: Sequence[Pair]) -> dict[Pair, int]:
         """Return each pair that touches in some state, with the first such state."""
@@ -136,7 +146,3 @@ class States:
         """Return in how many states each pair touches."""
         return {pair: sum(self.touch(pair, int(state), mask) for state, mask in zip(*near))
                 for pair, near in zip(pairs, self.near(pairs))}
-
-
-def _transform(coal: Any, matrix: numpy.ndarray) -> Any:
-    return coal.Transform3s(matrix[:3, :3], matrix[:3, 3])

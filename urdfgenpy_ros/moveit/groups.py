@@ -16,7 +16,8 @@
 Planning groups found from the tree: a chain per limb, a gripper per end effector.
 
 A **gripper** starts at a link where two or more branches carry movable joints (fingers)
-and below which at most two joints move on their own (mimic joints follow); or at the
+and below which at most two joints move on their own (mimic joints follow) and none is
+continuous (wheels are not fingers); or at the
 parent link of the one joint moving below it, when other joints mimic that joint and
 nothing else moves below it. Its
 group holds the links below that start; its mimic joints are passive.
@@ -35,6 +36,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.errors import ModelError
+from urdfgenpy_ros.joint import JointType
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -70,8 +72,11 @@ class _Tree:
         self.leaders = {joint.mimic.joint for joint in robot.joints if joint.mimic}
         self.free: dict[str, int] = {}  # joints moving on their own at or below each link
         self.moving: dict[str, int] = {}  # movable joints (mimic ones too) below each link
+        self.turning: dict[str, bool] = {}  # a continuous joint at or below each link
         for joint, link in reversed(list(robot.walk())):
             below = self.children[link.name]
+            self.turning[link.name] = any(self.turning[j.child] or j.type is JointType.CONTINUOUS
+                                          for j in below)
             self.free[link.name] = sum(self.free[j.child] + _free(j) for j in below)
             self.moving[link.name] = sum(self.moving[j.child] + j.type.is_movable
                                          for j in below)
@@ -82,7 +87,8 @@ class _Tree:
                 if joint.type.is_movable or self.moving[joint.child]]
 
     def is_gripper(self, link: str) -> bool:
-        if not 1 <= self.free[link] <= 2:
+        """Return whether fingers start at ``link`` (wheels, which turn on, do not count)."""
+        if not 1 <= self.free[link] <= 2 or self.turning[link]:
             return False
         if len(self.moving_branches(link)) >= 2:
             return True

@@ -102,9 +102,10 @@ class ShapeReader:
             path = self.resolver.resolve(mesh.filename, self.folder)
         except UrdfgenpyError as error:  # its reason, and the fix in this feature's words
             reason = str(error).rsplit(' (', 1)[0] if str(error).endswith(')') else str(error)
-            raise UrdfgenpyError(f'link {link!r}: collision mesh {reason} (give the folder '
-                                 'holding its package: --package-path, or search_paths '
-                                 'in Python)') from None
+            fix = ('give the folder holding its package: --package-path, or search_paths '
+                   'in Python') if mesh.filename.startswith('package://') else \
+                'restore the file, or correct the filename'
+            raise UrdfgenpyError(f'link {link!r}: collision mesh {reason} ({fix})') from None
         key = (path, mesh.scale)
         if key not in self.meshes:
             scale = numpy.array(mesh.scale if mesh.scale is not None else (1.0, 1.0, 1.0))

@@ -112,14 +112,16 @@ def state_values(states: list[GroupState], name: str) -> dict[str, float]:
 def build_srdf(robot: Robot, samples: int = 10000, seed: int = 0,
                groups: Mapping[str, Any] | list[str] | None = None,
                default_state: str | Mapping[str, float] | None = None,
-               virtual_joint: str | None = 'fixed', search_paths: Any = ()) -> Srdf:
+               virtual_joint: str | None = 'fixed', search_paths: Any = (),
+               rates: bool = False) -> Srdf:
     """
     Return the SRDF of ``robot`` with the matrix MoveIt's Setup Assistant would compute.
 
     ``groups``: chain groups to name or override, ``{'arm': ('base_link', 'tool0')}`` or
     ``['arm=base_link:tool0']``. ``default_state``: a group state's name (``home``) or
     joint values, for the "Default" step instead of zeros. ``virtual_joint``: ``fixed``,
-    ``floating`` or ``planar`` to the world, or None for none.
+    ``floating`` or ``planar`` to the world, or None for none. ``rates``: count each
+    Default pair's collision rate over the samples (``Srdf.matrix.rates``).
     """
     if virtual_joint is not None and virtual_joint not in VIRTUAL_JOINTS:
         raise ModelError(f'virtual_joint {virtual_joint!r}: one of {", ".join(VIRTUAL_JOINTS)}'
@@ -129,7 +131,7 @@ def build_srdf(robot: Robot, samples: int = 10000, seed: int = 0,
     states = group_states(robot, found, initial_values(robot))
     values = state_values(states, default_state) if isinstance(default_state, str) \
         else default_state
-    matrix = compute_matrix(robot, samples, seed, values, search_paths)
+    matrix = compute_matrix(robot, samples, seed, values, search_paths, rates)
     text = write_text(robot, found, states, effectors, matrix, virtual_joint)
     return Srdf(text, found, states, effectors, matrix)
 
