@@ -25,6 +25,7 @@ from __future__ import annotations
 
 from importlib import metadata
 import os
+import sys
 from pathlib import Path
 
 from helpers import require_module
@@ -204,3 +205,16 @@ def test_groups_of_panda_and_wheels_are_not_fingers() -> None:
         '<axis xyz="0 1 0"/></joint><joint name="r" type="continuous">'
         '<parent link="base_link"/><child link="right"/><axis xyz="0 1 0"/></joint></robot>')
     assert find_groups(rover) == ([], [])  # two wheels are not a gripper
+
+
+def test_without_coal_one_line_names_the_extra(tmp_path: Path,
+                                               monkeypatch: pytest.MonkeyPatch) -> None:
+    from click.testing import CliRunner
+    from urdfgenpy_ros.cli import main
+    monkeypatch.setitem(sys.modules, 'coal', None)  # import coal raises ImportError
+    result = CliRunner().invoke(main, ['srdf', str(_urdf('panda')), '-o',
+                                       str(tmp_path / 'x.srdf'), '-p', str(_share())])
+    assert result.exit_code == 2
+    assert result.output.strip().splitlines() == [
+        "urdfgenpy: The collision matrix needs the Python package 'coal': "
+        "pip install 'urdfgenpy_ros[moveit]'"]
