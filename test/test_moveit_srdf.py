@@ -25,8 +25,8 @@ from __future__ import annotations
 
 from importlib import metadata
 import os
-import sys
 from pathlib import Path
+import sys
 
 from helpers import require_module
 from lxml import etree
