@@ -44,6 +44,8 @@ setup(
         # check --engines mujoco: compile with MuJoCo; trimesh tells convex meshes
         'engines': ['mujoco', 'trimesh', 'numpy'],
         'render': ['vtk>=9.3', 'trimesh', 'numpy', 'pycollada'],
+        # urdfgenpy srdf / robot.to_srdf: the collision matrix on coal (pinocchio's FCL)
+        'moveit': ['coal', 'numpy'],
         'view': ['viser>=1.0', 'trimesh', 'numpy', 'pycollada', 'graphviz', 'vtk>=9.3'],
         'ros': [
             'ros-jazzy-rclpy[fastrtps]', 'ros-jazzy-std-msgs', 'ros-jazzy-sensor-msgs',
@@ -59,7 +61,7 @@ setup(
             'cmeel-urdfdom==6.0.0',  # urdfdom 6: check_urdf and urdf_to_graphviz, URDF 1.1/1.2
             # pinocchio judges kinematics, Jacobians, gravity torques, reshaping and MJCF FK;
             # Talos, Solo-12, Panda and UR5 files
-            'pin', 'example-robot-data',
+            'pin', 'example-robot-data', 'coal',
             # DH tables are judged by robotics-toolbox's DHRobot and models (it brings rtb-data)
             'roboticstoolbox-python',
             'pre-commit',  # the documented hook, run by the real pre-commit

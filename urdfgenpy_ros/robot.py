@@ -319,6 +319,19 @@ class Robot(RobotModel):
         from urdfgenpy_ros.dynamics import gravity_torques
         return gravity_torques(self, q, gravity, payload, strict)
 
+    # ---- MoveIt (urdfgenpy_ros.moveit; coal, the moveit extra) -----------------------
+
+    def to_srdf(self, path: str | PathLike[str] | None = None, **options: Any) -> str:
+        """
+        Return MoveIt's SRDF, its collision matrix computed as the Setup Assistant does.
+
+        Options: ``samples`` (10000), ``seed`` (0), ``groups`` (``{'arm': (base, tip)}``),
+        ``default_state`` (a group state's name), ``virtual_joint``, ``search_paths``
+        (see :func:`urdfgenpy_ros.moveit.srdf.build_srdf`). Also written to ``path``.
+        """
+        from urdfgenpy_ros.moveit.srdf import write_srdf
+        return write_srdf(self, path, **options).text
+
     # ---- MuJoCo --------------------------------------------------------------------
 
     def to_mjcf(self, path: str | PathLike[str] | None = None, **options: Any) -> str:

@@ -20,6 +20,7 @@ from dataclasses import dataclass, replace
 import math
 import os
 from pathlib import Path
+from typing import Any, Sequence
 
 import click
 
@@ -47,6 +48,7 @@ class _Options:
     review: ReviewOptions
     fix: bool
     dry_run: bool
+    srdf: Path | None = None
 
 
 def _engines(ctx: click.Context, param: click.Parameter, value: str | None
@@ -139,12 +141,17 @@ def _margin(ctx: click.Context, param: click.Parameter, value: float | None
               metavar='FILE',
               help='With --statics: an MJCF file made from the robot, whose joint and '
                    'actuator force limits T802 compares too (needs mujoco).')
+@click.option('--srdf', type=click.Path(exists=True, dir_okay=False, path_type=Path),
+              metavar='FILE',
+              help='Check a MoveIt SRDF against the robot: names it lacks, chains, states '
+                   'outside the limits, pairs disabled as never colliding that collide '
+                   '(K901-K905; needs coal, the moveit extra).')
 @input_options
 def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict: bool,
           no_meshes: bool, ignored: frozenset[str], engines: tuple[str, ...], repair: bool,
           dry_run: bool, limit_defaults: dict[str, float], target: str, statics: bool,
           payload: dict[str, object] | None, statics_margin: float | None,
-          mjcf: Path | None, package_paths: tuple[Path, ...]) -> None:
+          mjcf: Path | None, srdf: Path | None, package_paths: tuple[Path, ...]) -> None:
     """
     Validate URDF and Xacro FILEs (Xacro arguments as name:=value).
 
@@ -169,7 +176,7 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
         search_paths=package_paths, check_meshes=not no_meshes, target=target,
         engines=engines, ignore=ignored, statics=statics, payload=payload,
         statics_margin=1.0 if statics_margin is None else statics_margin, mjcf=mjcf,
-        limit_defaults=limit_defaults, strict=strict), repair, dry_run)
+        limit_defaults=limit_defaults, strict=strict), repair, dry_run, srdf)
     text = output == 'text'
     done = 'to fix' if dry_run else 'fixed'
     lines: list[str] = []
@@ -233,9 +240,14 @@ def _review(robot: Robot, path: Path, options: ReviewOptions, report: FileReport
         return review(robot, replace(options, statics=False))
 
 
-def _render(report: FileReport, found: Review) -> None:
+def _render(report: FileReport, found: Review, srdf: Path | None = None,
+            robot: Robot | None = None, search_paths: Sequence[Any] = ()) -> None:
     report.findings = found.findings
     report.suppressed = found.suppressed
+    if srdf is not None and robot is not None:  # findings at the SRDF's lines
+        from urdfgenpy_ros.moveit.srdf_check import check_srdf
+        report.findings = [*report.findings, *check_srdf(robot, srdf,
+                                                         search_paths=search_paths)]
 
 
 def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> FileReport:
@@ -249,7 +261,7 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
                          f'comment names {word!r}, which is not a finding code: it silences '
                          'nothing (codes look like I205)'
                          for line, word in found.unknown_suppressions]
-        _render(report, found)
+        _render(report, found, options.srdf, robot, options.review.search_paths)
         if not options.fix:
             return report
         if robot.source_map is not None:  # Xacro: its values are edited where written

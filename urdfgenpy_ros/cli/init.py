@@ -28,4 +28,7 @@ from urdfgenpy_ros.scaffold.command import main as scaffold_main
 @click.argument('arguments', nargs=-1, type=click.UNPROCESSED)
 def init(arguments: tuple[str, ...]) -> None:
     """Create a ROS 2 description package NAME (run 'urdfgenpy init --help' for options)."""
+    if '--moveit' in arguments:  # a moveit_config package instead (urdfgenpy init --moveit -h)
+        from urdfgenpy_ros.scaffold.moveit_package import main as moveit_main
+        sys.exit(moveit_main([item for item in arguments if item != '--moveit']))
     sys.exit(scaffold_main(list(arguments)))

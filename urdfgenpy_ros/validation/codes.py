@@ -118,6 +118,12 @@ CODES: dict[str, tuple[Severity, str]] = {
     'M807': (W, 'element or attribute with no MJCF counterpart'),
     'M808': (W, "<mujoco> block attribute MuJoCo's schema refuses"),
     'M809': (W, 'geometry not written to MJCF (mesh not found or unreadable, size zero)'),
+    # MoveIt SRDF against its robot (moveit/srdf_check.py; check --srdf)
+    'K901': (E, 'SRDF names a link, joint or group the robot does not have'),
+    'K902': (E, 'SRDF chain group whose base is not above its tip'),
+    'K903': (E, 'SRDF group state value outside the joint limits'),
+    'K904': (W, 'SRDF pair disabled as never colliding collides in random states'),
+    'K905': (W, 'SRDF disabled pair names a link without collision geometry'),
     'G601': (W, "SDFormat's URDF conversion lumps the link into its parent (fixed joint)"),
     'G602': (W, "SDFormat's URDF conversion drops the link (and everything below it)"),
 }
