@@ -24,6 +24,7 @@ link, collision, visual and joint, on every robot the tests read.
 from __future__ import annotations
 
 from collections import Counter
+import json
 from pathlib import Path
 import subprocess
 import warnings
@@ -199,3 +200,26 @@ def test_gazebo_settings_match_libsdformat_on_every_robot(
         pytest.skip(str(error))
     assert ours is not None
     _compare(gazebo_settings(reference), gazebo_settings(ours))
+
+
+def test_check_engines_gazebo_names_what_the_conversion_drops(printed) -> None:
+    """G603 for each dropped element, G604 for a script: and libsdformat has none of them."""
+    result = CliRunner().invoke(main, ['check', '--engines', 'gazebo', '--format', 'json',
+                                       str(SETTINGS)])
+    findings = [f for f in json.loads(result.output)['files'][0]['findings']
+                if f['code'] in ('G603', 'G604')]
+    said = {(f['code'], f['element']) for f in findings}
+    assert said == {
+        ('G603', "<gazebo reference='base_link'> <static>"),
+        ('G603', "<gazebo reference='wheel'> <stopCfm>"),
+        ('G603', "<gazebo reference='wheel_joint'> <mu1>"),
+        ('G603', "<gazebo reference='no_such_link'> <mu1>"),
+        ('G603', '<gazebo> <mu2>'),
+        ('G603', "<gazebo reference='bumper_joint'> <provideFeedback>"),
+        ('G604', "<gazebo reference='wheel'> <material>"),
+    }
+    # The values the dropped elements carry appear nowhere in libsdformat's conversion.
+    theirs = printed(SETTINGS)
+    for dropped in ('<mu2>0.7</mu2>', '<mu>0.2</mu>', '<mu>0.5</mu>', '<static>true'):
+        assert dropped not in theirs
+    assert '<name>Gazebo/Black</name>' in theirs  # the script is kept, for no renderer

@@ -204,12 +204,15 @@ class Loss(NamedTuple):
     reference: str | None
     tag: str
     why: str
+    lost: bool = True  # else kept, but for nothing (a material script)
 
     def __str__(self) -> str:
         """Return the one line that says it."""
         block = (f'<gazebo reference={self.reference!r}>' if self.reference is not None
                  else '<gazebo>')
-        return f'{self.location}: warning: {block} <{self.tag}>: {self.why}'
+        lost = (': it is not in the SDF' if self.lost else
+                ' (give the visual a <material> colour, which Gazebo Sim renders)')
+        return f'{self.location}: warning: {block} <{self.tag}>: {self.why}{lost}'
 
 
 def _link_losses(robot: Robot, losses: list[Loss]) -> None:
@@ -221,7 +224,7 @@ def _link_losses(robot: Robot, losses: list[Loss]) -> None:
                 why = _why_lost(link, block, child)
                 if why is not None:
                     losses.append(Loss(_location(block, child), block.reference, child.tag,
-                                       why + ': it is not in the SDF'))
+                                       why))
 
 
 def _why_lost(link: Link, block: Extension, child: Any) -> str | None:
@@ -252,8 +255,7 @@ def _other_losses(robot: Robot, gone: list[str], losses: list[Loss]) -> None:
                 on = setting.on if setting is not None else SHAPE_BLOCKS.get(child.tag)
                 if on is not None and on != 'joint':
                     losses.append(Loss(_location(block, child), block.reference, child.tag,
-                                       f'a {on} setting, which a joint block does not set: '
-                                       'it is not in the SDF'))
+                                       f'a {on} setting, which a joint block does not set'))
     for block in robot.extensions:
         if block.tag != 'gazebo':
             continue
@@ -269,8 +271,7 @@ def _other_losses(robot: Robot, gone: list[str], losses: list[Loss]) -> None:
             else:
                 continue
             if child.tag not in CONTROLS:
-                losses.append(Loss(_location(block, child), block.reference, child.tag,
-                                   why + ': it is not in the SDF'))
+                losses.append(Loss(_location(block, child), block.reference, child.tag, why))
 
 
 def gazebo_losses(merged: Robot, gone: list[str]) -> list[Loss]:
@@ -297,7 +298,7 @@ def script_notes(merged: Robot) -> list[Loss]:
             for child in children(block):
                 if child.tag == 'material':
                     notes.append(Loss(_location(block, child), block.reference, child.tag, (
-                        f'the material script {text_of(child)!r} is written as libsdformat '
-                        'writes it, but Gazebo Sim renders no Gazebo-classic script: give '
-                        'the visual a <material> colour')))
+                        f'the material script {text_of(child)!r} stays in the SDF, as '
+                        'libsdformat keeps it, but Gazebo Sim renders no Gazebo-classic '
+                        'script'), False))
     return notes

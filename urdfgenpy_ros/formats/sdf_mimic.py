@@ -68,7 +68,10 @@ def follows(robot: Robot, original: Robot | None = None) -> tuple[dict[str, Foll
     ``original`` is the robot before lumping, to say which leader was merged away.
     """
     resolved: dict[str, Follow] = {}
-    notes: list[str] = []
+    notes = [f'joint {joint.name!r} is a fixed joint merged away: its <mimic> of '
+             f'{joint.mimic.joint!r} is not written' for joint in
+             (original.joints if original is not None else ())
+             if joint.mimic is not None and not robot.has_joint(joint.name)]
     for joint in robot.joints:
         if joint.mimic is None:
             continue
