@@ -30,7 +30,7 @@ import subprocess
 import warnings
 
 from click.testing import CliRunner
-from helpers import build_sdf_checker, CORPUS, corpus_cases, FIXTURES
+from helpers import build_sdf_checker, CORPUS, corpus_cases, FIXTURES, parse_xml
 from lxml import etree
 import pytest
 
@@ -86,12 +86,20 @@ def _leaves(element, paths) -> tuple:
     return tuple(sorted((leaf for leaf in found if leaf not in _DEFAULTS), key=str))
 
 
+def _tag(element) -> str:
+    """Return a tag as written: ``sensor:contact`` (libsdformat prints the prefix alone)."""
+    tag = str(element.tag)
+    if tag.startswith('{') and element.prefix:
+        return f"{element.prefix}:{tag.split('}', 1)[1]}"
+    return tag
+
+
 def gazebo_settings(text: str) -> dict:
     """Return what <gazebo> blocks can set, per link, shape (as a multiset) and joint."""
-    model = etree.fromstring(text.encode()).find('model')
+    model = parse_xml(text.encode()).find('model')  # pr2's <sensor:contact>: a prefix
     found: dict = {'static': _leaves(model, ('static',))}
     for link in model.findall('link'):
-        copied = Counter(child.tag for child in link if child.tag not in _LINK_PLAIN
+        copied = Counter(_tag(child) for child in link if child.tag not in _LINK_PLAIN
                          and child.tag not in _LINK)
         found[f"link {link.get('name')}"] = (_leaves(link, _LINK), sorted(copied.items()))
         for kind, paths in _SHAPE.items():

@@ -16,9 +16,9 @@
 Mimic joints in SDF 1.11, judged by drake's libsdformat (it reads SDFormat 1.11 and 1.12).
 
 drake's parser refuses an element the SDFormat schema does not know (a misspelt
-``<multipler>``) and a ``<mimic>`` whose leader is no joint of the model. The URDF's mimic
-factors are read from the file with lxml, not with our reader; Debian's libsdformat 12 (SDFormat 1.9) reads the 1.9
-output, which has no mimic.
+``<multipler>``) and a ``<mimic>`` whose leader is no joint of the model. The URDF's
+mimic factors are read from the file with lxml, not with our reader; Debian's libsdformat
+12 (SDFormat 1.9) reads the 1.9 output, which has no mimic.
 """
 
 from __future__ import annotations

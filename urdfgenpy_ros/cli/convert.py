@@ -92,8 +92,9 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     if kind != 'mjcf' and mjcf.given():
         raise UrdfgenpyError(f"{target}: {', '.join(mjcf.given())} apply to MJCF output "
                              '(.xml, .mjcf) only: drop them or write .xml')
-    for given, option in ((lump_fixed, '--lump-fixed'), (sdf_version, '--sdf-version')):
-        if given and kind != 'sdf':
+    for sdf_option, option in ((lump_fixed, '--lump-fixed'),
+                               (sdf_version is not None, '--sdf-version')):
+        if sdf_option and kind != 'sdf':
             raise UrdfgenpyError(f'{target}: {option} applies to .sdf output only: drop it '
                                  'or write .sdf')
     if urdf_version is not None and kind not in ('urdf', 'xacro'):

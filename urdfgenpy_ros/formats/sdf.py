@@ -37,10 +37,10 @@ from urdfgenpy_ros.caller import warn_caller
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import robot_name, write_text
-from urdfgenpy_ros.formats.sdf_frames import Merged, merge_for_sdf
+from urdfgenpy_ros.formats.sdf_frames import merge_for_sdf, Merged
 from urdfgenpy_ros.formats.sdf_gazebo import (
     apply_blocks, apply_shape_blocks, gazebo_losses, script_notes)
-from urdfgenpy_ros.formats.sdf_mimic import Follow, follows, MIMIC_VERSION, mimic_notes
+from urdfgenpy_ros.formats.sdf_mimic import Follow, follows, mimic_notes, MIMIC_VERSION
 from urdfgenpy_ros.formats.sdf_mimic import sdf_version
 from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Geometry, Mesh, Origin, Sphere
 from urdfgenpy_ros.joint import Joint, JointType

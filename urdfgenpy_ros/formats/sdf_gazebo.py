@@ -26,8 +26,8 @@ every element the SDF does not carry, and why.
 
 from __future__ import annotations
 
-import copy
 from collections.abc import Callable, Iterator
+import copy
 from typing import Any, NamedTuple, TYPE_CHECKING
 
 from lxml import etree
@@ -239,11 +239,11 @@ def _why_lost(link: Link, block: Extension, child: Any) -> str | None:
         return None
     if block.reference != link.name:
         return (f'its link is merged into {link.name!r} (fixed joint) and none of its '
-                f"{on}s keeps a name libsdformat gives it to (name them after the link, or "
+                f'{on}s keeps a name libsdformat gives it to (name them after the link, or '
                 'keep the joint with <preserveFixedJoint>)')
     if not shapes:
         return f'link {link.name!r} has no <{on}> to take it'
-    return (f"libsdformat gives it to no {on} of {link.name!r}: their names do not start "
+    return (f'libsdformat gives it to no {on} of {link.name!r}: their names do not start '
             "with the link's (rename them)")
 
 
