@@ -31,7 +31,6 @@ import warnings
 
 from click.testing import CliRunner
 from helpers import build_sdf_checker, CORPUS, corpus_cases, FIXTURES, parse_xml
-from lxml import etree
 import pytest
 
 from urdfgenpy_ros import Robot

@@ -129,8 +129,8 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     rebase_meshes(robot, source.parent, target.parent)  # relative meshes still found
     if kind == 'sdf':
         _write_sdf(robot, target, lump_fixed, sdf_version)
-    else:
-        robot.save(target)
+        return
+    robot.save(target)
     click.echo(f"wrote {target}: {counted(len(robot.links), 'link')}, "
                f"{counted(len(robot.joints), 'joint')}")
 
@@ -143,6 +143,10 @@ def _write_sdf(robot: Robot, target: Path, lump_fixed: bool, version: str | None
     for warning in caught:
         line = str(warning.message)
         click.echo(line if ': warning: ' in line else f'warning: {line}', err=True)
+    text = target.read_text(encoding='utf-8')  # what the SDF holds, counted
+    click.echo(f"wrote {target}: {counted(text.count('<link '), 'link')}, "
+               f"{counted(text.count('<joint '), 'joint')}, "
+               f"{counted(text.count('<frame '), 'frame')}")
 
 
 def _refuse_broken_tree(robot: Robot, target: Path) -> None:
