@@ -280,13 +280,6 @@ def _check_ends(robot: Robot) -> None:
                              'two prismatic joints and a revolute one)')
 
 
-def sdf_notes(robot: Robot, lump_fixed: bool = False, version: str | None = None
-              ) -> list[str]:
-    """Return one line per thing the SDF of ``robot`` does not carry as the URDF has it."""
-    merged, frames = merge_for_sdf(robot, lump_fixed)
-    return _notes(robot, merged, frames, sdf_version(robot, version))
-
-
 def _notes(robot: Robot, merged: Robot, frames: list[Merged], version: str) -> list[str]:
     notes = [str(loss) for loss in (*gazebo_losses(merged, [f.joint for f in frames]),
                                     *script_notes(merged))]

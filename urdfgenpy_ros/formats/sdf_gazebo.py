@@ -131,7 +131,9 @@ def _apply(target: Any, child: Any, setting: Setting, block: Extension) -> None:
 def _location(block: Extension, child: Any) -> SourceLocation:
     source = block.source if isinstance(block.source, SourceLocation) else SourceLocation()
     line = child.sourceline if source.line is not None else None
-    return SourceLocation(source.file, line, None, source.path)
+    where = (f"/robot/gazebo[@reference='{block.reference}']" if block.reference is not None
+             else '/robot/gazebo')
+    return SourceLocation(source.file, line, None, source.path or f'{where}/{child.tag}')
 
 
 def apply_blocks(target: Any, blocks: list[Extension], on: str, own: str | None) -> None:
@@ -169,7 +171,7 @@ def takes(link: str, shape: str | None, kind: str, reference: str | None) -> boo
     name = f'{shape or link}_{kind}'
     if not name.startswith(link):
         name = f'{link}{LUMP}{name}'
-    if reference == link:
+    if reference is None or reference == link:  # a block added to the link in Python
         return LUMP not in name
     return f'{LUMP}{reference}_{kind}' in name
 
@@ -237,7 +239,7 @@ def _why_lost(link: Link, block: Extension, child: Any) -> str | None:
     shapes = link.collisions if on == 'collision' else link.visuals
     if any(takes(link.name, shape.name, on, block.reference) for shape in shapes):
         return None
-    if block.reference != link.name:
+    if block.reference not in (None, link.name):
         return (f'its link is merged into {link.name!r} (fixed joint) and none of its '
                 f'{on}s keeps a name libsdformat gives it to (name them after the link, or '
                 'keep the joint with <preserveFixedJoint>)')
@@ -293,7 +295,7 @@ def script_notes(merged: Robot) -> list[Loss]:
     notes = []
     for link in merged.links:
         for block in link.extensions:
-            if block.reference != link.name or not link.visuals:
+            if block.reference not in (None, link.name) or not link.visuals:
                 continue
             for child in children(block):
                 if child.tag == 'material':
