@@ -99,6 +99,7 @@ def test_counts_of_one_are_singular(tmp_path: Path) -> None:
     result = CliRunner().invoke(main, ['convert', str(tmp_path / 'pan.urdf'),
                                        str(tmp_path / 'pan.sdf')])
     assert result.exit_code == 0, result.output
-    assert result.stdout.rstrip().endswith(': 2 links, 1 joint')
+    # the massless head on a fixed joint is an SDF frame, with one for its joint
+    assert result.stdout.rstrip().endswith(': 1 link, 0 joints, 2 frames')
     tree = CliRunner().invoke(main, ['tree', str(tmp_path / 'pan.urdf')])
     assert '2 links, 1 joint' in tree.stdout and '1 joints' not in tree.stdout

@@ -54,7 +54,18 @@ def check_sdf(tmp_path_factory: pytest.TempPathFactory):
             elif kind == 'sensor':
                 sensors.add((name, rest[0], rest[1]))
         return result.returncode, poses, inertials, sensors, result.stderr
+    run.binary = binary
     return run
+
+
+def sdf_frames(check_sdf, path: Path) -> dict[str, list[float]]:
+    """Return each ``<frame>`` libsdformat reads in an SDF: its pose in the model frame."""
+    result = subprocess.run([str(check_sdf.binary), str(path)], capture_output=True,
+                            text=True, timeout=60)
+    assert result.returncode == 0, result.stderr
+    return {name: [float(value) for value in rest[:7]]
+            for kind, name, *rest in (line.split() for line in result.stdout.splitlines())
+            if kind == 'frame'}
 
 
 def _sensor_robot() -> Robot:
@@ -150,10 +161,14 @@ def test_sdf_loads_in_sdformat_and_link_poses_match_the_urdf(
     yourdfpy = require_module('yourdfpy')
     model = yourdfpy.URDF.load(str(urdf), load_meshes=False, build_scene_graph=True)
     root = robot.root.name
-    # URDF's world link is the world frame, not a link, in SDF (as in SDFormat's conversion)
-    assert set(poses) == {link.name for link in robot.links} - {'world'}
-    for link, pose in poses.items():
-        assert _same_pose(pose, _yourdfpy_pose(model, link, root)), link
+    # URDF's world link is the world frame, not a link, in SDF (as in SDFormat's conversion);
+    # a link without mass on a fixed joint is a frame, as libsdformat's conversion leaves it
+    frames = sdf_frames(check_sdf, sdf)  # with one for the fixed joint, as libsdformat's
+    assert set(poses) | set(frames) - {joint.name for joint in robot.joints} == {
+        link.name for link in robot.links} - {'world'}
+    for name, pose in (*poses.items(), *frames.items()):
+        link = name if robot.has_link(name) else robot.get_joint(name).child
+        assert _same_pose(pose, _yourdfpy_pose(model, link, root)), name
 
 
 # (libsdformat's own conversion refuses the DH skeletons: their root link has no mass.)

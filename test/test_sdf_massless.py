@@ -112,7 +112,7 @@ TOOL = f"""<?xml version="1.0"?>
 
 
 def test_each_link_sdf_gives_its_default_kilogram_is_said(check_sdf, tmp_path: Path) -> None:
-    """A massless tool frame weighs 1 kg in the SDF: convert says so, for each such link."""
+    """A massless root weighs 1 kg in the SDF: convert says so; a massless tool is a frame."""
     source = tmp_path / 'tcp.urdf'
     source.write_text(TOOL)
     result = CliRunner().invoke(main, ['convert', str(source), str(tmp_path / 'tcp.sdf')])
@@ -123,8 +123,65 @@ def test_each_link_sdf_gives_its_default_kilogram_is_said(check_sdf, tmp_path: P
     assert code == 0
     defaulted = {name for name, inertial in ours.items()
                  if inertial == pytest.approx((1, 0, 0, 0, 1, 1, 1))}
-    assert set(said) == defaulted == {'base_link', 'tool0'}  # what libsdformat reads
-    assert said['tool0'].startswith(f'{source}:7:') and '--lump-fixed' in said['tool0']
-    lumped = CliRunner().invoke(main, ['convert', '--lump-fixed', str(source),
-                                       str(tmp_path / 'lumped.sdf')])
-    assert lumped.exit_code == 0 and "'tool0'" not in lumped.stderr
+    assert set(said) == defaulted == {'base_link'}  # what libsdformat reads
+    frames = test_sdf.sdf_frames(check_sdf, tmp_path / 'tcp.sdf')
+    assert set(frames) == {'tcp_joint', 'tool0'} and 'tool0' not in ours
+    assert frames['tool0'][:3] == pytest.approx([0, 0, 0.2])
+
+
+def _box(size: str = '0.1 0.1 0.1') -> str:
+    return f'<visual><geometry><box size="{size}"/></geometry></visual>'
+
+
+# A mobile base as Panther describes itself: a heavy body, wheels, and massless links on
+# fixed joints (a cover with a visual, sensors' frames), a camera whose model gives a mass
+# and no tensor, and a massless frame below a massless frame.
+PANTHER_LIKE = f"""<?xml version="1.0"?>
+<robot name="base">
+  <link name="base_link"><inertial><origin xyz="0 0 0.1"/><mass value="40"/>
+    <inertia ixx="1" ixy="0" ixz="0" iyy="2" iyz="0" izz="2.5"/></inertial>{_box('0.8 0.6 0.2')}
+  </link>
+  <link name="cover_link">{_box('0.8 0.6 0.01')}</link>
+  <joint name="cover_joint" type="fixed"><parent link="base_link"/><child link="cover_link"/>
+    <origin xyz="0 0 0.2"/></joint>
+  <link name="imu_link"/>
+  <joint name="imu_joint" type="fixed"><parent link="cover_link"/><child link="imu_link"/>
+    <origin xyz="0.1 0 0.01" rpy="0 0 1.5707963267948966"/></joint>
+  <link name="imu_frame"/>
+  <joint name="imu_frame_joint" type="fixed"><parent link="imu_link"/>
+    <child link="imu_frame"/><origin xyz="0 0.02 0"/></joint>
+  <link name="camera_link"><inertial><origin xyz="0.01 0 0.02"/><mass value="0.072"/>
+    </inertial>{_box('0.02 0.09 0.025')}</link>
+  <joint name="camera_joint" type="fixed"><parent link="base_link"/>
+    <child link="camera_link"/><origin xyz="0.4 0 0.15" rpy="0 0.3 0"/></joint>
+  <link name="wheel"><inertial><mass value="3"/>{TENSOR}</inertial>{_box()}</link>
+  <joint name="wheel_joint" type="continuous"><parent link="base_link"/>
+    <child link="wheel"/><origin xyz="0.3 0.35 -0.25"/><axis xyz="0 1 0"/></joint>
+</robot>
+"""
+
+
+@pytest.mark.parametrize('lump', [False, True], ids=['links', 'lump-fixed'])
+def test_massless_fixed_links_are_frames_and_weigh_nothing(
+        check_sdf, tmp_path: Path, lump: bool) -> None:
+    source = tmp_path / 'base.urdf'
+    source.write_text(PANTHER_LIKE)
+    code, _, theirs, _, errors = check_sdf(source)  # libsdformat's own URDF conversion
+    assert code == 0, errors
+    options = ['--lump-fixed'] if lump else []
+    result = CliRunner().invoke(main, ['convert', *options, str(source),
+                                       str(tmp_path / 'base.sdf')])
+    assert result.exit_code == 0, result.output
+    code, _, ours, _, errors = check_sdf(tmp_path / 'base.sdf')
+    assert code == 0, errors
+    total = sum(inertial[0] for inertial in ours.values())
+    assert total == pytest.approx(sum(inertial[0] for inertial in theirs.values()))
+    assert total == pytest.approx(43.072)
+    frames = test_sdf.sdf_frames(check_sdf, tmp_path / 'base.sdf')
+    massless = {'cover_link', 'imu_link', 'imu_frame'}
+    assert massless <= set(frames) and not massless & set(ours)
+    if lump:  # the camera's mass and centre of mass, merged into the base as libsdformat does
+        assert 'camera_link' in frames and set(ours) == set(theirs) == {'base_link', 'wheel'}
+        assert ours['base_link'] == pytest.approx(theirs['base_link'], rel=1e-9, abs=1e-12)
+    else:
+        assert ours['camera_link'][:4] == pytest.approx([0.072, 0.01, 0, 0.02])

@@ -147,15 +147,17 @@ class Robot(RobotModel):
             return xacro.write_macro_xacro(self, path)
         return xacro.write_xacro(self, path)
 
-    def to_sdf(self, path: str | PathLike[str] | None = None, lump_fixed: bool = False) -> str:
+    def to_sdf(self, path: str | PathLike[str] | None = None, lump_fixed: bool = False,
+               version: str | None = None) -> str:
         """
-        Return an SDF 1.9 model; also write it to ``path`` when given.
+        Return an SDF model; also write it to ``path`` when given.
 
         With ``lump_fixed``, links joined by fixed joints are merged (combined inertia), as
-        SDFormat's own URDF conversion does.
+        SDFormat's own URDF conversion does. ``version`` is ``'1.9'`` or ``'1.11'`` (the
+        default when a joint mimics another: 1.11 holds mimic joints).
         """
         from urdfgenpy_ros.formats import sdf
-        return sdf.write_sdf(self, path, lump_fixed)
+        return sdf.write_sdf(self, path, lump_fixed, version)
 
     def save(self, path: str | PathLike[str], **options: Any) -> None:
         """

@@ -15,7 +15,9 @@
 // Load an SDF (or URDF, which libsdformat converts) with the reference parser. Print every
 // error on stderr and exit 1 if there is one; else print, per link, its pose in the model
 // frame ("link NAME x y z qw qx qy qz"), its inertial ("inertial LINK mass cx cy cz" and the
-// principal moments) and its sensors ("sensor LINK NAME TYPE"). With --sdf, print the SDF
+// principal moments) and its sensors ("sensor LINK NAME TYPE"), then each frame of the model
+// with its pose in the model frame and its link ("frame NAME x y z qw qx qy qz LINK"). With
+// --sdf, print the SDF
 // the parser made instead (for a URDF, libsdformat's conversion, as Gazebo sees it).
 #include <iostream>
 #include <string>
@@ -81,6 +83,25 @@ int main(int argc, char ** argv)
       std::cout << "sensor " << link->Name() << " " << sensor->Name() << " " <<
         sensor->TypeStr() << std::endl;
     }
+  }
+  for (uint64_t f = 0; f < model->FrameCount(); ++f) {
+    const sdf::Frame * frame = model->FrameByIndex(f);
+    ignition::math::Pose3d pose;
+    std::string link;
+    sdf::Errors frameErrors = frame->SemanticPose().Resolve(pose, "__model__");
+    sdf::Errors linkErrors = frame->ResolveAttachedToBody(link);
+    for (const auto & error : frameErrors) {
+      std::cerr << error << std::endl;
+    }
+    for (const auto & error : linkErrors) {
+      std::cerr << error << std::endl;
+    }
+    if (!frameErrors.empty() || !linkErrors.empty()) {
+      return 1;
+    }
+    std::cout << "frame " << frame->Name() << " " << pose.Pos().X() << " " << pose.Pos().Y() <<
+      " " << pose.Pos().Z() << " " << pose.Rot().W() << " " << pose.Rot().X() << " " <<
+      pose.Rot().Y() << " " << pose.Rot().Z() << " " << link << std::endl;
   }
   return 0;
 }

@@ -22,6 +22,7 @@ each such link gets one line naming the fix, and the exit status is 2.
 from __future__ import annotations
 
 from pathlib import Path
+import warnings
 
 import click
 
@@ -29,9 +30,10 @@ from urdfgenpy_ros.cli._options import input_options, read_robot, say_read_warni
 from urdfgenpy_ros.cli.convert_mjcf import mjcf_options, MjcfOptions, write_mjcf_file
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
+from urdfgenpy_ros.formats.sdf_frames import merge_for_sdf
 from urdfgenpy_ros.formats.sdf_mass import default_mass_notes, mass_only_notes
+from urdfgenpy_ros.formats.sdf_mimic import VERSIONS as SDF_VERSIONS
 from urdfgenpy_ros.formats.urdf_downgrade import as_version, VERSIONS
-from urdfgenpy_ros.lumping import lump_fixed_joints
 from urdfgenpy_ros.report import counted
 from urdfgenpy_ros.resources import rebase_meshes
 from urdfgenpy_ros.robot import Robot
@@ -48,6 +50,9 @@ from urdfgenpy_ros.validation.sdf_refusals import lumped_into
 @click.option('--lump-fixed', is_flag=True,
               help='SDF output: merge links joined by fixed joints into their parents, as '
                    "libsdformat's own URDF conversion does.")
+@click.option('--sdf-version', type=click.Choice(SDF_VERSIONS),
+              help='SDF output: the SDFormat version (default: 1.11 when a joint mimics '
+                   'another, which 1.9 cannot hold, else 1.9).')
 @click.option('--urdf-version', type=click.Choice(VERSIONS),
               help='URDF output: write what this URDF version holds (1.0 is what ROS 2 '
                    'Jazzy reads: quaternions become rpy, a capsule a cylinder and two '
@@ -69,7 +74,8 @@ from urdfgenpy_ros.validation.sdf_refusals import lumped_into
 @input_options
 def convert(source: Path, target: Path, arguments: tuple[str, ...],
             package_paths: tuple[Path, ...], force: bool, lump_fixed: bool,
-            urdf_version: str | None, mjcf: MjcfOptions, merge_fixed: bool = False,
+            urdf_version: str | None, mjcf: MjcfOptions, sdf_version: str | None = None,
+            merge_fixed: bool = False,
             drop_frames: bool = False, keep: tuple[str, ...] = (), repair: bool = False,
             fix_radius: float = DEFAULT_RADIUS) -> None:
     """
@@ -86,9 +92,11 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     if kind != 'mjcf' and mjcf.given():
         raise UrdfgenpyError(f"{target}: {', '.join(mjcf.given())} apply to MJCF output "
                              '(.xml, .mjcf) only: drop them or write .xml')
-    if lump_fixed and kind != 'sdf':
-        raise UrdfgenpyError(f'{target}: --lump-fixed applies to .sdf output only: drop it '
-                             'or write .sdf')
+    for sdf_option, option in ((lump_fixed, '--lump-fixed'),
+                               (sdf_version is not None, '--sdf-version')):
+        if sdf_option and kind != 'sdf':
+            raise UrdfgenpyError(f'{target}: {option} applies to .sdf output only: drop it '
+                                 'or write .sdf')
     if urdf_version is not None and kind not in ('urdf', 'xacro'):
         raise UrdfgenpyError(f'{target}: --urdf-version applies to .urdf and .xacro output '
                              'only: drop it or write .urdf')
@@ -111,18 +119,34 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
             click.echo(str(change), err=True)
     if merge_fixed:
         robot = robot.merge_fixed(keep, drop_frames=drop_frames)
-    if lump_fixed:
-        robot = lump_fixed_joints(robot)  # what to_sdf(lump_fixed=True) writes
     if kind == 'sdf':
-        _refuse_invalid_inertia(robot, target)
-        for note in (*mass_only_notes(robot), *default_mass_notes(robot)):
+        merged = merge_for_sdf(robot, lump_fixed)[0]  # the links the SDF has
+        _refuse_invalid_inertia(merged, target)
+        for note in (*mass_only_notes(robot), *default_mass_notes(merged)):
             click.echo(note, err=True)  # a mass-only inertial kept as libsdformat keeps it
     if kind == 'mjcf':  # meshes are resolved from the source and copied beside the target
         raise SystemExit(write_mjcf_file(robot, target, mjcf, package_paths, force))
     rebase_meshes(robot, source.parent, target.parent)  # relative meshes still found
+    if kind == 'sdf':
+        _write_sdf(robot, target, lump_fixed, sdf_version)
+        return
     robot.save(target)
     click.echo(f"wrote {target}: {counted(len(robot.links), 'link')}, "
                f"{counted(len(robot.joints), 'joint')}")
+
+
+def _write_sdf(robot: Robot, target: Path, lump_fixed: bool, version: str | None) -> None:
+    """Write the SDF; say each thing it does not carry in one line (the writer's warnings)."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter('always')
+        robot.save(target, lump_fixed=lump_fixed, version=version)
+    for warning in caught:
+        line = str(warning.message)
+        click.echo(line if ': warning: ' in line else f'warning: {line}', err=True)
+    text = target.read_text(encoding='utf-8')  # what the SDF holds, counted
+    click.echo(f"wrote {target}: {counted(text.count('<link '), 'link')}, "
+               f"{counted(text.count('<joint '), 'joint')}, "
+               f"{counted(text.count('<frame '), 'frame')}")
 
 
 def _refuse_broken_tree(robot: Robot, target: Path) -> None:

@@ -13,27 +13,35 @@
 # limitations under the License.
 
 """
-SDF 1.9 writer: a ``<model>`` that Gazebo and the SDFormat parser load as they would the URDF.
+SDF writer (1.9, or 1.11 for mimic joints): a ``<model>`` as SDFormat's URDF conversion makes it.
 
 Frames follow SDFormat's own URDF conversion: each joint's pose is given relative to its
 parent link, and each child link sits at its joint, so the axis is expressed in the joint
-frame exactly as in URDF. Floating joints become free links posed at their origin.
-Sensors on links are written natively; ``<gazebo>`` plugins go into the model. A joint
-named like a link (URDF allows it, SDF does not) gets ``_joint`` appended.
+frame exactly as in URDF. Floating joints become free links posed at their origin. A link
+without mass on a fixed joint (every link on one, with ``lump_fixed``) is merged into its
+parent and leaves ``<frame>`` elements (:mod:`.sdf_frames`). Sensors on links are written
+natively; ``<gazebo>`` blocks go where libsdformat puts them (:mod:`.sdf_gazebo`); mimic
+joints are 1.11's ``<mimic>`` (:mod:`.sdf_mimic`). A joint named like a link (URDF allows
+it, SDF does not) gets ``_joint`` appended. What the SDF cannot carry is a warning, one line
+each.
 """
 
 from __future__ import annotations
 
-import copy
 from os import PathLike
 from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
+from urdfgenpy_ros.caller import warn_caller
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import robot_name, write_text
-from urdfgenpy_ros.formats.sdf_mass import mass_only
+from urdfgenpy_ros.formats.sdf_frames import merge_for_sdf, Merged
+from urdfgenpy_ros.formats.sdf_gazebo import (
+    apply_blocks, apply_shape_blocks, gazebo_losses, script_notes)
+from urdfgenpy_ros.formats.sdf_mimic import Follow, follows, mimic_notes, MIMIC_VERSION
+from urdfgenpy_ros.formats.sdf_mimic import sdf_version
 from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Geometry, Mesh, Origin, Sphere
 from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.link import Link, Visual
@@ -44,7 +52,6 @@ from urdfgenpy_ros.sensors import Camera, ForceTorque, Lidar, Sensor
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
 
-SDF_VERSION = '1.9'
 _TYPES = {JointType.REVOLUTE: 'revolute', JointType.CONTINUOUS: 'continuous',
           JointType.PRISMATIC: 'prismatic', JointType.FIXED: 'fixed'}
 
@@ -167,8 +174,7 @@ def _link(model: Any, link: Link, robot: Robot, pose: tuple[Origin, str] | None)
         tensor = etree.SubElement(block, 'inertia')
         for name in ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz'):
             _text(tensor, name, fmt(getattr(inertial, name)))
-    else:
-        _mass_only(element, link)
+    blocks = [block for block in link.extensions if block.tag == 'gazebo']
     taken: set[str] = set()
     for kind, items in (('collision', link.collisions), ('visual', link.visuals)):
         for item in items:
@@ -178,26 +184,11 @@ def _link(model: Any, link: Link, robot: Robot, pose: tuple[Origin, str] | None)
             _geometry(shape, item.geometry)
             if isinstance(item, Visual):
                 _material(shape, item.material, robot)
+            apply_shape_blocks(shape, blocks, kind, link.name, item.name)
     for sensor in link.sensors:
         element.append(sensor_element(sensor))
-    for block in link.extensions:
-        for child in block.element:
-            if isinstance(child.tag, str) and child.tag == 'sensor':
-                element.append(copy.deepcopy(child))
+    apply_blocks(element, blocks, 'link', link.name)
     return element
-
-
-def _mass_only(element: Any, link: Link) -> None:
-    """Write a mass-only ``<inertial>`` as libsdformat's conversion does: a zero tensor."""
-    found = mass_only(link)
-    if found is None:
-        return
-    block = etree.SubElement(element, 'inertial')
-    _pose(block, found.origin)
-    _text(block, 'mass', fmt(found.mass))
-    tensor = etree.SubElement(block, 'inertia')
-    for name in ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz'):
-        _text(tensor, name, '0')
 
 
 def _fixed_to_world(robot: Robot) -> bool:
@@ -216,16 +207,21 @@ def _fixed_to_world(robot: Robot) -> bool:
     return True
 
 
-def _joint(model: Any, joint: Joint, name: str) -> None:
-    element = etree.SubElement(model, 'joint', name=name, type=_TYPES[joint.type])
+def _joint(model: Any, joint: Joint, names: dict[str, str], follow: Follow | None) -> None:
+    element = etree.SubElement(model, 'joint', name=names[joint.name], type=_TYPES[joint.type])
     # A joint from URDF's world link: the model frame is where the model meets the world.
     _pose(element, joint.origin, '__model__' if joint.parent == WORLD else joint.parent)
     _text(element, 'parent', joint.parent)
     _text(element, 'child', joint.child)
     for sensor in joint.sensors:
         element.append(sensor_element(sensor))
-    if joint.type is JointType.FIXED:
-        return
+    if joint.type is not JointType.FIXED:
+        _axis(element, joint, names, follow)
+    apply_blocks(element, [b for b in joint.extensions if b.tag == 'gazebo'], 'joint',
+                 joint.name)
+
+
+def _axis(element: Any, joint: Joint, names: dict[str, str], follow: Follow | None) -> None:
     axis = etree.SubElement(element, 'axis')
     _text(axis, 'xyz', fmt_vec(joint.effective_axis))
     limit = joint.limit
@@ -241,41 +237,79 @@ def _joint(model: Any, joint: Joint, name: str) -> None:
         dynamics = etree.SubElement(axis, 'dynamics')
         _text(dynamics, 'damping', fmt(joint.dynamics.damping))
         _text(dynamics, 'friction', fmt(joint.dynamics.friction))
+    if follow is not None:  # SDF 1.11: follower = multiplier * (leader - reference) + offset
+        mimic = etree.SubElement(axis, 'mimic', joint=names[follow.leader])
+        _text(mimic, 'multiplier', fmt(follow.multiplier))
+        _text(mimic, 'offset', fmt(follow.offset))
+        _text(mimic, 'reference', '0')
 
 
-def write_sdf(robot: Robot, path: str | PathLike[str] | None = None,
-              lump_fixed: bool = False) -> str:
+def _frames(model: Any, frames: list[Merged], names: set[str]) -> None:
+    """Write a ``<frame>`` for each merged fixed joint and link, as libsdformat does."""
+    for merged in frames:
+        joint_frame = merged.joint not in names  # a joint named like a link: one frame
+        holder = etree.SubElement(model, 'frame', name=merged.joint if joint_frame else
+                                  merged.link, attached_to=merged.parent)
+        _text(holder, 'pose', f'{fmt_vec(merged.origin.xyz)} {fmt_vec(merged.origin.rpy)}')
+        if joint_frame:
+            etree.SubElement(model, 'frame', name=merged.link, attached_to=merged.joint)
+
+
+def _joint_names(robot: Robot, source: Robot) -> dict[str, str]:
     """
-    Return the SDF text of ``robot``; also write it to ``path`` when given.
+    Return each joint's SDF name: SDF frames share one namespace, URDF's do not.
 
-    ``lump_fixed`` merges links joined by fixed joints, as SDFormat's URDF conversion does.
-
-    :raises ValueError: for a planar joint, which SDF cannot express (make it two
-        prismatic joints and a revolute one).
+    A joint named like a link of ``source`` (kept, or a frame now) gets ``_joint`` added.
     """
+    link_names = {link.name for link in source.links}
+    taken = set(link_names) | {joint.name for joint in source.joints}
+    return {joint.name: (_unique(f'{joint.name}_joint', taken)
+                         if joint.name in link_names else joint.name)
+            for joint in robot.joints}
+
+
+def _check_ends(robot: Robot) -> None:
     for joint in robot.joints:
         for role in ('parent', 'child'):
             if not robot.has_link(getattr(joint, role)):
                 raise ModelError(f'joint {joint.name!r}: {role} link '
                                  f'{getattr(joint, role)!r} does not exist (validate() reports '
                                  'it as S004/S005): define the link or fix the name')
-    fixed_to_world = _fixed_to_world(robot)
-    if lump_fixed:
-        from urdfgenpy_ros.lumping import lump_fixed_joints
-        robot = lump_fixed_joints(robot)
-    root = etree.Element('sdf', version=SDF_VERSION)
-    model = etree.SubElement(root, 'model', name=robot_name(robot.name))
-    parent_joint = {joint.child: joint for joint in robot.joints}
-    # SDF frames share one namespace: a joint named like a link (URDF allows it) is renamed.
-    link_names = {link.name for link in robot.links}
-    taken = set(link_names) | {joint.name for joint in robot.joints}
-    names = {joint.name: (_unique(f'{joint.name}_joint', taken)
-                          if joint.name in link_names else joint.name)
-             for joint in robot.joints}
-    for joint in robot.joints:
         if joint.type is JointType.PLANAR:
             raise ModelError(f'joint {joint.name!r}: SDF has no planar joint (model it as '
                              'two prismatic joints and a revolute one)')
+
+
+def _notes(robot: Robot, merged: Robot, frames: list[Merged], version: str) -> list[str]:
+    notes = [str(loss) for loss in (*gazebo_losses(merged, [f.joint for f in frames]),
+                                    *script_notes(merged))]
+    notes.extend(mimic_notes(robot, version))
+    if version == MIMIC_VERSION:
+        notes.extend(follows(merged, robot)[1])
+    return notes
+
+
+def write_sdf(robot: Robot, path: str | PathLike[str] | None = None,
+              lump_fixed: bool = False, version: str | None = None) -> str:
+    """
+    Return the SDF text of ``robot``; also write it to ``path`` when given.
+
+    ``lump_fixed`` merges links joined by fixed joints, as SDFormat's URDF conversion does;
+    ``version`` is ``'1.9'`` or ``'1.11'`` (default: 1.11 when a joint mimics another).
+    Each thing the SDF does not carry is a warning, one line each.
+
+    :raises ValueError: for a planar joint, which SDF cannot express (make it two
+        prismatic joints and a revolute one).
+    """
+    _check_ends(robot)
+    fixed_to_world = _fixed_to_world(robot)
+    version = sdf_version(robot, version)
+    source = robot
+    robot, frames = merge_for_sdf(robot, lump_fixed)
+    root = etree.Element('sdf', version=version)
+    model = etree.SubElement(root, 'model', name=robot_name(robot.name))
+    parent_joint = {joint.child: joint for joint in robot.joints}
+    names = _joint_names(robot, source)
     for link in robot.links:
         parent = parent_joint.get(link.name)
         if fixed_to_world and link.name == WORLD:
@@ -287,14 +321,15 @@ def write_sdf(robot: Robot, path: str | PathLike[str] | None = None,
         else:
             pose = (Origin(), names[parent.name])
         _link(model, link, robot, pose)
+    resolved = follows(robot, source)[0] if version == MIMIC_VERSION else {}
     for joint in robot.joints:
         if joint.type is not JointType.FLOATING:
-            _joint(model, joint, names[joint.name])
-    for block in robot.extensions:
-        if block.tag == 'gazebo':
-            for child in block.element:
-                if isinstance(child.tag, str) and child.tag == 'plugin':
-                    model.append(copy.deepcopy(child))
+            _joint(model, joint, names, resolved.get(joint.name))
+    _frames(model, frames, {link.name for link in source.links} | set(names.values()))
+    apply_blocks(model, [block for block in robot.extensions
+                         if block.tag == 'gazebo' and block.reference is None], 'model', None)
+    for note in _notes(source, robot, frames, version):
+        warn_caller(note)
     etree.indent(root, space='  ')
     text = '<?xml version="1.0"?>\n' + etree.tostring(root, encoding='unicode') + '\n'
     if path is not None:

@@ -148,7 +148,7 @@ FORMATS: tuple[Format, ...] = (
     Format('xacro', ('.urdf.xacro', '.xacro'), 'Xacro', _read_xacro, _write_xacro,
            ('macro',)),
     Format('urdf', ('.urdf',), 'URDF', _read_urdf, _write_urdf, ('version',)),
-    Format('sdf', ('.sdf',), 'SDF 1.9', None, _write_sdf, ('lump_fixed',),
+    Format('sdf', ('.sdf',), 'SDF', None, _write_sdf, ('lump_fixed', 'version'),
            not_read='reading SDF is not supported (convert from URDF or Xacro)'),
     Format('mjcf', ('.xml', '.mjcf'), 'MuJoCo MJCF', None, write_mjcf_warning,
            ('fuse_fixed', 'base', 'actuators', 'kp', 'kv', 'scene', 'overlay', 'meshdir',

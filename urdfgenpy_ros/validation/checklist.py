@@ -42,7 +42,8 @@ from urdfgenpy_ros.validation.findings import Findings
 from urdfgenpy_ros.validation.fix import fix, FIXABLE, missing_defaults, Repair
 from urdfgenpy_ros.validation.inertia import check_inertia
 from urdfgenpy_ros.validation.joints import check_joints
-from urdfgenpy_ros.validation.preflight import ENGINES, sdformat_findings
+from urdfgenpy_ros.validation.preflight import (
+    ENGINES, gazebo_block_findings, sdformat_findings)
 from urdfgenpy_ros.validation.references import check_references
 from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions, Suppressions
 from urdfgenpy_ros.validation.topology import check_topology
@@ -217,6 +218,7 @@ def _efforts(robot: Robot, findings: Findings, options: ReviewOptions) -> None:
 def _gazebo(robot: Robot, findings: Findings, options: ReviewOptions) -> None:
     if len(robot.roots) == 1:  # S001, S002 say it otherwise; no engine loads such a robot
         sdformat_findings(robot, findings)
+        gazebo_block_findings(robot, findings)
 
 
 def _mujoco(robot: Robot, findings: Findings, options: ReviewOptions) -> None:

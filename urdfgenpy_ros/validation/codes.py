@@ -126,6 +126,8 @@ CODES: dict[str, tuple[Severity, str]] = {
     'K905': (W, 'SRDF disabled pair names a link without collision geometry'),
     'G601': (W, "SDFormat's URDF conversion lumps the link into its parent (fixed joint)"),
     'G602': (W, "SDFormat's URDF conversion drops the link (and everything below it)"),
+    'G603': (W, "SDFormat's URDF conversion drops a <gazebo> setting (nothing takes it)"),
+    'G604': (W, 'Gazebo Sim renders no Gazebo-classic material script'),
 }
 
 # Engine pre-flight codes: what to do about each (the SARIF rules' help).
@@ -147,6 +149,10 @@ PREFLIGHT_HINTS: dict[str, str] = {
     'G601': '<gazebo reference="JOINT"><preserveFixedJoint>true</preserveFixedJoint></gazebo> '
             'keeps the link (and its frame) in Gazebo',
     'G602': 'give the link a mass and inertia (Inertial.from_geometry): Gazebo drops it',
+    'G603': 'a <gazebo> element acts only in the block of what it sets: move it there, or '
+            'drop it',
+    'G604': 'give the visual a <material> with a colour (URDF <color rgba>), which Gazebo '
+            'Sim renders',
 }
 
 

@@ -18,9 +18,11 @@ Engine pre-flight: what a consumer silently changes or drops when it loads the U
 ``gazebo`` applies the rules of SDFormat's URDF conversion (libsdformat's parser_urdf),
 which Gazebo runs on every URDF it spawns: links on fixed joints are lumped into their
 parent (unless a ``<gazebo reference="JOINT">`` block sets ``preserveFixedJoint`` or
-``disableFixedJointLumping``), and a link whose mass, after lumping, is below 1e-6 kg (or
-that has no ``<inertial>``) is left out with everything below it. The tests compare these
-rules with libsdformat's own conversion. ``mujoco`` compiles the URDF with MuJoCo (see
+``disableFixedJointLumping``), a link whose mass, after lumping, is below 1e-6 kg (or
+that has no ``<inertial>``) is left out with everything below it, and each ``<gazebo>``
+setting no link, collision, visual or joint takes is dropped (G603; a Gazebo-classic
+material script Gazebo Sim does not render is G604). The tests compare these rules with
+libsdformat's own conversion. ``mujoco`` compiles the URDF with MuJoCo (see
 :mod:`.mujoco_preflight`).
 """
 
@@ -33,6 +35,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.errors import ValidationError
+from urdfgenpy_ros.formats.sdf_frames import merge_for_sdf
+from urdfgenpy_ros.formats.sdf_gazebo import gazebo_losses, script_notes
 from urdfgenpy_ros.formats.sdf_mass import mass_only
 from urdfgenpy_ros.joint import Joint
 from urdfgenpy_ros.lumping import lumps, WORLD
@@ -136,6 +140,20 @@ def sdformat_findings(robot: Robot, findings: Findings) -> None:
                      PREFLIGHT_HINTS['G602'], 'link')
 
 
+def gazebo_block_findings(robot: Robot, findings: Findings) -> None:
+    """Add G603 for each ``<gazebo>`` element the conversion drops, G604 for scripts."""
+    merged, frames = merge_for_sdf(robot, lump_fixed=True)  # as the conversion lumps
+    for code, losses in (('G603', gazebo_losses(merged, [frame.joint for frame in frames])),
+                         ('G604', script_notes(merged))):
+        for loss in losses:
+            block = (f'<gazebo reference={loss.reference!r}>' if loss.reference is not None
+                     else '<gazebo>')
+            path = (f"/robot/gazebo[@reference='{loss.reference}']/{loss.tag}"
+                    if loss.reference is not None else f'/robot/gazebo/{loss.tag}')
+            findings.add(code, loss.location, f'{block} <{loss.tag}>', path, loss.why,
+                         PREFLIGHT_HINTS[code], loss.tag)
+
+
 def preflight(robot: Robot, engines: Iterable[str],
               search_paths: Iterable[str | PathLike[str]] = ()) -> list[ValidationError]:
     """
@@ -150,6 +168,7 @@ def preflight(robot: Robot, engines: Iterable[str],
     for engine in engines:
         if engine == 'gazebo':
             sdformat_findings(robot, findings)
+            gazebo_block_findings(robot, findings)
         elif engine == 'mujoco':
             from urdfgenpy_ros.validation.mujoco_preflight import mujoco_findings
             source = robot.source.file if robot.source is not None else None
