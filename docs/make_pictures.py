@@ -24,6 +24,8 @@ example pan-tilt unit:
   ``chromium-driver``, Selenium from the ``docs`` extra), once the robot is drawn.
 
 Needs the ``view`` and ``docs`` extras. A missing piece is one line naming it, exit 2.
+``sarif-xacro.png`` (a SARIF viewer's page) is made apart by ``docs/sarif_picture.py``,
+which needs npm.
 """
 
 from __future__ import annotations

@@ -75,6 +75,10 @@ def test_sarif_validates_against_the_sarif_2_1_0_schema(files, tmp_path: Path) -
     assert rules['J104']['shortDescription']['text'] == CODES['J104'][1]
     error = Robot.from_urdf(files['error.urdf']).validate()[0]
     assert rules['J104']['help']['text'] == error.hint
+    # GitHub code scanning requires a full description (Microsoft's sarif-multitool
+    # `validate --rule-kind Gh`: GH2012), and a name equal to the id is a warning (SARIF1001)
+    assert all(rule['fullDescription']['text'] and rule.get('name', '') != rule['id']
+               for rule in rules.values())
     by_rule = {result['ruleId']: result for result in run['results']}
     location = by_rule['J104']['locations'][0]
     physical = location['physicalLocation']

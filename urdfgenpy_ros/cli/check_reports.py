@@ -142,8 +142,9 @@ def sarif_report(reports: list[FileReport]) -> str:
     """
     Return a SARIF 2.1.0 log, as GitHub code scanning reads it.
 
-    Rule ids are the finding codes (help: the hint), results carry file, line and column
-    (the element path as logical location); suppressed findings are results with a
+    Rule ids are the finding codes (short description: the title; full description, which
+    GitHub requires: the title and the hint; help: the hint), results carry file, line and
+    column (the element path as logical location); suppressed findings are results with a
     suppression (``inSource`` for a comment, ``external`` for ``--ignore``), and a file
     that could not be read (or that --fix did not rewrite) is a tool notification.
     """
@@ -154,8 +155,10 @@ def sarif_report(reports: list[FileReport]) -> str:
     hints: dict[str, str] = {}
     for finding in everything:
         hints.setdefault(finding.code, PREFLIGHT_HINTS.get(finding.code, finding.hint))
-    rules = [{'id': code, 'name': code,
-              'shortDescription': {'text': CODES[code][1] if code in CODES else code},
+    titles = {code: CODES[code][1] if code in CODES else code for code in codes}
+    rules = [{'id': code,  # no 'name': SARIF wants it unlike the id, or absent
+              'shortDescription': {'text': titles[code]},
+              'fullDescription': {'text': f'{titles[code]} ({hints[code]})'},
               'help': {'text': hints[code]},
               'defaultConfiguration': {'level': _LEVEL[CODES[code][0]]
                                        if code in CODES else 'warning'}}
