@@ -54,13 +54,13 @@ def lumped(model: ChainModel, masses: MassModel) -> tuple[ChainModel, MassModel]
     numpy.add.at(moment, host, masses.mass[:, None] * pose[:, :3, 3]
                  + (pose[:, :3, :3] @ masses.moment[:, :, None])[..., 0])
     merged = replace(model, origin=origin, parent=host[numpy.maximum(model.parent, 0)])
-    smaller = _kept(merged, kept)
+    smaller = restricted(merged, kept)
     parent = smaller.parent.copy()
     parent[0] = -1
     return replace(smaller, parent=parent), MassModel(mass[kept], moment[kept])
 
 
-def _kept(model: ChainModel, links: numpy.ndarray) -> ChainModel:
+def restricted(model: ChainModel, links: numpy.ndarray) -> ChainModel:
     """Return the model of ``links`` only (closed under parents: the root stays first)."""
     renumber = numpy.full(len(model.links) + 1, -1, dtype=numpy.intp)
     renumber[links] = numpy.arange(len(links))

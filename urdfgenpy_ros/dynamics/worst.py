@@ -39,7 +39,7 @@ from typing import TYPE_CHECKING
 
 import numpy
 
-from urdfgenpy_ros.dynamics.bound import lumped
+from urdfgenpy_ros.dynamics.bound import lumped, restricted
 from urdfgenpy_ros.dynamics.forward import link_frames
 from urdfgenpy_ros.dynamics.gravity import MassModel
 from urdfgenpy_ros.dynamics.model import ChainModel, PRISMATIC, REVOLUTE
@@ -107,20 +107,8 @@ def relevant(model: ChainModel, column: int) -> list[int]:
 
 def _restricted(model: ChainModel, masses: MassModel, links: numpy.ndarray
                 ) -> tuple[ChainModel, MassModel]:
-    """Return the model of ``links`` only (closed under parents: the root stays first)."""
-    renumber = numpy.full(len(model.links) + 1, -1, dtype=numpy.intp)
-    renumber[links] = numpy.arange(len(links))
-    parent = renumber[model.parent[links]]
-    depth = numpy.zeros(len(links), dtype=numpy.intp)
-    for number in range(1, len(links)):
-        depth[number] = depth[parent[number]] + 1
-    smaller = replace(model, links=tuple(model.links[link] for link in links),
-                      joints=tuple(model.joints[link] for link in links), parent=parent,
-                      origin=model.origin[links], axis=model.axis[links],
-                      motion=model.motion[links], source=model.source[links],
-                      multiplier=model.multiplier[links], offset=model.offset[links],
-                      depth=int(numpy.max(depth)) if len(links) else 0)
-    return smaller, MassModel(masses.mass[links], masses.moment[links])
+    """Return the model and masses of ``links`` only (closed under parents)."""
+    return restricted(model, links), MassModel(masses.mass[links], masses.moment[links])
 
 
 class _Torque:
