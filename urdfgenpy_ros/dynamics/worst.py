@@ -32,7 +32,7 @@ angles in (-pi, pi].
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 import itertools
 import math
 from typing import TYPE_CHECKING
