@@ -20,6 +20,7 @@ import click
 
 from urdfgenpy_ros.cli.attach import attach
 from urdfgenpy_ros.cli.check import check
+from urdfgenpy_ros.cli.collision import collision
 from urdfgenpy_ros.cli.convert import convert
 from urdfgenpy_ros.cli.dh import dh
 from urdfgenpy_ros.cli.example import example
@@ -65,5 +66,5 @@ def main(ctx: click.Context, verbose: bool) -> None:
 
 
 for command in (example, tree, convert, check, inertia, init, graph, render, view, attach,
-                dh, mirror):
+                dh, mirror, collision):
     main.add_command(command)

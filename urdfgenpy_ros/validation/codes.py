@@ -94,6 +94,11 @@ CODES: dict[str, tuple[Severity, str]] = {
     # statics (validation/statics.py, validation/efforts.py; check --statics)
     'T801': (E, 'effort cannot hold the robot against gravity somewhere in the range'),
     'T802': (W, 'force limits of a joint disagree (<limit>, ros2_control, Gazebo)'),
+    # collision geometry made light (urdfgenpy collision; urdfgenpy_ros.collision)
+    'K901': (W, 'collision made light: what it loses, measured'),
+    'K902': (E, 'collision made light below --min-iou'),
+    'K903': (W, 'open or non-manifold collision mesh repaired before measuring'),
+    'K904': (W, 'collision mesh open and not repairable: left as it was'),
     # conventions
     'C401': (W, "no link called 'base_link'"),
     # engine pre-flight (validation/preflight.py): what a consumer silently changes
