@@ -26,10 +26,11 @@ from __future__ import annotations
 
 from pathlib import Path
 import re
+import subprocess
 
 from click.testing import CliRunner
 from collision_fixtures import coverage_inside, SHAPES, write_fixtures
-from helpers import pose_matrix, require_module
+from helpers import build_sdf_checker, pose_matrix, require_module
 import numpy
 import pytest
 from registry_robots import robot_id, robots, search_paths
@@ -91,8 +92,9 @@ def _resting_height(robot: Robot, folder: Path) -> float:
         assets[f'part{index}.stl'] = (folder / item.geometry.filename).read_bytes()
         matrix = pose_matrix(item.origin)
         quat = trimesh.transformations.quaternion_from_matrix(matrix)  # w x y z
-        geoms.append(f'<geom type="mesh" mesh="part{index}" pos="{" ".join(map(str, matrix[:3, 3]))}"'
-                     f' quat="{" ".join(map(str, quat))}"/>')
+        position = ' '.join(map(str, matrix[:3, 3]))
+        geoms.append(f'<geom type="mesh" mesh="part{index}" pos="{position}" '
+                     f'quat="{" ".join(map(str, quat))}"/>')
     meshes = ''.join(f'<mesh name="{name[:-4]}" file="{name}"/>' for name in assets)
     xml = (f'<mujoco><option timestep="0.001"/><asset>{meshes}</asset><worldbody>'
            f'{"".join(geoms)}<body pos="0 0 0.2"><freejoint/><geom type="sphere" '
@@ -146,3 +148,20 @@ def test_registry_robots_keep_every_line_outside_collisions(tmp_path, path):
         hull = trimesh.load(str(tmp_path / Path(written.filename).name), force='mesh')
         assert coverage_inside(original, [hull]) == 1.0, result.link
         judged += 1
+
+
+@pytest.mark.engine
+@pytest.mark.parametrize('method', ['primitive', 'decompose'])
+def test_libsdformat_loads_the_sdf_output(tmp_path, method):
+    require_module('coacd')
+    binary = build_sdf_checker(tmp_path / 'checker')
+    source = write_fixtures(tmp_path, ('u_bracket', 'cylinder_link'))
+    output = tmp_path / 'out' / 'robot.sdf'
+    output.parent.mkdir()
+    result = CliRunner().invoke(main, ['collision', str(source), '-o', str(output),
+                                       '--method', method])
+    assert result.exit_code == 0, result.output
+    checked = subprocess.run([str(binary), str(output)], capture_output=True, text=True,
+                             timeout=120)
+    assert checked.returncode == 0, checked.stderr
+    assert output.read_text().count('<collision') >= 2

@@ -45,6 +45,7 @@ from urdfgenpy_ros.transforms import to_xyz_rpy
 from urdfgenpy_ros.urdf_versions import parse_version
 
 if TYPE_CHECKING:
+    from urdfgenpy_ros.inertial import Inertial
     from urdfgenpy_ros.model import RobotModel
 
 
@@ -76,42 +77,60 @@ def plan_collisions(robot: RobotModel, method: str = 'hull', links: Any = None, 
     if capsules is None:
         version = parse_version(robot.urdf_version)
         capsules = isinstance(version, tuple) and version >= (1, 1)
-    resolver = PackageResolver(search_paths)
     source = getattr(robot, 'source', None)
     file = getattr(source, 'file', None) if source is not None else None
     base = Path(file).parent if file else None
-    folder = Path(mesh_folder) if mesh_folder is not None else None
-    relative_to = None if absolute else relative_to or base  # read against the file
-    plan = Plan(CollisionReport(method, min_iou))
+    run = _Run(method, options, min_iou, capsules, PackageResolver(search_paths), base,
+               Path(mesh_folder) if mesh_folder is not None else None,
+               None if absolute else relative_to or base, Plan(CollisionReport(method, min_iou)))
     for link in chosen:
         meshes = [index for index, item in enumerate(link.collisions)
                   if isinstance(item.geometry, Mesh)]
         for index in meshes:
-            item = link.collisions[index]
-            where = item.source or SourceLocation(
-                path=f"/robot/link[@name='{link.name}']/collision[{index + 1}]")
-            geometry = item.geometry
-            assert isinstance(geometry, Mesh)
-            path = resolver.resolve(geometry.filename, base)
             only = link.inertial if len(meshes) == 1 and len(link.collisions) == 1 else None
-            try:
-                done = simplify(path, geometry.scale or (1.0, 1.0, 1.0), method, options,
-                                only, min_iou)
-            except OpenMeshError as error:
-                plan.report.unclosed.append((link.name, where, str(error)))
-                continue
-            stem = _stem(link.name, index if len(meshes) > 1 else None, done.method)
-            target_folder = folder or path.parent
-            parts = _written(done.parts, capsules)
-            several = sum(part.kind == 'mesh' for part in parts) > 1
-            uri = _uri_maker(geometry.filename, folder, relative_to)
-            collisions = [_collision(part, item, number, stem, several, target_folder, plan,
-                                     uri) for number, part in enumerate(parts)]
-            plan.replacements[(link.name, index)] = collisions
-            plan.report.results.append(LinkResult(link.name, index, done.method,
-                                                  done.measures, done.repairs, where,
-                                                  geometry.filename))
-    return plan
+            _plan_one(run, link.name, index, link.collisions[index],
+                      index if len(meshes) > 1 else None, only)
+    return run.plan
+
+
+@dataclass
+class _Run:
+    """What every collision of one run shares."""
+
+    method: str
+    options: Options
+    min_iou: float | None
+    capsules: bool
+    resolver: Any
+    base: Path | None  # the robot file's folder: relative URIs are read against it
+    folder: Path | None  # mesh_folder
+    relative_to: Path | None  # what a URI into mesh_folder is relative to (None: absolute)
+    plan: Plan
+
+
+def _plan_one(run: _Run, link: str, index: int, item: Collision, numbered: int | None,
+              inertial: Inertial | None) -> None:
+    """Plan the replacement of one mesh collision (or name it, when it is open)."""
+    where = item.source or SourceLocation(
+        path=f"/robot/link[@name='{link}']/collision[{index + 1}]")
+    geometry = item.geometry
+    assert isinstance(geometry, Mesh)
+    path = run.resolver.resolve(geometry.filename, run.base)
+    try:
+        done = simplify(path, geometry.scale or (1.0, 1.0, 1.0), run.method, run.options,
+                        inertial, run.min_iou)
+    except OpenMeshError as error:
+        run.plan.report.unclosed.append((link, where, str(error)))
+        return
+    stem = _stem(link, numbered, done.method)
+    parts = _written(done.parts, run.capsules)
+    several = sum(part.kind == 'mesh' for part in parts) > 1
+    uri = _uri_maker(geometry.filename, run.folder, run.relative_to)
+    run.plan.replacements[(link, index)] = [
+        _collision(part, item, number, stem, several, run.folder or path.parent, run.plan, uri)
+        for number, part in enumerate(parts)]
+    run.plan.report.results.append(LinkResult(link, index, done.method, done.measures,
+                                              done.repairs, where, geometry.filename))
 
 
 def _chosen_links(robot: RobotModel, links: Any) -> list[Any]:
