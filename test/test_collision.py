@@ -242,3 +242,12 @@ def test_missing_coacd_is_one_line(tmp_path, monkeypatch):
     assert result.stderr.strip().splitlines()[-1] == (
         'urdfgenpy: Convex decomposition (method decompose) needs the Python package '
         "'coacd': pip install 'urdfgenpy_ros[collision]'")
+
+
+def test_primitives_of_a_decomposition_keep_the_gap(tmp_path):
+    require_module('coacd')
+    before, after, _ = simplified(tmp_path, 'primitive', names=('u_bracket',), split=True)
+    kinds = [type(item.geometry) for item in after.get_link('u_bracket').collisions]
+    assert len(kinds) >= 3 and Box in kinds
+    iou, coverage = judged(tmp_path, before, after, 'u_bracket')
+    assert iou >= 0.9 and coverage >= 0.99

@@ -154,6 +154,7 @@ def test_registry_robots_keep_every_line_outside_collisions(tmp_path, path):
 @pytest.mark.parametrize('method', ['primitive', 'decompose'])
 def test_libsdformat_loads_the_sdf_output(tmp_path, method):
     require_module('coacd')
+    (tmp_path / 'checker').mkdir()
     binary = build_sdf_checker(tmp_path / 'checker')
     source = write_fixtures(tmp_path, ('u_bracket', 'cylinder_link'))
     output = tmp_path / 'out' / 'robot.sdf'

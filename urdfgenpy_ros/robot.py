@@ -279,7 +279,8 @@ class Robot(RobotModel):
 
         ``method``: 'hull', 'decompose' (CoACD), 'primitive', 'decimate' or 'auto' (the
         lightest within ``min_iou``). Options: ``max_faces``, ``max_hulls``, ``seed``,
-        ``min_iou`` (refuse below it), ``mesh_folder``, ``search_paths``, ``capsules``.
+        ``split`` (a primitive per convex part), ``min_iou`` (refuse below it),
+        ``mesh_folder``, ``search_paths``, ``capsules``.
         Only collisions change; new meshes are written beside the originals (or in
         ``mesh_folder``). Returns a :class:`urdfgenpy_ros.collision.CollisionReport`
         (``lines()``, ``table()``); see docs/collision.md.

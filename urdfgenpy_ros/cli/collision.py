@@ -57,6 +57,9 @@ _DEFAULTS = Options()
 @click.option('--min-iou', type=click.FloatRange(0.0, 1.0), default=None,
               help='Refuse a collision whose IoU with the original is below this (auto: '
                    'the lightest method that reaches it; default 0.9 there).')
+@click.option('--split', is_flag=True,
+              help='primitive: fit one primitive to each convex part of a decomposition '
+                   '(CoACD) instead of one to the whole mesh.')
 @click.option('--seed', type=int, default=_DEFAULTS.seed, show_default=True,
               help="decompose: CoACD's random seed.")
 @click.option('--mesh-folder', type=click.Path(file_okay=False, path_type=Path), default=None,
@@ -67,14 +70,14 @@ _DEFAULTS = Options()
 @input_options
 def collision(source: Path, arguments: tuple[str, ...], output: Path, method: str,
               links: tuple[str, ...], max_faces: int, max_hulls: int, min_iou: float | None,
-              seed: int, mesh_folder: Path | None, as_json: bool, force: bool,
+              split: bool, seed: int, mesh_folder: Path | None, as_json: bool, force: bool,
               package_paths: tuple[Path, ...]) -> None:
     """Make the collision meshes of SOURCE light; write OUTPUT; say what each loses."""
     format_of(output)
     if output.exists() and not force:
         raise UrdfgenpyError(f'{output} exists: pass --force to overwrite it')
     robot = read_robot(source, arguments, package_paths)
-    options = Options(max_faces=max_faces, max_hulls=max_hulls, seed=seed)
+    options = Options(max_faces=max_faces, max_hulls=max_hulls, seed=seed, split=split)
     plan = plan_collisions(robot, method, links, mesh_folder=mesh_folder,
                            search_paths=package_paths, min_iou=min_iou, options=options)
     report = plan.report
@@ -96,8 +99,10 @@ def collision(source: Path, arguments: tuple[str, ...], output: Path, method: st
         for path in written:  # nothing is written unless the whole run succeeds
             path.unlink(missing_ok=True)
         raise
+    none = '' if report.results or report.unclosed else (
+        ' (no chosen link has a mesh collision: primitives are light already)')
     click.echo(f'wrote {output}: {len(report.results)} collision mesh(es) made light by '
-               f'{method}, {len(written)} new mesh file(s)', err=True)
+               f'{method}, {len(written)} new mesh file(s){none}', err=True)
 
 
 def mjcf_collisions(robot: Robot, method: str | None, search_paths: tuple[Path, ...]

@@ -266,7 +266,8 @@ def simplify_collisions(robot: RobotModel, method: str = 'hull', links: Any = No
     if unknown:
         raise ModelError('simplify_collisions: unknown option(s) '
                          f"{', '.join(sorted(unknown))} (known: max_faces, max_hulls, "
-                         'threshold, seed, min_iou, mesh_folder, search_paths, capsules)')
+                         'threshold, seed, split, min_iou, mesh_folder, search_paths, '
+                         'capsules)')
     plan = plan_collisions(robot, method, links, min_iou=min_iou,
                            options=Options(**options), **keywords)
     plan.report.refuse_below()

@@ -45,6 +45,7 @@ class Options:
     max_hulls: int = 16  # decompose: at most this many convex parts
     threshold: float = 0.05  # decompose: CoACD's concavity threshold
     seed: int = 0
+    split: bool = False  # primitive: one per convex part of a decomposition
 
     def key(self, method: str) -> tuple:
         """Return the options that change ``method``'s result (for the cache)."""
@@ -52,6 +53,8 @@ class Options:
             return (self.max_faces,)
         if method == 'decompose':
             return (self.max_faces, self.max_hulls, self.threshold, self.seed)
+        if method == 'primitive' and self.split:
+            return (self.max_faces, self.max_hulls, self.threshold, self.seed, True)
         return ()
 
 
@@ -109,12 +112,23 @@ def decimate(solid: Any, options: Options) -> list[Part]:
 
 
 def primitive(solid: Any, options: Options) -> list[Part]:
-    """Return the enclosing primitive with the highest IoU: one part."""
+    """
+    Return the enclosing primitive with the highest IoU: one part.
+
+    With ``options.split``, one such primitive for each convex part of the decomposition.
+    """
+    if options.split:
+        return [_best_primitive(piece.solid()) for piece in decompose(solid, options)]
+    return [_best_primitive(solid)]
+
+
+def _best_primitive(solid: Any) -> Part:
+    """Return the lightest of the enclosing primitives that fit ``solid`` best."""
     from urdfgenpy_ros.collision.measure import measure
     from urdfgenpy_ros.collision.primitives import candidates
     scored = [(measure(solid, [part]).iou, part) for part in candidates(solid)]
     best = max(iou for iou, _ in scored)
-    return [next(part for iou, part in scored if iou >= best - _TIE)]  # lightest of the best
+    return next(part for iou, part in scored if iou >= best - _TIE)
 
 
 RUN: dict[str, Callable[[Any, Options], list[Part]]] = {
