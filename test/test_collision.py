@@ -251,3 +251,28 @@ def test_primitives_of_a_decomposition_keep_the_gap(tmp_path):
     assert len(kinds) >= 3 and Box in kinds
     iou, coverage = judged(tmp_path, before, after, 'u_bracket')
     assert iou >= 0.9 and coverage >= 0.99
+
+
+@pytest.mark.parametrize('arguments, line', [
+    (['--link', 'elbow'], "urdfgenpy: collision: no link named 'elbow' (the robot has l_beam)"),
+    (['--method', 'smooth'], "Invalid value for '--method'"),
+])
+def test_user_mistakes_are_one_line(tmp_path, arguments, line):
+    source = write_fixtures(tmp_path, ('l_beam',))
+    result = CliRunner().invoke(main, ['collision', str(source), '-o',
+                                       str(tmp_path / 'out.urdf'), *arguments])
+    assert result.exit_code == 2
+    assert line in result.stderr and 'Traceback' not in result.output
+    assert not (tmp_path / 'out.urdf').exists()
+
+
+def test_a_missing_mesh_is_one_line_and_nothing_is_written(tmp_path):
+    source = write_fixtures(tmp_path, ('l_beam', 'u_bracket'))
+    (tmp_path / 'u_bracket.stl').unlink()
+    result = CliRunner().invoke(main, ['collision', str(source), '-o',
+                                       str(tmp_path / 'out.urdf')])
+    assert result.exit_code == 2
+    assert result.stderr.strip().splitlines()[-1] == (
+        f"urdfgenpy: 'u_bracket.stl' resolves to {tmp_path / 'u_bracket.stl'}, which does "
+        'not exist')
+    assert not (tmp_path / 'l_beam_hull.stl').exists() and not (tmp_path / 'out.urdf').exists()
