@@ -276,3 +276,24 @@ def test_a_missing_mesh_is_one_line_and_nothing_is_written(tmp_path):
         f"urdfgenpy: 'u_bracket.stl' resolves to {tmp_path / 'u_bracket.stl'}, which does "
         'not exist')
     assert not (tmp_path / 'l_beam_hull.stl').exists() and not (tmp_path / 'out.urdf').exists()
+
+
+def test_inertia_from_the_mesh_says_how_it_would_change(tmp_path):
+    bracket = SHAPES['u_bracket']()
+    bracket.export(tmp_path / 'u.stl')
+    tensor = bracket.moment_inertia * (0.5 / bracket.volume)  # trimesh: mass 0.5 kg
+    text = robot_text({'u': 'u.stl'}).replace(
+        'ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.001"',
+        ' '.join(f'{name}="{float(tensor[i][j])!r}"' for name, (i, j) in (
+            ('ixx', (0, 0)), ('ixy', (0, 1)), ('ixz', (0, 2)), ('iyy', (1, 1)),
+            ('iyz', (1, 2)), ('izz', (2, 2)))))
+    robot = Robot.from_urdf_string(text, file=str(tmp_path / 'robot.urdf'))
+    (result,) = robot.simplify_collisions('hull').results
+    hull = bracket.convex_hull
+    before = numpy.linalg.eigvalsh(tensor)
+    after = numpy.linalg.eigvalsh(hull.moment_inertia * (0.5 / hull.volume))
+    expected = numpy.max(numpy.abs(after - before)) / numpy.max(before)
+    assert result.measures.inertia_change == pytest.approx(expected, rel=0.02)
+    assert f'would change by {expected:.1%} if computed from the new shape' in result.line()
+    other = Robot.from_urdf_string(robot_text({'u': 'u.stl'}), file=str(tmp_path / 'r.urdf'))
+    assert other.simplify_collisions('hull').results[0].measures.inertia_change is None
