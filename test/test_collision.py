@@ -297,3 +297,18 @@ def test_inertia_from_the_mesh_says_how_it_would_change(tmp_path):
     assert f'would change by {expected:.1%} if computed from the new shape' in result.line()
     other = Robot.from_urdf_string(robot_text({'u': 'u.stl'}), file=str(tmp_path / 'r.urdf'))
     assert other.simplify_collisions('hull').results[0].measures.inertia_change is None
+
+
+def test_a_mesh_folder_inside_a_package_is_named_by_package_uri(tmp_path):
+    package = tmp_path / 'my_description'
+    (package / 'meshes' / 'collision').mkdir(parents=True)
+    (package / 'package.xml').write_text('<package format="3"><name>my_description</name>'
+                                         '</package>')
+    source = write_fixtures(tmp_path, ('l_beam',))
+    result = CliRunner().invoke(main, ['collision', str(source), '-o', str(tmp_path / 'o.urdf'),
+                                       '--mesh-folder', str(package / 'meshes' / 'collision'),
+                                       '-p', str(tmp_path)])
+    assert result.exit_code == 0, result.output
+    written = Robot.from_urdf(tmp_path / 'o.urdf').get_link('l_beam').collisions[0]
+    assert written.geometry.filename == 'package://my_description/meshes/collision/l_beam_hull.stl'
+    assert (package / 'meshes' / 'collision' / 'l_beam_hull.stl').is_file()
