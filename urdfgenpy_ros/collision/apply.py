@@ -129,8 +129,9 @@ def _plan_one(run: _Run, link: str, index: int, item: Collision, numbered: int |
     run.plan.replacements[(link, index)] = [
         _collision(part, item, number, stem, several, run.folder or path.parent, run.plan, uri)
         for number, part in enumerate(parts)]
+    budget = run.options.max_faces if done.method == 'decimate' else None
     run.plan.report.results.append(LinkResult(link, index, done.method, done.measures,
-                                              done.repairs, where, geometry.filename))
+                                              done.repairs, where, geometry.filename, budget))
 
 
 def _chosen_links(robot: RobotModel, links: Any) -> list[Any]:

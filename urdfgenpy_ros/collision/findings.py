@@ -48,6 +48,7 @@ class LinkResult:
     repairs: list[str]
     location: SourceLocation
     source: str  # the mesh URI as written
+    budget: int | None = None  # decimate's face budget
 
     def line(self) -> str:
         """Return the measures in words."""
@@ -55,6 +56,9 @@ class LinkResult:
         text = (f'{self.method}: IoU {m.iou:.3f}, coverage {m.coverage:.3f}, excess volume '
                 f'{m.excess:.1%}, faces {m.faces_before} -> {m.faces_after} '
                 f"({m.parts} part{'s' if m.parts != 1 else ''})")
+        if self.budget is not None and m.faces_after > self.budget:
+            text += (f', above the budget of {self.budget} faces (fast-simplification '
+                     "stops where the mesh's edges let it collapse no more)")
         if m.inertia_change is not None:
             text += (f'; the inertia came from this mesh and would change by '
                      f'{m.inertia_change:.1%} if computed from the new shape')
