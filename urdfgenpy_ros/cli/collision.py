@@ -29,8 +29,7 @@ import tempfile
 import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot
-from urdfgenpy_ros.collision import METHODS, Options, plan_collisions
-from urdfgenpy_ros.collision.apply import apply_plan
+from urdfgenpy_ros.collision.methods import METHODS, Options
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.resources import rebase_meshes
@@ -73,6 +72,7 @@ def collision(source: Path, arguments: tuple[str, ...], output: Path, method: st
               split: bool, seed: int, mesh_folder: Path | None, as_json: bool, force: bool,
               package_paths: tuple[Path, ...]) -> None:
     """Make the collision meshes of SOURCE light; write OUTPUT; say what each loses."""
+    from urdfgenpy_ros.collision.apply import apply_plan, plan_collisions
     format_of(output)
     if output.exists() and not force:
         raise UrdfgenpyError(f'{output} exists: pass --force to overwrite it')
@@ -116,6 +116,7 @@ def mjcf_collisions(robot: Robot, method: str | None, search_paths: tuple[Path, 
     """
     if method is None:
         return None
+    from urdfgenpy_ros.collision.apply import apply_plan, plan_collisions
     scratch = tempfile.TemporaryDirectory(prefix='urdfgenpy-collision-')
     plan = plan_collisions(robot, method, None, mesh_folder=Path(scratch.name),
                            search_paths=search_paths, capsules=True, absolute=True)

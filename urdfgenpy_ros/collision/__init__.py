@@ -22,9 +22,26 @@ against the original solid (:mod:`.measure`), caches the result by content
 (:mod:`.cache`) and replaces the collisions, and only them; :mod:`.findings` says it.
 """
 
-from urdfgenpy_ros.collision.apply import plan_collisions, simplify_collisions
-from urdfgenpy_ros.collision.findings import CollisionRefusedError, CollisionReport
-from urdfgenpy_ros.collision.methods import METHODS, Options
+from importlib import import_module
+from typing import Any, TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.collision.apply import plan_collisions, simplify_collisions
+    from urdfgenpy_ros.collision.findings import CollisionRefusedError, CollisionReport
+    from urdfgenpy_ros.collision.methods import METHODS, Options
+
+_WHERE = {'plan_collisions': 'apply', 'simplify_collisions': 'apply',
+          'CollisionRefusedError': 'findings', 'CollisionReport': 'findings',
+          'METHODS': 'methods', 'Options': 'methods'}
+"""Each public name's module: imported on first use (the command line starts faster)."""
+
+
+def __getattr__(name: str) -> Any:
+    """Return a public name, importing its module on first use."""
+    if name in _WHERE:
+        return getattr(import_module(f'urdfgenpy_ros.collision.{_WHERE[name]}'), name)
+    raise AttributeError(f'module {__name__!r} has no attribute {name!r}')
+
 
 __all__ = ['CollisionRefusedError', 'CollisionReport', 'METHODS', 'Options',
            'plan_collisions', 'simplify_collisions']
