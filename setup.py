@@ -43,6 +43,10 @@ setup(
         'graph': ['graphviz'],
         # check --engines mujoco: compile with MuJoCo; trimesh tells convex meshes
         'engines': ['mujoco', 'trimesh', 'numpy'],
+        # urdfgenpy collision: hulls and primitives (trimesh, scipy), measures (manifold3d),
+        # convex decomposition (CoACD), decimation (fast-simplification)
+        'collision': ['trimesh', 'numpy', 'scipy', 'manifold3d', 'rtree', 'coacd',
+                      'fast-simplification'],
         'render': ['vtk>=9.3', 'trimesh', 'numpy', 'pycollada'],
         # urdfgenpy srdf / robot.to_srdf: the collision matrix on coal (pinocchio's FCL)
         'moveit': ['coal', 'numpy'],
@@ -67,6 +71,7 @@ setup(
             # DH tables are judged by robotics-toolbox's DHRobot and models (it brings rtb-data)
             'roboticstoolbox-python',
             'pre-commit',  # the documented hook, run by the real pre-commit
+            'manifold3d', 'rtree', 'coacd', 'fast-simplification',  # urdfgenpy collision
             'scipy',  # the statics worst case is judged against random samples + scipy refinement
             'jsonschema', 'junitparser',  # check's SARIF and JUnit reports, read back
             'colcon-common-extensions', 'ros-jazzy-ament-index-python',

@@ -274,6 +274,22 @@ class Robot(RobotModel):
         from urdfgenpy_ros.reshape.dh_apply import apply_dh
         return apply_dh(self, table, base, tip)
 
+    def simplify_collisions(self, method: str = 'hull', links: Any = None,
+                            **options: Any) -> Any:
+        """
+        Make the collision meshes of ``links`` (a name or several; default all) light.
+
+        ``method``: 'hull', 'decompose' (CoACD), 'primitive', 'decimate' or 'auto' (the
+        lightest within ``min_iou``). Options: ``max_faces``, ``max_hulls``, ``seed``,
+        ``split`` (a primitive per convex part), ``min_iou`` (refuse below it),
+        ``mesh_folder``, ``search_paths``, ``capsules``.
+        Only collisions change; new meshes are written beside the originals (or in
+        ``mesh_folder``). Returns a :class:`urdfgenpy_ros.collision.CollisionReport`
+        (``lines()``, ``table()``); see docs/collision.md.
+        """
+        from urdfgenpy_ros.collision import simplify_collisions
+        return simplify_collisions(self, method, links, **options)
+
     # ---- kinematics and statics (urdfgenpy_ros.dynamics, numpy) ---------------------
 
     @property

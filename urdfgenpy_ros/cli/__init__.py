@@ -29,7 +29,7 @@ import click
 from urdfgenpy_ros.report import boundary, FrontEnd
 
 COMMANDS = ('example', 'tree', 'convert', 'check', 'inertia', 'init', 'graph', 'render',
-            'view', 'attach', 'dh', 'mirror', 'srdf')
+            'view', 'attach', 'dh', 'mirror', 'srdf', 'collision')
 """The sub-commands, each the function of that name in ``urdfgenpy_ros.cli.<name>``."""
 
 

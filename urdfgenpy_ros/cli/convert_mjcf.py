@@ -34,6 +34,8 @@ from typing import Any
 import click
 
 from urdfgenpy_ros.cli.check_reports import FileReport, json_report, sarif_report
+from urdfgenpy_ros.cli.collision import mjcf_collisions
+from urdfgenpy_ros.collision.methods import METHODS
 from urdfgenpy_ros.errors import ModelError, UrdfgenpyError
 from urdfgenpy_ros.formats.mjcf import BASES, MjcfRefusedError, write_mjcf
 from urdfgenpy_ros.formats.mjcf.actuators import ACTUATOR_TYPES
@@ -54,6 +56,7 @@ class MjcfOptions:
     overlay: Path | None = None
     strict: bool = False
     report: str = 'text'
+    collision: str | None = None
 
     def given(self) -> list[str]:
         """Return the MJCF flags in use: other output formats refuse them."""
@@ -61,7 +64,7 @@ class MjcfOptions:
                  '--actuators': self.actuators is not None, '--kp': self.kp is not None,
                  '--kv': self.kv is not None, '--scene': self.scene,
                  '--overlay': self.overlay is not None, '--strict': self.strict,
-                 '--report': self.report != 'text'}
+                 '--report': self.report != 'text', '--collision': self.collision is not None}
         return [flag for flag, on in flags.items() if on]
 
 
@@ -100,6 +103,9 @@ _OPTIONS = (
     click.option('--strict', is_flag=True,
                  help='MJCF output: what the MJCF cannot carry is an error: exit 1, '
                       'nothing written.'),
+    click.option('--collision', type=click.Choice(METHODS),
+                 help='MJCF output: make each collision mesh light first (hull, decompose, '
+                      'primitive, decimate, auto; see urdfgenpy collision).'),
     click.option('--report', type=click.Choice(['text', 'json', 'sarif']), default='text',
                  show_default=True,
                  help="MJCF output: the loss report's format (JSON and SARIF on stdout)."),
@@ -109,7 +115,7 @@ _OPTIONS = (
 def mjcf_options(function: Callable[..., Any]) -> Callable[..., Any]:
     """Add the MJCF options to ``convert``; they arrive as one ``mjcf`` argument."""
     names = ('fuse_fixed', 'base', 'actuators', 'kp', 'kv', 'scene', 'overlay', 'strict',
-             'report')
+             'report', 'collision')
 
     def wrapped(*args: Any, **kwargs: Any) -> Any:
         kwargs['mjcf'] = MjcfOptions(**{name: kwargs.pop(name) for name in names})
@@ -128,6 +134,7 @@ def write_mjcf_file(robot: Robot, target: Path, options: MjcfOptions,
 
     Without ``force``, a mesh or scene file beside it with other content is refused.
     """
+    scratch = mjcf_collisions(robot, options.collision, search_paths)  # noqa: F841 (kept)
     try:
         result = write_mjcf(robot, target, fuse_fixed=options.fuse_fixed, base=options.base,
                             actuators=options.actuators, kp=options.kp, kv=options.kv,

@@ -178,7 +178,7 @@ def _build(code: _Code, element: Element, indent: int) -> None:
     parts += [f'(None if f_{name} is None else f_{name}.extras.snapshot)' for name in nested]
     parts += [f'tuple([part.extras.snapshot for part in f_{name}])' for name in lists]
     code.add(indent, f'ex = Preserved(node, ({", ".join(parts)},))')
-    code.add(indent, 'where = tnew(SL, (r.file, node.sourceline, None, None))')
+    code.add(indent, 'where = tnew(SL, (r.file, node.sourceline, None, None, ()))')
     if element.make is not None:
         given = ', '.join(f'f_{attr.field}' for attr in element.attrs)
         code.add(indent, f'return {code.const(element.make)}({given}, source=where, extras=ex)')

@@ -95,6 +95,11 @@ CODES: dict[str, tuple[Severity, str]] = {
     # statics (validation/statics.py, validation/efforts.py; check --statics)
     'T801': (E, 'effort cannot hold the robot against gravity somewhere in the range'),
     'T802': (W, 'force limits of a joint disagree (<limit>, ros2_control, Gazebo)'),
+    # collision geometry made light (urdfgenpy collision; urdfgenpy_ros.collision)
+    'K911': (W, 'collision made light: what it loses, measured'),
+    'K912': (E, 'collision made light below --min-iou'),
+    'K913': (W, 'open or non-manifold collision mesh repaired before measuring'),
+    'K914': (W, 'collision mesh open and not repairable: left as it was'),
     # conventions
     'C401': (W, "no link called 'base_link'"),
     # engine pre-flight (validation/preflight.py): what a consumer silently changes
