@@ -84,6 +84,11 @@ def decompose(solid: Any, options: Options) -> list[Part]:
     return parts or hull(solid, options)
 
 
+AGGRESSION = 3
+"""fast-simplification's aggressiveness: its default, 7, moves CAD surfaces 1.5-3x as far
+(SO-101's parts at 2,000 faces: 1.0-4.4% of the diagonal against 0.3-2.6%)."""
+
+
 def decimated(solid: Any, budget: int) -> Any:
     """Return the solid with at most ``budget`` faces (itself when it has no more)."""
     if len(solid.faces) <= budget:
@@ -96,12 +101,13 @@ def decimated(solid: Any, budget: int) -> Any:
     import trimesh
     reduction = 1.0 - budget / len(solid.faces)
     vertices, faces = fast_simplification.simplify(solid.vertices, solid.faces,
-                                                   target_reduction=reduction)
+                                                   target_reduction=reduction, agg=AGGRESSION)
     made = trimesh.Trimesh(vertices, faces)
     while budget < len(made.faces) < len(solid.faces):  # it stops a little above at times
         solid, reduction = made, 1.0 - budget / len(made.faces)
         vertices, faces = fast_simplification.simplify(made.vertices, made.faces,
-                                                       target_reduction=reduction)
+                                                       target_reduction=reduction,
+                                                       agg=AGGRESSION)
         made = trimesh.Trimesh(vertices, faces)
     return made
 
