@@ -86,8 +86,10 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     MJCF of a robot that is not one tree, or that the engine would refuse (a link's
     inertia), is not written: exit status 2, one line per link. MJCF: what it cannot
     carry is reported, one line each (--strict: errors, exit status 1, nothing written);
-    its meshes go to assets/ beside it.
+    its meshes go to assets/ beside it. NAME:=VALUE arguments may come before TARGET too
+    (TARGET is the one argument without ':=').
     """
+    target, arguments = _target_among(target, arguments)
     kind = format_of(target)
     if kind != 'mjcf' and mjcf.given():
         raise UrdfgenpyError(f"{target}: {', '.join(mjcf.given())} apply to MJCF output "
@@ -133,6 +135,18 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     robot.save(target)
     click.echo(f"wrote {target}: {counted(len(robot.links), 'link')}, "
                f"{counted(len(robot.joints), 'joint')}")
+
+
+def _target_among(target: Path, arguments: tuple[str, ...]) -> tuple[Path, tuple[str, ...]]:
+    """Take TARGET from among the arguments: the one word without ``:=``, wherever it is."""
+    if ':=' not in str(target):
+        return target, arguments
+    words = (str(target), *arguments)
+    paths = [word for word in words if ':=' not in word]
+    if len(paths) != 1:
+        raise click.UsageError('give one TARGET (a path without :=) and Xacro arguments as '
+                               'NAME:=VALUE, e.g. convert ur.urdf.xacro out.urdf ur_type:=ur10e')
+    return Path(paths[0]), tuple(word for word in words if ':=' in word)
 
 
 def _write_sdf(robot: Robot, target: Path, lump_fixed: bool, version: str | None) -> None:
