@@ -235,7 +235,7 @@ def test_xacro_with_an_expression_to_edit_is_not_fixed_and_says_why(tmp_path: Pa
         lines = result.stdout.splitlines()
         (note,) = [line for line in lines if 'not fixed' in line]
         assert note.startswith(f"{path}: not fixed: J104 joint 'wrist': upper=")
-        assert 'is an expression: change it by hand' in note
+        assert 'is an expression: repair it by hand' in note and note.count('by hand') == 1
         assert lines[-1] == note  # after the findings it refers to
 
 
@@ -307,6 +307,21 @@ def test_tensor_of_a_turned_box_is_turned_into_the_inertial_frame(tmp_path: Path
                 mass * (x * x + y * y) / 12]  # textbook moments of a solid box
     assert [inertia[0][0], inertia[1][1], inertia[2][2]] == pytest.approx(expected, rel=1e-9)
     assert abs(inertia[0][2]) < 1e-15 and mujoco_accepts(path)
+
+
+def test_a_quarter_turn_writes_its_off_diagonals_as_zero(tmp_path: Path) -> None:
+    """A turn's rounding (about 1e-20 here) is written as 0, as the textbook tensor has it."""
+    cylinder = ('<collision>\n      <origin xyz="0 0 0.1"/>\n      <geometry>'
+                '<cylinder radius="0.03" length="0.2"/>')
+    turned = ('<collision>\n      <origin xyz="0 0 0.1" rpy="1.5707963267948966 0 0"/>'
+              '\n      <geometry><cylinder radius="0.03" length="0.2"/>')
+    path = tmp_path / 'arm.urdf'
+    path.write_text(broken('I203').replace(cylinder, turned))
+    CliRunner().invoke(main, ['check', '--fix', str(path)])
+    inertia = load_yourdfpy(path).links[1].inertial.inertia
+    assert inertia[1][1] == pytest.approx(1.0 * 0.03 ** 2 / 2, rel=1e-9)  # axis along y now
+    assert [inertia[0][1], inertia[0][2], inertia[1][2]] == [0.0, 0.0, 0.0]
+    assert 'e-2' not in path.read_text()
 
 
 def test_only_repaired_lines_change_where_the_writer_is_not_byte_exact(tmp_path: Path) -> None:

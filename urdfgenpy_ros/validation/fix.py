@@ -171,7 +171,7 @@ def _tensor(robot: Robot, link: Link | Joint, context: _Context) -> str | None:
     if isinstance(found, str):
         return None
     kind, item, solid = found
-    values = _turned(solid, item.origin.rpy, inertial.origin.rpy)
+    values = _rounded(_turned(solid, item.origin.rpy, inertial.origin.rpy))
     inertial.ixx, inertial.ixy, inertial.ixz = values[0], values[1], values[2]
     inertial.iyy, inertial.iyz, inertial.izz = values[3], values[4], values[5]
     turn = from_xyz_rpy(item.origin.xyz, item.origin.rpy)
@@ -201,6 +201,12 @@ def _turned(solid: Inertial, shape_rpy: tuple[float, float, float],
     out = [[sum(turn[i][k] * tensor[k][m] * turn[j][m] for k in range(3) for m in range(3))
             for j in range(3)] for i in range(3)]
     return out[0][0], out[0][1], out[0][2], out[1][1], out[1][2], out[2][2]
+
+
+def _rounded(values: tuple[float, ...]) -> tuple[float, ...]:
+    """Write as 0 a value below 1e-15 of the largest moment: a turn's rounding, not data."""
+    floor = 1e-15 * max(abs(value) for value in values)
+    return tuple(0.0 if abs(value) < floor else value for value in values)
 
 
 def _new_root(robot: Robot, link: Link | Joint, context: _Context) -> str | None:

@@ -100,12 +100,11 @@ def _line_edits(source_map: XacroMap, line: int, before: str, after: str,
         if '$' in item.value:
             target = _property(source_map, item.value, file) or target
             if '$' in target[4]:
-                return (f'{name}="{item.value}" at {file}:{item.line} is an '
-                        'expression: change it by hand')
+                return f'{name}="{item.value}" at {file}:{item.line} is an expression'
         key = target[:4]
         if key in edits and edits[key].new != now[name]:
             return (f'{name}= at {target[0]}:{target[1]} makes elements that need '
-                    'different values: change it by hand')
+                    'different values')
         file, row, column, _, value, count = target
         edits[key] = XacroEdit(file, row, column, name if count else 'value', value,
                                now[name], count, macro)
