@@ -20,6 +20,7 @@ from pathlib import Path
 
 from click.testing import CliRunner
 from helpers import xacro_expand
+import pytest
 
 from urdfgenpy_ros import Robot
 from urdfgenpy_ros.cli import main
@@ -66,3 +67,37 @@ def test_the_cli_prints_it_once(tmp_path: Path) -> None:
     result = CliRunner().invoke(main, ['tree', str(top), 'usesim:=true'])
     assert result.exit_code == 0
     assert result.stderr.count('warning X103') == 1
+
+
+KINDS = {  # the argument picks the file read: a misspelling breaks the expansion
+    'yaml': """<?xml version="1.0"?>
+<robot name="kinds" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:arg name="kind" default="a"/>
+  <xacro:property name="p" value="${xacro.load_yaml('config/$(arg kind)/p.yaml')}"/>
+  <link name="base_${p['n']}"/>
+</robot>
+""",
+    'include': """<?xml version="1.0"?>
+<robot name="kinds" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:arg name="kind" default="a"/>
+  <xacro:include filename="config/$(arg kind)/parts.xacro"/>
+</robot>
+"""}
+
+
+@pytest.mark.parametrize('how', sorted(KINDS))
+def test_a_misspelling_that_breaks_the_expansion_is_named_on_its_line(
+        how: str, tmp_path: Path) -> None:
+    (tmp_path / 'config' / 'b').mkdir(parents=True)
+    (tmp_path / 'config' / 'b' / 'p.yaml').write_text('n: b\n')
+    (tmp_path / 'config' / 'b' / 'parts.xacro').write_text(
+        '<robot xmlns:xacro="http://www.ros.org/wiki/xacro"><link name="base_b"/></robot>')
+    top = tmp_path / 'kinds.urdf.xacro'
+    top.write_text(KINDS[how])
+    assert 'base_b' in xacro_expand(top, {'kind': 'b'})  # xacro: the suggestion expands
+    result = CliRunner().invoke(main, ['check', str(top), 'kimd:=b'])
+    assert result.exit_code == 2
+    (line,) = [line for line in result.stdout.splitlines() if ' error X001 ' in line]
+    assert "'kimd' is not declared by the files read: did you mean 'kind'?" in line
+    kept = CliRunner().invoke(main, ['check', str(top), 'kimd:=b', 'kind:=b'])  # expands
+    assert ' X001 ' not in kept.stdout and "did you mean 'kind'?" in kept.stdout  # X103

@@ -35,6 +35,27 @@ _USED = re.compile(r'\$\(\s*arg\s+([^\s)]+)')
 def unknown_arguments(files: Iterable[str], mappings: Mapping[str, str],
                       top: str) -> list[ReadWarning]:
     """Return an X103 warning per argument in ``mappings`` no file declares or uses."""
+    return [ReadWarning(SourceLocation(top), 'X103',
+                        f'xacro argument {argument!r} is not declared, so xacro ignores it'
+                        f'{f": did you mean {close!r}?" if close else ""} '
+                        f'(the files declare: {", ".join(declared) or "none"})')
+            for argument, close, declared in _undeclared(files, mappings)]
+
+
+def misspelt_arguments(files: Iterable[str], mappings: Mapping[str, str]) -> str:
+    """
+    Return what to add to a failed expansion's line: each given argument no file read declares
+    and the declared one it is close to (a misspelling the failure may come from), or ''.
+    """
+    readable = [name for name in files if Path(name).is_file()]  # not the one it missed
+    said = [f'{argument!r} is not declared by the files read: did you mean {close!r}?'
+            for argument, close, _ in _undeclared(readable, mappings) if close]
+    return f' (xacro argument {"; ".join(said)})' if said else ''
+
+
+def _undeclared(files: Iterable[str], mappings: Mapping[str, str]
+                ) -> list[tuple[str, str, list[str]]]:
+    """Return each argument no file declares or uses, its closest declared one, all declared."""
     declared: list[str] = []
     used: set[str] = set()
     for name in files:
@@ -44,15 +65,9 @@ def unknown_arguments(files: Iterable[str], mappings: Mapping[str, str],
             return []  # cannot tell: say nothing rather than something wrong
         declared += [found for found in _DECLARED.findall(text) if found not in declared]
         used.update(_USED.findall(text))
-    warnings = []
+    found = []
     for argument in mappings:
-        if argument in declared or argument in used:
-            continue
-        close = difflib.get_close_matches(argument, declared, n=1)
-        guess = f': did you mean {close[0]!r}?' if close else ''
-        known = ', '.join(declared) if declared else 'none'
-        warnings.append(ReadWarning(
-            SourceLocation(top), 'X103',
-            f'xacro argument {argument!r} is not declared, so xacro ignores it{guess} '
-            f'(the files declare: {known})'))
-    return warnings
+        if argument not in declared and argument not in used:
+            close = difflib.get_close_matches(argument, declared, n=1)
+            found.append((argument, close[0] if close else '', declared))
+    return found

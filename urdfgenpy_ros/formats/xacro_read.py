@@ -29,7 +29,7 @@ from typing import Any, TYPE_CHECKING
 from urdfgenpy_ros.errors import (
     MissingDependencyError, ParseError, ReadWarning, SourceLocation)
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
-from urdfgenpy_ros.formats.xacro_args import unknown_arguments
+from urdfgenpy_ros.formats.xacro_args import misspelt_arguments, unknown_arguments
 from urdfgenpy_ros.formats.xacro_map import pretty_print, recording, XacroMap
 from urdfgenpy_ros.report import folder_fix
 from urdfgenpy_ros.resources import PackageResolver
@@ -120,6 +120,7 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
     printed = io.StringIO()
     context = ''
     stack: list[str] = []
+    seen: list[str] = [str(path)]  # the files read when expansion fails
     try:
         with _LOCK, redirect_stderr(printed), _fresh_state(xacro) as includes, \
                 _finding_with(resolver), _mapping(xacro, maps is not None, texts) as recorder:
@@ -128,6 +129,7 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
             except Exception:  # noqa: B902 - where it was, before the stacks are reset
                 context = _macro_context(xacro)
                 stack = [str(name) for name in getattr(xacro, 'filestack', None) or []]
+                seen += [*includes, *stack]
                 raise
             names = list(dict.fromkeys(includes))
             if recorder is not None:  # xacro's own print, with where each tag starts
@@ -145,6 +147,7 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
         said = _xacro_warnings(printed.getvalue())
         if said:
             message += f' (xacro warned: {"; ".join(said)})'
+        message += misspelt_arguments(dict.fromkeys(seen), mappings or {})
         raise ParseError(f'xacro: {message}', _error_place(where, stack, message),
                          'X001') from None
     if warnings is not None:
