@@ -19,7 +19,10 @@ A Gazebo block's ``$(find pkg)/config/controllers.yaml`` has become, once xacro 
 an absolute path of this machine; a material's texture a ``package://`` URI of another
 package. Each such file is copied into the package (``config/``, or ``meshes/`` for meshes
 and images) and named ``$(find <package>)/...`` in Xacro text, ``package://<package>/...``
-where a URI was. Meshes themselves are copied by the scaffolder's mesh pass.
+where a URI was. A path that is no file but lies in the folder of a package the resolver
+finds (a controllers YAML that package installs, not in the folder given) is written back
+as ``$(find <that package>)/...``, and the package depends on it. Meshes themselves are
+copied by the scaffolder's mesh pass.
 """
 
 from __future__ import annotations
@@ -30,7 +33,7 @@ from pathlib import Path
 import re
 
 from urdfgenpy_ros.material import Material
-from urdfgenpy_ros.resources import PackageResolver, ResourceError
+from urdfgenpy_ros.resources import _package_name, PackageResolver, ResourceError
 from urdfgenpy_ros.robot import Robot
 
 FIND_MARK = 'urdfgenpyfindmark'
@@ -39,6 +42,7 @@ FIND_MARK = 'urdfgenpyfindmark'
 _MESHES = {'.stl', '.dae', '.obj', '.ply', '.glb', '.gltf', '.mtl', '.png', '.jpg', '.jpeg',
            '.tga', '.bmp', '.tif', '.tiff'}
 _TOKENS = re.compile(r'(\s+)')
+_FIND = re.compile(FIND_MARK + r'(?:\.([A-Za-z0-9_]+)\.)?')
 
 
 class _Copier:
@@ -50,6 +54,7 @@ class _Copier:
         self.reserved = reserved
         self.files: dict[str, bytes] = {}
         self.done: dict[Path, str] = {}
+        self.borrowed: dict[str, tuple[str, str]] = {}  # path: its package, the rest
 
     def value(self, text: str, uri: bool = False) -> str:
         """
@@ -74,8 +79,22 @@ class _Copier:
         else:
             return token
         if not path.is_file():
-            return token
+            return self._borrowed(token, path, uri)
         return prefix + self._copy(path.resolve())
+
+    def _borrowed(self, token: str, path: Path, uri: bool) -> str:
+        """Return a path in another package's folder as found through it, else ``token``."""
+        for folder in path.parents:
+            name = _package_name(folder)
+            if name is None:
+                continue
+            found = self.resolver.find(name)
+            if found is None or found.resolve() != folder.resolve():
+                return token
+            rest = path.relative_to(folder).as_posix()
+            self.borrowed[str(path)] = name, rest
+            return f'package://{name}/{rest}' if uri else f'{FIND_MARK}.{name}./{rest}'
+        return token
 
     def _copy(self, path: Path) -> str:
         """Copy ``path`` into the package once; return its path relative to the package."""
@@ -92,12 +111,15 @@ class _Copier:
 
 
 def copy_referenced_files(package: str, robot: Robot, search_paths: list[str],
-                          reserved: set[str]) -> dict[str, bytes]:
+                          reserved: set[str],
+                          borrowed: dict[str, tuple[str, str]] | None = None
+                          ) -> dict[str, bytes]:
     """
     Copy the files ``robot``'s blocks and textures name into the package; point them there.
 
     ``robot`` is edited (give it a copy); ``reserved`` are package paths the templates
-    write. Return the files to add (package path: bytes).
+    write. Return the files to add (package path: bytes). Each path written back through
+    another package goes into ``borrowed``: path, that package and the path in it.
     """
     copier = _Copier(package, PackageResolver(search_paths), reserved)
     owners: list = [*robot.links, *robot.joints]
@@ -127,9 +149,11 @@ def copy_referenced_files(package: str, robot: Robot, search_paths: list[str],
         for visual in link.visuals:
             if visual.material is not None:
                 visual.material = moved(visual.material)
+    if borrowed is not None:
+        borrowed.update(copier.borrowed)
     return copier.files
 
 
 def with_find(text: str, package: str) -> str:
-    """Return Xacro text with the mark replaced by ``$(find <package>)``."""
-    return text.replace(FIND_MARK, f'$(find {package})')
+    """Return Xacro text with the marks replaced by ``$(find <package>)`` (or another's)."""
+    return _FIND.sub(lambda found: f'$(find {found.group(1) or package})', text)

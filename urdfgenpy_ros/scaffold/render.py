@@ -191,12 +191,15 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
     robot = copy.deepcopy(robot)
     root = templates or template_root()
     files = _meshes(spec, robot, list(search_paths or ()), warnings)
+    borrowed: dict[str, tuple[str, str]] = {}
     files.update(copy_referenced_files(spec.name, robot, list(search_paths or ()),
-                                       _template_outputs(root, spec.build_type)))
+                                       _template_outputs(root, spec.build_type), borrowed))
     files.update(pictures)
     urdf_files, includes, xacro_file = _urdf_files(spec, robot)
     files.update({path: with_find(data.decode(), spec.name).encode()
                   for path, data in urdf_files.items()})
+    warnings += _borrowed_notes(files, borrowed)
+    depends += [package for package, _ in borrowed.values()]
     sensors = sensors_of(robot)  # built, or read back from <gazebo> blocks
     context = {
         'name': spec.name, 'robot_name': robot.name, 'root_link': robot.root.name,
@@ -243,6 +246,22 @@ def _baked_note(baked: list[tuple[str, str, bool]]) -> list[str]:
     return [f'the package holds the robot as xacro expanded it with {" and ".join(parts)}: '
             'its files do not take these arguments (run urdfgenpy init again with '
             'NAME:=VALUE for other values; its README lists them)']
+
+
+def _borrowed_notes(files: Mapping[str, bytes],
+                    borrowed: Mapping[str, tuple[str, str]]) -> list[str]:
+    """Return a line per path of this machine written back through the package it is in."""
+    lines = []
+    for path, (package, rest) in borrowed.items():
+        forms = (f'$(find {package})/{rest}', f'package://{package}/{rest}')
+        where = [name for name, data in files.items() if name.endswith('.xacro')
+                 and any(form.encode() in data for form in forms)]
+        written = next((form for form in forms for name in where
+                        if form.encode() in files[name]), forms[0])
+        lines.append(f'{", ".join(where) or "the package"}: {path} is in package {package!r} '
+                     f'and no file here: written as {written} and package.xml depends on '
+                     f'{package} (install it where the package runs)')
+    return lines
 
 
 def _template_outputs(root: Path, build_type: str) -> set[str]:
