@@ -44,8 +44,10 @@ def unknown_arguments(files: Iterable[str], mappings: Mapping[str, str],
 
 def misspelt_arguments(files: Iterable[str], mappings: Mapping[str, str]) -> str:
     """
-    Return what to add to a failed expansion's line: each given argument no file read declares
-    and the declared one it is close to (a misspelling the failure may come from), or ''.
+    Return what to add to a failed expansion's line about misspelt arguments, or ''.
+
+    It names each given argument no file read declares and the declared one it is close
+    to: a misspelling the failure may come from.
     """
     readable = [name for name in files if Path(name).is_file()]  # not the one it missed
     said = [f'{argument!r} is not declared by the files read: did you mean {close!r}?'
