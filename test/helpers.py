@@ -193,7 +193,9 @@ def assert_check_urdf_accepts(path: Path) -> None:
 def xacro_expand(path: Path, mappings: dict[str, str] | None = None) -> str:
     """Expand a Xacro file with the real xacro package and return the URDF text."""
     xacro = require_module('xacro')
-    document = xacro.process_file(str(path), mappings=mappings or {})
+    # a copy: xacro stores each argument's default into the mapping it is given, and the
+    # parametrised cases share theirs (a $(find) answered in one test leaked into the next)
+    document = xacro.process_file(str(path), mappings=dict(mappings or {}))
     return document.toprettyxml(indent='  ')
 
 
