@@ -89,7 +89,7 @@ def summary(result: Srdf) -> list[str]:
              f'), {len(result.end_effectors)} end effectors, {len(result.states)} states',
              f'{len(matrix.disabled)} of {total} pairs of {len(matrix.links)} links disabled ('
              + ', '.join(f'{counts[reason]} {reason.value}' for reason in Reason)
-             + f'), {matrix.samples} samples, seed {matrix.seed}']
+             + f'), {matrix.samples} samples, seed {matrix.seed}', *result.notes]
     for (one, two), rate in matrix.rates.items():
         lines.append(f'  Default {one} {two}: in contact in {rate:.2%} of the samples')
     return lines
