@@ -169,3 +169,19 @@ def test_override_without_coal_is_found_in_python(tip: str) -> None:
         f'<robot name="ur">{"".join(_arm("world") + _ur_wrist())}</robot>')
     groups, _ = find_groups(robot, {'manipulator': ('base_link', tip)})
     assert [(group.name, group.tip) for group in groups] == [('manipulator', tip)]
+
+
+def test_update_without_output_updates_the_file_in_place(tmp_path: Path) -> None:
+    urdf = _write(tmp_path, _arm() + _gripper())
+    _srdf(urdf)
+    path = urdf.with_suffix('.srdf')
+    text = path.read_text().replace('<group ', '<!-- mine -->\n    <group ', 1)
+    path.write_text(text.replace('reason="Never"', 'reason="User"', 1))
+    result = CliRunner().invoke(main, ['srdf', str(urdf), '--update', str(path),
+                                       '--samples', '50'])
+    assert result.exit_code == 0, result.output
+    assert '<!-- mine -->' in path.read_text() and 'reason="User"' in path.read_text()
+    etree.parse(str(path))  # whole, well-formed
+    assert sorted(item.name for item in tmp_path.iterdir()) == ['robot.srdf', 'robot.urdf']
+    result = CliRunner().invoke(main, ['srdf', str(urdf)])
+    assert result.exit_code == 2 and "Missing option '--output'" in result.output
