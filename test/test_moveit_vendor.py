@@ -185,3 +185,50 @@ def test_update_without_output_updates_the_file_in_place(tmp_path: Path) -> None
     assert sorted(item.name for item in tmp_path.iterdir()) == ['robot.srdf', 'robot.urdf']
     result = CliRunner().invoke(main, ['srdf', str(urdf)])
     assert result.exit_code == 2 and "Missing option '--output'" in result.output
+
+
+SRDF = '''<?xml version="1.0"?>
+<robot name="vendor">
+  <group name="arm"><chain base_link="base_link" tip_link="wrist_old"/></group>
+  <!-- <group_state name="home" group="arm"> in a comment is no element -->
+  <group_state name="home" group="arm">
+      <joint name="j1" value="0"/>   <joint name="j9" value="0"/>
+  </group_state>
+        <disable_collisions link1="base_link" link2="gone" reason="Never"/>
+  <disable_collisions
+      link1="shoulder" link2="old_wrist" reason="Adjacent"/>
+</robot>
+'''
+
+
+def test_srdf_findings_are_at_the_start_tags_column(tmp_path: Path) -> None:
+    from urdfgenpy_ros.moveit.srdf_check import check_srdf
+    urdf = _write(tmp_path, _arm())
+    path = tmp_path / 'robot.srdf'
+    path.write_text(SRDF)
+    found = check_srdf(Robot.from_urdf(urdf), path, samples=0)
+    lines = SRDF.splitlines()
+    stale = {'wrist_old': 'chain', 'j9': 'joint', 'gone': 'disable_collisions',
+             'old_wrist': 'disable_collisions'}
+    assert sorted(f.message.split("'")[1] for f in found) == sorted(stale)
+    for finding in found:
+        where, name = finding.location, finding.message.split("'")[1]
+        text = lines[where.line - 1]
+        assert text[where.column - 1:].startswith(f'<{stale[name]}'), (finding, text)
+        starts = [index for index in range(where.line) if f'<{stale[name]}' in lines[index]]
+        assert where.line == starts[-1] + 1  # the start tag's line, also when it wraps
+    assert {f.location.column for f in found} == {3, 9, 21, 38}
+
+
+def test_a_urdf_given_as_srdf_is_one_line(tmp_path: Path) -> None:
+    urdf = _write(tmp_path, _arm())
+    xacro = tmp_path / 'robot.urdf.xacro'
+    xacro.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                     '<xacro:include filename="arm.xacro"/></robot>')
+    for wrong in (urdf, xacro):
+        result = CliRunner().invoke(main, ['check', str(urdf), '--srdf', str(wrong)])
+        assert result.exit_code == 2
+        assert result.output.strip().splitlines() == [
+            f'urdfgenpy: {wrong} is not an SRDF but a URDF or Xacro robot (it has <link>, '
+            '<joint> or xacro elements): give --srdf the SRDF file (e.g. '
+            'config/ROBOT.srdf), or make one: urdfgenpy srdf ROBOT -o robot.srdf']
