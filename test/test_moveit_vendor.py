@@ -187,7 +187,7 @@ def test_update_without_output_updates_the_file_in_place(tmp_path: Path) -> None
     assert result.exit_code == 2 and "Missing option '--output'" in result.output
 
 
-SRDF = '''<?xml version="1.0"?>
+SRDF = """<?xml version="1.0"?>
 <robot name="vendor">
   <group name="arm"><chain base_link="base_link" tip_link="wrist_old"/></group>
   <!-- <group_state name="home" group="arm"> in a comment is no element -->
@@ -198,7 +198,7 @@ SRDF = '''<?xml version="1.0"?>
   <disable_collisions
       link1="shoulder" link2="old_wrist" reason="Adjacent"/>
 </robot>
-'''
+"""
 
 
 def test_srdf_findings_are_at_the_start_tags_column(tmp_path: Path) -> None:

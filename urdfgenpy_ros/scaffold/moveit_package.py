@@ -164,7 +164,7 @@ def add_moveit_arguments(parser: argparse.ArgumentParser) -> None:
                                       'urdfgenpy init --moveit --help)')
     group.add_argument('--moveit', action='store_true',
                        help="create a moveit_config package for ROS 2 Jazzy: MoveIt's SRDF, "
-                            "config/*.yaml and launch files, as the Setup Assistant writes "
+                            'config/*.yaml and launch files, as the Setup Assistant writes '
                             'them, for the robot of a description package')
     group.add_argument('--samples', type=int, default=None,
                        help='with --moveit: random states of the collision matrix (default '
