@@ -26,7 +26,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from click.testing import CliRunner
-from helpers import require_module
+from helpers import corpus_file, require_module
 from lxml import etree
 import numpy
 import pytest
@@ -232,3 +232,39 @@ def test_a_urdf_given_as_srdf_is_one_line(tmp_path: Path) -> None:
             f'urdfgenpy: {wrong} is not an SRDF but a URDF or Xacro robot (it has <link>, '
             '<joint> or xacro elements): give --srdf the SRDF file (e.g. '
             'config/ROBOT.srdf), or make one: urdfgenpy srdf ROBOT -o robot.srdf']
+
+
+def test_robotiq_2f85_on_kinova_gen3_opens_at_zero() -> None:
+    """Kinova's Gen3 with the Robotiq 2F-85 (corpus): pinocchio measures the tips' gap."""
+    pinocchio = require_module('pinocchio')
+    path = corpus_file('kortex/kortex_description/robots/gen3_2f85.urdf')
+    from urdfgenpy_ros.moveit.groups import find_groups
+    from urdfgenpy_ros.moveit.srdf import group_states
+    robot = Robot.from_urdf(path)
+    groups, _ = find_groups(robot)
+    states = {state.name: dict(state.values) for state in group_states(robot, groups, {})
+              if state.group == 'gripper'}
+    mimic = {joint.get('name'): (joint.find('mimic').get('joint'),
+                                 float(joint.find('mimic').get('multiplier', '1')),
+                                 float(joint.find('mimic').get('offset', '0')))
+             for joint in etree.parse(str(path)).getroot().iter('joint')
+             if joint.find('mimic') is not None}
+    model = pinocchio.buildModelFromUrdf(str(path))
+    data = model.createData()
+    gaps = {}
+    for name, values in states.items():
+        q = pinocchio.neutral(model)
+        for index in range(1, model.njoints):
+            joint = model.names[index]
+            leader, multiplier, offset = mimic.get(joint, (joint, 1.0, 0.0))
+            if leader in values:  # continuous joints are (cos, sin) in pinocchio
+                angle = values[leader] * multiplier + offset
+                slot, size = model.joints[index].idx_q, model.joints[index].nq
+                q[slot:slot + size] = [numpy.cos(angle), numpy.sin(angle)] if size == 2 \
+                    else [angle]
+        pinocchio.framesForwardKinematics(model, data, q)
+        tips = [data.oMf[model.getFrameId(f'gen3_robotiq_85_{side}_finger_tip_link')]
+                .translation for side in ('left', 'right')]
+        gaps[name] = float(numpy.linalg.norm(tips[0] - tips[1]))
+    assert set(gaps) == {'open', 'close'} and gaps['open'] > gaps['close'] + 0.03, gaps
+    assert states['open'] == {'gen3_robotiq_85_left_knuckle_joint': 0.0}

@@ -17,7 +17,7 @@ Planning groups found from the tree: a chain per limb, a gripper per end effecto
 
 A **gripper** starts at a link where two or more branches carry movable joints (fingers)
 and below which at most two joints move on their own (mimic joints follow) and none is
-continuous (wheels are not fingers); or at the
+continuous but a mimic one (wheels are not fingers; Robotiq's finger tips are); or at the
 parent link of the one joint moving below it, when other joints mimic that joint and
 nothing else moves below it. Its
 group holds the links below that start; its mimic joints are passive.
@@ -78,8 +78,9 @@ class _Tree:
         self.turning: dict[str, bool] = {}  # a continuous joint at or below each link
         for joint, link in reversed(list(robot.walk())):
             below = self.children[link.name]
-            self.turning[link.name] = any(self.turning[j.child] or j.type is JointType.CONTINUOUS
-                                          for j in below)
+            self.turning[link.name] = any(  # a mimic joint turning on is a finger's
+                self.turning[j.child] or (j.type is JointType.CONTINUOUS and j.mimic is None)
+                for j in below)
             self.free[link.name] = sum(self.free[j.child] + _free(j) for j in below)
             self.moving[link.name] = sum(self.moving[j.child] + j.type.is_movable
                                          for j in below)
