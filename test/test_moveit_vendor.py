@@ -268,3 +268,27 @@ def test_robotiq_2f85_on_kinova_gen3_opens_at_zero() -> None:
         gaps[name] = float(numpy.linalg.norm(tips[0] - tips[1]))
     assert set(gaps) == {'open', 'close'} and gaps['open'] > gaps['close'] + 0.03, gaps
     assert states['open'] == {'gen3_robotiq_85_left_knuckle_joint': 0.0}
+
+
+def test_panda_still_opens_at_its_upper_limit() -> None:
+    """Panda's prismatic fingers open at 0.04 (upper): pinocchio measures the fingers."""
+    pinocchio = require_module('pinocchio')
+    from test_moveit_srdf import _urdf
+    from urdfgenpy_ros.moveit.groups import find_groups
+    from urdfgenpy_ros.moveit.srdf import group_states
+    robot = Robot.from_urdf(_urdf('panda'))
+    notes: list[str] = []
+    states = {state.name: dict(state.values)['panda_finger_joint1'] for state in
+              group_states(robot, find_groups(robot)[0], {}, notes) if state.group == 'gripper'}
+    model = pinocchio.buildModelFromUrdf(str(_urdf('panda')))
+    data = model.createData()
+    gaps = {}
+    for name, value in states.items():
+        q = pinocchio.neutral(model)
+        for joint in ('panda_finger_joint1', 'panda_finger_joint2'):
+            q[model.joints[model.getJointId(joint)].idx_q] = value
+        pinocchio.framesForwardKinematics(model, data, q)
+        fingers = [data.oMf[model.getFrameId(f'panda_{side}finger')].translation
+                   for side in ('left', 'right')]
+        gaps[name] = float(numpy.linalg.norm(fingers[0] - fingers[1]))
+    assert gaps['open'] > gaps['close'] + 0.05 and not notes, (gaps, notes)
