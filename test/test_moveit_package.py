@@ -161,3 +161,33 @@ def test_colcon_builds_panda_config_and_its_robot_expands(tmp_path: Path) -> Non
     assert not re.search('K90[1235]', checked.output), checked.output
     for count in re.findall(r'collide in (\d+) of 10000', checked.output):
         assert int(count) < 30, checked.output  # made from 1000 states: under 3 in 1000
+
+
+def test_init_help_lists_the_moveit_options() -> None:
+    from click.testing import CliRunner
+    from urdfgenpy_ros.cli import main as cli
+    result = CliRunner().invoke(cli, ['init', '--help'])
+    assert result.exit_code == 0
+    for option in ('--moveit', '--samples', '--seed', '--group NAME=BASE:TIP'):
+        assert f'  {option}' in result.output, option
+    result = CliRunner().invoke(cli, ['init', 'arm_description', '--seed', '3'])
+    assert result.exit_code == 2 and '--seed: for a moveit_config package, give --moveit' \
+        in result.output
+
+
+def test_init_moveit_group_names_the_chain(tmp_path: Path) -> None:
+    require_module('coal')
+    require_module('jinja2')
+    source = _description(tmp_path)
+    assert main(['arm_moveit_config', '--from', str(source), '--destination-directory',
+                 str(tmp_path), '--samples', '20', '--group', 'manipulator=base_link:palm']) == 0
+    config = tmp_path / 'arm_moveit_config' / 'config'
+    parent = {j.find('child').get('link'): j.find('parent').get('link')
+              for j in etree.parse(str(source)).getroot().iter('joint')}
+    srdf = etree.parse(str(config / 'arm.srdf')).getroot()
+    chains = {g.get('name'): g.find('chain') for g in srdf.iter('group')
+              if g.find('chain') is not None}
+    assert list(chains) == ['manipulator']
+    assert parent[chains['manipulator'].get('tip_link')] == 'fore'
+    kinematics = yaml.safe_load((config / 'kinematics.yaml').read_text())
+    assert list(kinematics) == ['manipulator']

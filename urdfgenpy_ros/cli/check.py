@@ -167,6 +167,9 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
             and not statics:
         raise click.UsageError('--payload, --statics-margin and --mjcf go with --statics: '
                                'give it')
+    if srdf is not None:  # not an SRDF: one line before any robot is read
+        from urdfgenpy_ros.moveit.srdf_check import read_srdf
+        read_srdf(srdf)
     mappings = parse_mappings(tuple(item for item in inputs if ':=' in item))
     files = description_files([item for item in inputs if ':=' not in item])
     # a checked folder (a colcon src/) resolves the packages under it, after -p's

@@ -17,7 +17,9 @@
 from __future__ import annotations
 
 from collections import Counter
+import os
 from pathlib import Path
+import tempfile
 
 import click
 
@@ -31,8 +33,8 @@ from urdfgenpy_ros.moveit.srdf_update import update_srdf
 @click.command()
 @click.argument('source', type=click.Path(exists=True, dir_okay=False, path_type=Path))
 @click.argument('arguments', nargs=-1, metavar='[NAME:=VALUE]...')
-@click.option('--output', '-o', required=True, type=click.Path(dir_okay=False, path_type=Path),
-              help='The SRDF file to write.')
+@click.option('--output', '-o', type=click.Path(dir_okay=False, path_type=Path),
+              help='The SRDF file to write (with --update, by default the updated file).')
 @click.option('--samples', type=click.IntRange(min=0), default=10000, show_default=True,
               help='Random states of the "Never" step (the Setup Assistant\'s default).')
 @click.option('--seed', type=int, default=0, show_default=True,
@@ -49,14 +51,19 @@ from urdfgenpy_ros.moveit.srdf_update import update_srdf
 @click.option('--update', 'existing', metavar='EXISTING',
               type=click.Path(exists=True, dir_okay=False, path_type=Path),
               help='Recompute the collision matrix of this SRDF and keep the rest as written '
-                   '(groups, states, comments, layout, User pairs); OUTPUT may be the same '
-                   'file.')
+                   '(groups, states, comments, layout, User pairs); without -o, the file is '
+                   'updated in place.')
 @click.option('--force', '-f', is_flag=True, help='Overwrite OUTPUT if it exists.')
 @input_options
-def srdf(source: Path, arguments: tuple[str, ...], output: Path, samples: int, seed: int,
-         groups: tuple[str, ...], default_state: str | None, virtual_joint: str,
+def srdf(source: Path, arguments: tuple[str, ...], output: Path | None, samples: int,
+         seed: int, groups: tuple[str, ...], default_state: str | None, virtual_joint: str,
          existing: Path | None, force: bool, package_paths: tuple[Path, ...]) -> None:
     """Write the SRDF of SOURCE: groups, states, end effectors and collision matrix."""
+    if output is None:
+        if existing is None:
+            raise click.UsageError("Missing option '--output' / '-o' (or --update EXISTING "
+                                   'to update a file in place)')
+        output = existing
     same = existing is not None and output.exists() and output.samefile(existing)
     if output.exists() and not force and not same:
         raise UrdfgenpyError(f'{output} exists: pass --force to overwrite it')
@@ -66,7 +73,7 @@ def srdf(source: Path, arguments: tuple[str, ...], output: Path, samples: int, s
             raise click.UsageError('--group makes a new SRDF: with --update, edit the '
                                    "file's groups by hand")
         update = update_srdf(robot, existing, samples, seed, default_state, package_paths)
-        output.write_bytes(update.text.encode('utf-8', 'surrogateescape'))
+        replace_file(output, update.text.encode('utf-8', 'surrogateescape'))
         for line in update.lines() or ['the collision matrix is unchanged']:
             click.echo(line)
         click.echo(f'wrote {output}')
@@ -80,6 +87,20 @@ def srdf(source: Path, arguments: tuple[str, ...], output: Path, samples: int, s
     click.echo(f'wrote {output}')
 
 
+def replace_file(path: Path, data: bytes) -> None:
+    """Write ``data`` to ``path`` atomically: a temporary file beside it, then a rename."""
+    handle, temporary = tempfile.mkstemp(prefix=f'.{path.name}.', dir=path.parent or '.')
+    try:
+        with os.fdopen(handle, 'wb') as stream:
+            stream.write(data)
+        if path.exists():
+            os.chmod(temporary, path.stat().st_mode & 0o7777)
+        os.replace(temporary, path)
+    except BaseException:
+        Path(temporary).unlink(missing_ok=True)
+        raise
+
+
 def summary(result: Srdf) -> list[str]:
     """Return what the SRDF holds, and each Default pair with its collision rate."""
     matrix = result.matrix
@@ -89,7 +110,7 @@ def summary(result: Srdf) -> list[str]:
              f'), {len(result.end_effectors)} end effectors, {len(result.states)} states',
              f'{len(matrix.disabled)} of {total} pairs of {len(matrix.links)} links disabled ('
              + ', '.join(f'{counts[reason]} {reason.value}' for reason in Reason)
-             + f'), {matrix.samples} samples, seed {matrix.seed}']
+             + f'), {matrix.samples} samples, seed {matrix.seed}', *result.notes]
     for (one, two), rate in matrix.rates.items():
         lines.append(f'  Default {one} {two}: in contact in {rate:.2%} of the samples')
     return lines

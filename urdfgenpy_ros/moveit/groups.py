@@ -17,16 +17,19 @@ Planning groups found from the tree: a chain per limb, a gripper per end effecto
 
 A **gripper** starts at a link where two or more branches carry movable joints (fingers)
 and below which at most two joints move on their own (mimic joints follow) and none is
-continuous (wheels are not fingers); or at the
+continuous but a mimic one (wheels are not fingers; Robotiq's finger tips are); or at the
 parent link of the one joint moving below it, when other joints mimic that joint and
 nothing else moves below it. Its
 group holds the links below that start; its mimic joints are passive.
 
 A **chain** runs from the root or a branching link (two or more branches that move) down
-the one branch that moves, to the link above a gripper, or to the end of the branch
-(through fixed links while there is just one). A chain needs two joints that move on
-their own. With one chain it is named ``arm``; with several, after its tip link.
-``overrides`` (name to base and tip) name a chain, or replace the found one with that tip.
+the one branch that moves, to the link above a gripper, or to the end of the branch:
+down fixed joints to the tool frame (the deepest link, when one path of fixed joints
+goes deepest: UR's wrist_3_link, flange, tool0 beside ft_frame). A chain needs two
+joints that move on their own. With one chain it is named ``arm``; with several, after
+its tip link. A root link called ``world`` is the world frame: the search starts at the
+link its one fixed joint holds. ``overrides`` (name to base and tip) name a chain, or
+replace the found one with that tip or over the same joints.
 """
 
 from __future__ import annotations
@@ -75,8 +78,9 @@ class _Tree:
         self.turning: dict[str, bool] = {}  # a continuous joint at or below each link
         for joint, link in reversed(list(robot.walk())):
             below = self.children[link.name]
-            self.turning[link.name] = any(self.turning[j.child] or j.type is JointType.CONTINUOUS
-                                          for j in below)
+            self.turning[link.name] = any(  # a mimic joint turning on is a finger's
+                self.turning[j.child] or (j.type is JointType.CONTINUOUS and j.mimic is None)
+                for j in below)
             self.free[link.name] = sum(self.free[j.child] + _free(j) for j in below)
             self.moving[link.name] = sum(self.moving[j.child] + j.type.is_movable
                                          for j in below)
@@ -108,11 +112,13 @@ def find_groups(robot: Robot, overrides: Mapping[str, tuple[str, str]] | None = 
     tree = _Tree(robot)
     grippers: list[str] = []
     chains: list[tuple[str, str]] = []
-    _search(tree, robot.root.name, robot.root.name, grippers, chains)
+    top = start_link(robot)
+    _search(tree, top, top, grippers, chains)
     named = _chain_names(chains)
     for name, (base, tip) in (overrides or {}).items():
-        robot.chain(tip, base)  # a ModelError unless tip is below base
-        named = {key: value for key, value in named.items() if value[1] != tip and key != name}
+        joints = _free_joints(robot, base, tip)  # a ModelError unless tip is below base
+        named = {key: value for key, value in named.items()
+                 if value[1] != tip and key != name and _free_joints(robot, *value) != joints}
         named[name] = (base, tip)
     groups = [Group(name, base, tip) for name, (base, tip) in named.items()]
     effectors = []
@@ -124,6 +130,35 @@ def find_groups(robot: Robot, overrides: Mapping[str, tuple[str, str]] | None = 
         holder = next((key for key, (_, tip) in named.items() if tip == above), None)
         effectors.append(EndEffector(name, above, name, holder))
     return groups, effectors
+
+
+def start_link(robot: Robot) -> str:
+    """Return the root, or the link a root called ``world`` holds by its one fixed joint."""
+    root = robot.root.name
+    below = list(robot.child_joints(root))
+    if root == 'world' and len(below) == 1 and below[0].type is JointType.FIXED:
+        return below[0].child
+    return root
+
+
+def _free_joints(robot: Robot, base: str, tip: str) -> set[str]:
+    return {joint.name for joint in robot.chain(tip, base) if _free(joint)}
+
+
+def _tool_frame(tree: _Tree, link: str) -> str:
+    """Return the deepest link below ``link`` by fixed joints, when one path goes deepest."""
+    level = [link]
+    while True:
+        following = [joint.child for name in level for joint in tree.children[name]
+                     if joint.type is JointType.FIXED]
+        if not following:
+            break
+        level = following
+    if len(level) == 1:
+        return level[0]
+    while len(tree.children[link]) == 1:  # several as deep: down while it does not branch
+        link = tree.children[link][0].child
+    return link
 
 
 def _search(tree: _Tree, start: str, link: str, grippers: list[str],
@@ -146,9 +181,7 @@ def _search(tree: _Tree, start: str, link: str, grippers: list[str],
                 _search(tree, link, child, grippers, chains)
             return
         if not branches:
-            while len(tree.children[link]) == 1:
-                link = tree.children[link][0].child
-            _close(tree, start, link, chains)
+            _close(tree, start, _tool_frame(tree, link), chains)
             return
         link = branches[0]
 

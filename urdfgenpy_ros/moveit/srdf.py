@@ -23,7 +23,7 @@ Written in the order and layout of MoveIt's Setup Assistant (four-space indentat
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from os import PathLike
 from pathlib import Path
 from typing import Any, TYPE_CHECKING
@@ -34,7 +34,9 @@ from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.floats import fmt
 from urdfgenpy_ros.moveit import sampling
 from urdfgenpy_ros.moveit.collision_matrix import CollisionMatrix, compute_matrix
-from urdfgenpy_ros.moveit.groups import EndEffector, find_groups, Group, parse_group
+from urdfgenpy_ros.moveit.gripper_states import opens_at_upper
+from urdfgenpy_ros.moveit.groups import (EndEffector, find_groups, Group, parse_group,
+                                         start_link)
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -60,6 +62,7 @@ class Srdf:
     states: list[GroupState]
     end_effectors: list[EndEffector]
     matrix: CollisionMatrix
+    notes: list[str] = field(default_factory=list)
 
 
 def group_joints(robot: Robot, group: Group) -> list[str]:
@@ -72,14 +75,15 @@ def group_joints(robot: Robot, group: Group) -> list[str]:
     return [name for name in robot.movable_joints if name in names]
 
 
-def group_states(robot: Robot, groups: list[Group], initial: Mapping[str, float]
-                 ) -> list[GroupState]:
+def group_states(robot: Robot, groups: list[Group], initial: Mapping[str, float],
+                 notes: list[str] | None = None) -> list[GroupState]:
     """
     Return the states of the groups: ``home``, ``open`` and ``close``.
 
     ``home`` of each chain: ros2_control's initial values, else 0 (or mid-range where 0 is
-    outside the limits). ``open`` and ``close`` of each gripper: its joints' upper and
-    lower limits.
+    outside the limits). ``open`` and ``close`` of each gripper: its joints' limits where
+    the finger tips lie farthest apart and nearest (:mod:`.gripper_states`); where that
+    cannot be told, upper and lower, with a line in ``notes``.
     """
     default = dict(zip(robot.movable_joints, sampling.default_state(robot)))
     states = []
@@ -91,11 +95,13 @@ def group_states(robot: Robot, groups: list[Group], initial: Mapping[str, float]
             states.append(GroupState('home', group.name, tuple(
                 (name, float(initial.get(name, default[name]))) for name in joints)))
             continue
-        ranges = [sampling.joint_bounds(robot.get_joint(name)) for name in joints]
-        states.append(GroupState('open', group.name, tuple(
-            (name, high) for name, (_, high) in zip(joints, ranges))))
-        states.append(GroupState('close', group.name, tuple(
-            (name, low) for name, (low, _) in zip(joints, ranges))))
+        ranges = {name: sampling.joint_bounds(robot.get_joint(name)) for name in joints}
+        upper, note = opens_at_upper(robot, group.name, group.links, ranges)
+        if note is not None and notes is not None:
+            notes.append(note)
+        for state, index in (('open', int(upper)), ('close', 1 - int(upper))):
+            states.append(GroupState(state, group.name, tuple(
+                (name, bounds[index]) for name, bounds in ranges.items())))
     return states
 
 
@@ -120,20 +126,26 @@ def build_srdf(robot: Robot, samples: int = 10000, seed: int = 0,
     ``groups``: chain groups to name or override, ``{'arm': ('base_link', 'tool0')}`` or
     ``['arm=base_link:tool0']``. ``default_state``: a group state's name (``home``) or
     joint values, for the "Default" step instead of zeros. ``virtual_joint``: ``fixed``,
-    ``floating`` or ``planar`` to the world, or None for none. ``rates``: count each
-    Default pair's collision rate over the samples (``Srdf.matrix.rates``).
+    ``floating`` or ``planar`` to the world, or None for none (and none when the root
+    link is called ``world``: the URDF holds the robot to the world). ``rates``: count
+    each Default pair's collision rate over the samples (``Srdf.matrix.rates``).
     """
     if virtual_joint is not None and virtual_joint not in VIRTUAL_JOINTS:
         raise ModelError(f'virtual_joint {virtual_joint!r}: one of {", ".join(VIRTUAL_JOINTS)}'
                          ' or None')
     from urdfgenpy_ros.formats.mjcf.actuators import initial_values
+    notes: list[str] = []
+    if virtual_joint is not None and start_link(robot) != robot.root.name:
+        virtual_joint = None
+        notes.append("no virtual joint: the root link 'world' is the world frame (the URDF "
+                     'fixes the robot to the world)')
     found, effectors = find_groups(robot, _overrides(groups))
-    states = group_states(robot, found, initial_values(robot))
+    states = group_states(robot, found, initial_values(robot), notes)
     values = state_values(states, default_state) if isinstance(default_state, str) \
         else default_state
     matrix = compute_matrix(robot, samples, seed, values, search_paths, rates)
     text = write_text(robot, found, states, effectors, matrix, virtual_joint)
-    return Srdf(text, found, states, effectors, matrix)
+    return Srdf(text, found, states, effectors, matrix, notes)
 
 
 def _overrides(groups: Mapping[str, Any] | list[str] | None) -> dict[str, tuple[str, str]]:

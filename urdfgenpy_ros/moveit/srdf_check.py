@@ -25,12 +25,14 @@ from __future__ import annotations
 
 import difflib
 from os import PathLike
+import re
 from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
 from urdfgenpy_ros.dynamics import compiled
-from urdfgenpy_ros.errors import ParseError, SourceLocation, ValidationError
+from urdfgenpy_ros.errors import (ParseError, SourceLocation, UrdfgenpyError,
+                                  ValidationError)
 from urdfgenpy_ros.moveit import sampling
 from urdfgenpy_ros.moveit.collision_matrix import CHUNK, pair
 from urdfgenpy_ros.moveit.contacts import Pair, ShapeSet
@@ -49,32 +51,85 @@ _GROUPS = (('group_state', 'group'), ('end_effector', 'group'),
            ('end_effector', 'parent_group'))
 
 
+_SRDF = ('group', 'group_state', 'end_effector', 'virtual_joint', 'passive_joint',
+         'disable_collisions', 'enable_collisions', 'disable_default_collisions',
+         'link_sphere_approximation', 'joint_property')
+
+
+def start_tags(text: str, root: Any) -> dict[Any, tuple[int, int]]:
+    """
+    Return each element's line and column: where its start tag ``<tagname`` begins.
+
+    lxml gives the line where a start tag ends; the tags are found in the text instead
+    (comments blanked), the k-th ``<tag`` being the k-th element of that tag.
+    """
+    blank = re.sub(r'<!--.*?-->|<!\[CDATA\[.*?\]\]>',
+                   lambda match: re.sub(r'[^\n]', ' ', match.group()), text, flags=re.S)
+    places: dict[Any, tuple[int, int]] = {}
+    for tag in {element.tag for element in root.iter() if isinstance(element.tag, str)}:
+        starts = [match.start() for match in re.finditer(
+            f'<{re.escape(tag)}(?=[\\s/>])', blank)]
+        elements = list(root.getroottree().iter(tag))
+        if len(starts) != len(elements):
+            continue  # an entity or a namespace prefix: lxml's line, column 1
+        for element, start in zip(elements, starts):
+            places[element] = (blank.count('\n', 0, start) + 1,
+                               start - blank.rfind('\n', 0, start))
+    return places
+
+
 class _Findings(list):
     """The findings of one SRDF file."""
 
-    def __init__(self, path: str) -> None:
+    def __init__(self, path: str, places: dict[Any, tuple[int, int]]) -> None:
         super().__init__()
         self.path = path
+        self.places = places
 
     def add(self, code: str, element: Any, what: str, message: str, hint: str) -> None:
-        where = SourceLocation(self.path, element.sourceline, None, None)
+        line, column = self.places.get(element, (element.sourceline, None))
+        where = SourceLocation(self.path, line, column, None)
         self.append(ValidationError(code, severity_of(code), what, where, message, hint))
+
+
+def _is_srdf(root: Any) -> bool:
+    """Return whether ``root`` is an SRDF's: ``<robot>`` without URDF links or Xacro."""
+    if root.tag != 'robot':
+        return False
+    tags = {child.tag for child in root if isinstance(child.tag, str)}
+    urdf = bool(tags & {'link', 'joint'}) or any(tag.startswith('{') for tag in tags)
+    return not urdf or bool(tags & set(_SRDF))
 
 
 def check_srdf(robot: Robot, path: str | PathLike[str], samples: int = 10000, seed: int = 0,
                search_paths: Any = ()) -> list[ValidationError]:
     """Return the findings of the SRDF at ``path`` against ``robot`` (see the module)."""
-    try:
-        root = etree.parse(str(path)).getroot()
-    except (OSError, etree.XMLSyntaxError) as error:
-        raise ParseError(f'{path}: cannot read the SRDF: {error} (give an SRDF file)'
-                         ) from None
-    found = _Findings(str(path))
+    root, text = read_srdf(path)
+    found = _Findings(str(path), start_tags(text, root))
     _names(robot, root, found)
     _chains(robot, root, found)
     _states(robot, root, found)
     _pairs(robot, root, found, samples, seed, search_paths)
-    return sorted(found, key=lambda finding: finding.location.line or 0)
+    return sorted(found, key=lambda finding: (finding.location.line or 0,
+                                              finding.location.column or 0))
+
+
+def read_srdf(path: str | PathLike[str]) -> tuple[Any, str]:
+    """Return the SRDF's root element and text; a file not an SRDF is a UrdfgenpyError."""
+    try:
+        with open(path, 'rb') as stream:
+            data = stream.read()
+        root = etree.fromstring(data)
+    except (OSError, etree.XMLSyntaxError) as error:
+        raise ParseError(f'{path}: cannot read the SRDF: {error} (give an SRDF file)'
+                         ) from None
+    if not _is_srdf(root):
+        what = 'a URDF or Xacro robot (it has <link>, <joint> or xacro elements)' \
+            if root.tag == 'robot' else f'a <{root.tag}> document'
+        raise UrdfgenpyError(f'{path} is not an SRDF but {what}: give --srdf the SRDF '
+                             'file (e.g. config/ROBOT.srdf), or make one: urdfgenpy srdf '
+                             'ROBOT -o robot.srdf')
+    return root, data.decode('utf-8', 'replace')
 
 
 def _stale(found: _Findings, element: Any, kind: str, name: str, known: list[str]) -> None:

@@ -162,9 +162,22 @@ class _Parser(argparse.ArgumentParser):
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command with ``argv``; a usage error is one line too."""
-    parser = _Parser(prog='urdfgenpy init', description='Create a ROS 2 description package.')
+    from urdfgenpy_ros.scaffold.moveit_package import add_moveit_arguments
+    parser = _Parser(prog='urdfgenpy init', description='Create a ROS 2 description package '
+                     '(or, with --moveit, a moveit_config package).')
     add_arguments(parser)
+    add_moveit_arguments(parser)  # listed here; cli/init.py hands --moveit to its own parser
     front_end = FrontEnd(parser.prog)
     # intermixed: NAME:=VALUE may come after the options, as in every other command
-    return exit_status(front_end,
-                       lambda: run(parser.parse_intermixed_args(argv), parser.prog))
+    return exit_status(front_end, lambda: run(_description_only(
+        parser.parse_intermixed_args(argv)), parser.prog))
+
+
+def _description_only(args: argparse.Namespace) -> argparse.Namespace:
+    """Return ``args``, or a UrdfgenpyError for options of a moveit_config package."""
+    from urdfgenpy_ros.scaffold.moveit_package import moveit_only
+    given = (['--moveit'] if args.moveit else []) + moveit_only(args)
+    if given:
+        raise UrdfgenpyError(f'{", ".join(given)}: for a moveit_config package, give '
+                             '--moveit (urdfgenpy init NAME --moveit --from SOURCE)')
+    return args

@@ -84,7 +84,10 @@ def render_package(args: argparse.Namespace) -> dict[str, str]:
     package, urdf_path, folder = description_package(source)
     search = [*args.package_path, str(folder.parent)]  # its own package, found beside it
     robot, _ = load_model(str(source), args.xacro_args, search, INIT_WORDS)
-    srdf = build_srdf(robot, samples=args.samples, seed=args.seed, search_paths=search)
+    srdf = build_srdf(robot, samples=SAMPLES if args.samples is None else args.samples,
+                      seed=args.seed or 0, groups=list(args.groups), search_paths=search)
+    for note in srdf.notes:
+        print(note)
     groups = [group.name for group in srdf.groups if group.base is not None]
     values: dict[str, Any] = {
         'name': args.package_name, 'robot': robot.name, 'description_package': package,
@@ -151,6 +154,36 @@ def _create(args: argparse.Namespace) -> int:
     return 0
 
 
+SAMPLES = 10000  # the Setup Assistant's, as urdfgenpy srdf
+
+
+def add_moveit_arguments(parser: argparse.ArgumentParser) -> None:
+    """Add the options only a moveit_config package has (init --help lists them too)."""
+    group = parser.add_argument_group('a moveit_config package instead',
+                                      'urdfgenpy init NAME --moveit --from SOURCE (see '
+                                      'urdfgenpy init --moveit --help)')
+    group.add_argument('--moveit', action='store_true',
+                       help="create a moveit_config package for ROS 2 Jazzy: MoveIt's SRDF, "
+                            'config/*.yaml and launch files, as the Setup Assistant writes '
+                            'them, for the robot of a description package')
+    group.add_argument('--samples', type=int, default=None,
+                       help='with --moveit: random states of the collision matrix (default '
+                            f'{SAMPLES}, as urdfgenpy srdf)')
+    group.add_argument('--seed', type=int, default=None,
+                       help='with --moveit: seed of the random states (default 0)')
+    group.add_argument('--group', dest='groups', action='append', default=[],
+                       metavar='NAME=BASE:TIP',
+                       help='with --moveit: a chain group to name, or to replace the found '
+                            'one over the same joints (repeatable)')
+
+
+def moveit_only(args: argparse.Namespace) -> list[str]:
+    """Return the options given that go with --moveit only."""
+    return [option for option, given in (('--samples', args.samples is not None),
+                                         ('--seed', args.seed is not None),
+                                         ('--group', bool(args.groups))) if given]
+
+
 class _Parser(argparse.ArgumentParser):
     """argparse's parser, whose usage errors are the boundary's one line."""
 
@@ -172,10 +205,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument('--maintainer-email', default='maintainer@example.com')
     parser.add_argument('--xacro-args', nargs='*', default=[], metavar='NAME:=VALUE')
     parser.add_argument('--package-path', '-p', action='append', default=[])
-    parser.add_argument('--samples', type=int, default=10000,
-                        help='random states of the collision matrix (urdfgenpy srdf)')
-    parser.add_argument('--seed', type=int, default=0)
     parser.add_argument('--force', action='store_true', help='overwrite existing files')
+    add_moveit_arguments(parser)
     return exit_status(FrontEnd(parser.prog),
                        lambda: _create(parser.parse_args(argv)))
 
