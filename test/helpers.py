@@ -192,11 +192,21 @@ def assert_check_urdf_accepts(path: Path) -> None:
 
 def xacro_expand(path: Path, mappings: dict[str, str] | None = None) -> str:
     """Expand a Xacro file with the real xacro package and return the URDF text."""
-    xacro = require_module('xacro')
-    # a copy: xacro stores each argument's default into the mapping it is given, and the
-    # parametrised cases share theirs (a $(find) answered in one test leaked into the next)
-    document = xacro.process_file(str(path), mappings=dict(mappings or {}))
-    return document.toprettyxml(indent='  ')
+    require_module('xacro')
+    # In a process of its own: the judge shares no module state with the code under test
+    # (in one full run a $(find) answered for an earlier test's package index came back
+    # later in this process; xacro keeps its state in module globals).
+    script = ('import sys, xacro\n'
+              'mappings = dict(word.split(":=", 1) for word in sys.argv[2:])\n'
+              'document = xacro.process_file(sys.argv[1], mappings=mappings)\n'
+              'sys.stdout.write(document.toprettyxml(indent="  "))\n')
+    words = [f'{name}:={value}' for name, value in (mappings or {}).items()]
+    done = subprocess.run([sys.executable, '-c', script, str(path), *words],
+                          capture_output=True, text=True, encoding='utf-8', timeout=120,
+                          env=dict(os.environ, PYTHONIOENCODING='utf-8'))
+    if done.returncode != 0:
+        raise RuntimeError(f'xacro failed on {path}: {done.stderr.strip()[-2000:]}')
+    return done.stdout
 
 
 def load_yourdfpy(path: Path):
