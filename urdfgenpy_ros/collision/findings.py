@@ -53,8 +53,12 @@ class LinkResult:
     def line(self) -> str:
         """Return the measures in words."""
         m = self.measures
-        text = (f'{self.method}: IoU {m.iou:.3f}, coverage {m.coverage:.3f}, excess volume '
-                f'{m.excess:.1%}, faces {m.faces_before} -> {m.faces_after} '
+        shape = (f'IoU {m.iou:.3f}, coverage {m.coverage:.3f}, excess volume {m.excess:.1%}'
+                 if m.how != 'none' else 'IoU and coverage not measured (a shape has no '
+                 'volume)')
+        if m.how == 'sampled':
+            shape += ' (sampled with points: a mesh is no valid manifold solid)'
+        text = (f'{self.method}: {shape}, faces {m.faces_before} -> {m.faces_after} '
                 f"({m.parts} part{'s' if m.parts != 1 else ''})")
         if self.budget is not None and m.faces_after > self.budget:
             text += (f', above the budget of {self.budget} faces (fast-simplification '
@@ -79,7 +83,8 @@ class CollisionReport:
         """Return the results under ``min_iou``."""
         if self.min_iou is None:
             return []
-        return [result for result in self.results if result.measures.iou < self.min_iou]
+        return [result for result in self.results
+                if result.measures.how != 'none' and result.measures.iou < self.min_iou]
 
     def findings(self) -> list[ValidationError]:
         """Return one finding per collision, in ``check``'s format."""

@@ -1,0 +1,128 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+
+"""
+The measure on meshes that are no valid manifold, judged by trimesh's sampled points.
+
+CAD meshes hold several overlapping bodies in one file, open shells and decimated meshes
+with holes; the measure must count each volume once and never report an IoU above its
+coverage or above 1.  The judge is trimesh alone: points drawn in the bounding box,
+inside a solid when inside one of its bodies (hole-filled by trimesh).
+"""
+
+from __future__ import annotations
+
+import numpy
+import pytest
+import trimesh
+
+from urdfgenpy_ros.collision.measure import measure
+from urdfgenpy_ros.collision.parts import mesh_part
+
+SAMPLES = 60000
+
+
+def _box(extents, center):
+    made = trimesh.creation.box(extents)
+    made.apply_translation(center)
+    return made
+
+
+def _judge_inside(mesh, points):
+    """Return which points are inside some body of ``mesh`` (trimesh ray test)."""
+    found = numpy.zeros(len(points), bool)
+    for body in mesh.split(only_watertight=False):
+        if not body.is_watertight:
+            trimesh.repair.fill_holes(body)
+        found |= body.contains(points)
+    return found
+
+
+def judged(original, new):
+    """Return (IoU, coverage) of ``new`` against ``original`` by trimesh's points."""
+    rng = numpy.random.default_rng(3)
+    bounds = numpy.vstack([original.bounds, new.bounds])
+    points = rng.uniform(bounds.min(axis=0), bounds.max(axis=0), size=(SAMPLES, 3))
+    was, now = _judge_inside(original, points), _judge_inside(new, points)
+    both = numpy.count_nonzero(was & now)
+    return both / numpy.count_nonzero(was | now), both / numpy.count_nonzero(was)
+
+
+def two_overlapping_boxes():
+    """Return two boxes overlapping by half, in one mesh (not unioned), like CAD STLs."""
+    return trimesh.util.concatenate([_box((0.1, 0.1, 0.1), (0, 0, 0)),
+                                     _box((0.1, 0.1, 0.1), (0.05, 0, 0))])
+
+
+def open_box():
+    """Return a box with one side (two triangles) missing."""
+    made = _box((0.1, 0.06, 0.04), (0, 0, 0))
+    keep = numpy.ones(len(made.faces), bool)
+    keep[:2] = False
+    made.update_faces(keep)
+    return made
+
+
+def l_beam():
+    """Return a closed L beam (two flanges unioned by manifold3d)."""
+    return trimesh.boolean.union([_box((0.2, 0.03, 0.01), (0.1, 0, 0.005)),
+                                  _box((0.01, 0.03, 0.2), (0.005, 0, 0.1))],
+                                 engine='manifold')
+
+
+def with_hole(mesh):
+    """Return ``mesh`` with one triangle taken out (as a decimation can leave it)."""
+    made = mesh.copy()
+    keep = numpy.ones(len(made.faces), bool)
+    keep[0] = False
+    made.update_faces(keep)
+    return made
+
+
+def _check(measures, original, new):
+    iou, coverage = judged(original, new)
+    assert measures.iou <= measures.coverage + 1e-9 <= 1 + 1e-9
+    assert measures.iou == pytest.approx(iou, abs=0.02)
+    assert measures.coverage == pytest.approx(coverage, abs=0.02)
+
+
+def test_overlapping_bodies_count_once():
+    original = two_overlapping_boxes()
+    hull = original.convex_hull
+    _check(measure(original, [mesh_part(hull)]), original, hull)
+    _check(measure(original, [mesh_part(original)]), original, original)
+
+
+def test_an_open_mesh_is_measured_not_zero():
+    original = open_box()
+    hull = original.convex_hull
+    _check(measure(original, [mesh_part(hull)]), original, hull)
+
+
+def test_a_decimated_mesh_with_a_hole_is_measured():
+    original = l_beam()
+    holed = with_hole(original)
+    measures = measure(original, [mesh_part(holed)])
+    _check(measures, original, holed)
+    assert measures.how in ('exact', 'sampled')
+
+
+def test_a_hull_with_degenerate_faces_is_measured():
+    original = l_beam()
+    hull = original.convex_hull
+    vertices = numpy.vstack([hull.vertices, hull.vertices[:1]])  # a zero-area triangle
+    faces = numpy.vstack([hull.faces, [[0, len(vertices) - 1, 1]]])
+    broken = trimesh.Trimesh(vertices, faces, process=False)
+    _check(measure(original, [mesh_part(broken)]), original, hull)
