@@ -24,6 +24,8 @@ inside a solid when inside one of its bodies (hole-filled by trimesh).
 
 from __future__ import annotations
 
+import re
+
 import numpy
 import pytest
 import trimesh
@@ -126,3 +128,17 @@ def test_a_hull_with_degenerate_faces_is_measured():
     faces = numpy.vstack([hull.faces, [[0, len(vertices) - 1, 1]]])
     broken = trimesh.Trimesh(vertices, faces, process=False)
     _check(measure(original, [mesh_part(broken)]), original, hull)
+
+
+def test_mjcf_decimate_is_measured_as_the_hull_mujoco_collides_with(tmp_path):
+    from click.testing import CliRunner
+    from collision_fixtures import l_beam as beam, write_fixtures
+
+    from urdfgenpy_ros.cli import main
+    source = write_fixtures(tmp_path, ('l_beam',))
+    result = CliRunner().invoke(main, ['convert', str(source), str(tmp_path / 'robot.xml'),
+                                       '--collision', 'decimate'])
+    assert result.exit_code == 0, result.output
+    iou = float(re.search(r'decimate: IoU ([0-9.]+)', result.output).group(1))
+    solid = beam()
+    assert iou == pytest.approx(solid.volume / solid.convex_hull.volume, abs=0.01)

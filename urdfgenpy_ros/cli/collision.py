@@ -112,14 +112,16 @@ def mjcf_collisions(robot: Robot, method: str | None, search_paths: tuple[Path, 
 
     The new meshes go to a scratch folder that lives as long as the returned object (the
     MJCF writer copies them to its assets); capsules stay capsules. Each collision's line
-    goes to stderr.
+    goes to stderr. Each mesh is measured as its convex hull, the shape MuJoCo collides
+    with, and ``auto`` chooses on that.
     """
     if method is None:
         return None
     from urdfgenpy_ros.collision.apply import apply_plan, plan_collisions
     scratch = tempfile.TemporaryDirectory(prefix='urdfgenpy-collision-')
     plan = plan_collisions(robot, method, None, mesh_folder=Path(scratch.name),
-                           search_paths=search_paths, capsules=True, absolute=True)
+                           search_paths=search_paths, capsules=True, absolute=True,
+                           options=Options(hulls=True))  # MuJoCo collides with hulls
     for line in plan.report.lines():
         click.echo(line, err=True)
     apply_plan(robot, plan)

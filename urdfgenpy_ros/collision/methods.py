@@ -46,16 +46,18 @@ class Options:
     threshold: float = 0.05  # decompose: CoACD's concavity threshold
     seed: int = 0
     split: bool = False  # primitive: one per convex part of a decomposition
+    hulls: bool = False  # the consumer collides with each mesh's hull (MuJoCo): measure so
 
     def key(self, method: str) -> tuple:
         """Return the options that change ``method``'s result (for the cache)."""
+        measured = ('hulls',) if self.hulls else ()
         if method == 'decimate':
-            return (self.max_faces,)
+            return (self.max_faces, *measured)
         if method == 'decompose':
-            return (self.max_faces, self.max_hulls, self.threshold, self.seed)
+            return (self.max_faces, self.max_hulls, self.threshold, self.seed, *measured)
         if method == 'primitive' and self.split:
-            return (self.max_faces, self.max_hulls, self.threshold, self.seed, True)
-        return ()
+            return (self.max_faces, self.max_hulls, self.threshold, self.seed, True, *measured)
+        return measured
 
 
 def hull(solid: Any, options: Options) -> list[Part]:

@@ -81,7 +81,8 @@ def simplify(path: Path, scale: tuple[float, float, float], method: str, options
         if not solid:
             solid.extend(closed_solid(load_solid(path, scale), str(path)))
         parts = RUN[name](solid[0], options)
-        result = Simplified(name, parts, measure(solid[0], parts, inertial), list(solid[1]))
+        measures = measure(solid[0], parts, inertial, options.hulls)
+        result = Simplified(name, parts, measures, list(solid[1]))
         cache.store(entry, result.parts, result.measures, result.repairs)
         return result
 
