@@ -24,6 +24,7 @@ inside a solid when inside one of its bodies (hole-filled by trimesh).
 
 from __future__ import annotations
 
+import json
 import re
 
 import numpy
@@ -34,6 +35,11 @@ from urdfgenpy_ros.collision.measure import measure
 from urdfgenpy_ros.collision.parts import mesh_part
 
 SAMPLES = 60000
+
+
+@pytest.fixture(autouse=True)
+def _own_cache(tmp_path_factory, monkeypatch):
+    monkeypatch.setenv('URDFGENPY_CACHE_DIR', str(tmp_path_factory.mktemp('cache')))
 
 
 def _box(extents, center):
@@ -142,3 +148,31 @@ def test_mjcf_decimate_is_measured_as_the_hull_mujoco_collides_with(tmp_path):
     iou = float(re.search(r'decimate: IoU ([0-9.]+)', result.output).group(1))
     solid = beam()
     assert iou == pytest.approx(solid.volume / solid.convex_hull.volume, abs=0.01)
+
+
+def test_auto_says_when_no_method_reaches_the_floor(tmp_path):
+    from collision_fixtures import l_beam as beam, write_fixtures
+    from helpers import require_module
+
+    from urdfgenpy_ros import Robot
+    require_module('coacd')
+    robot = Robot.from_urdf(write_fixtures(tmp_path, ('l_beam',)))
+    report = robot.simplify_collisions('auto', hulls=True, max_hulls=1)
+    solid = beam()
+    assert solid.volume / solid.convex_hull.volume < 0.5  # trimesh: one hull cannot fit
+    assert report.floor == 0.9
+    line = next(line for line in report.lines() if 'K911' in line)
+    assert 'no method reaches IoU 0.9' in line
+    assert f'the best is {report.results[0].method}: IoU' in line
+
+
+def test_auto_json_shows_the_floor_used(tmp_path):
+    from click.testing import CliRunner
+    from collision_fixtures import write_fixtures
+
+    from urdfgenpy_ros.cli import main
+    source = write_fixtures(tmp_path, ('cylinder_link',))
+    result = CliRunner().invoke(main, ['collision', str(source), '-o', str(tmp_path / 'o.urdf'),
+                                       '--method', 'auto', '--json'])
+    assert result.exit_code == 0, result.output
+    assert json.loads(result.stdout)['min_iou'] == 0.9

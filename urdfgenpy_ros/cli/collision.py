@@ -84,7 +84,7 @@ def collision(source: Path, arguments: tuple[str, ...], output: Path, method: st
     for line in report.lines():
         click.echo(line, err=True)
     if as_json:
-        click.echo(json.dumps({'method': method, 'min_iou': min_iou,
+        click.echo(json.dumps({'method': method, 'min_iou': report.floor,
                                'collisions': report.table()}, indent=2))
     below = report.below()
     if below:
