@@ -176,3 +176,35 @@ def test_auto_json_shows_the_floor_used(tmp_path):
                                        '--method', 'auto', '--json'])
     assert result.exit_code == 0, result.output
     assert json.loads(result.stdout)['min_iou'] == 0.9
+
+
+def test_decompose_parts_stay_within_the_face_budget(tmp_path):
+    from collision_fixtures import dense_torus
+
+    from urdfgenpy_ros.collision.methods import decompose, Options
+    from helpers import require_module
+    require_module('coacd')
+    torus = dense_torus()
+    options = Options(max_faces=400, max_hulls=8)
+    parts = decompose(torus, options)
+    hulls = [trimesh.Trimesh(part.vertices, part.faces).convex_hull for part in parts]
+    assert len(torus.faces) > 400
+    assert sum(len(hull.faces) for hull in hulls) <= 400  # trimesh's (qhull's) hulls
+    assert max(len(hull.vertices) for hull in hulls) <= 400 // 16 + 2
+
+
+def test_a_heavier_result_is_not_called_light(tmp_path):
+    from click.testing import CliRunner
+    from collision_fixtures import u_bracket, write_fixtures
+    from helpers import require_module
+
+    from urdfgenpy_ros.cli import main
+    require_module('coacd')
+    source = write_fixtures(tmp_path, ('u_bracket',))
+    result = CliRunner().invoke(main, ['collision', str(source), '-o', str(tmp_path / 'o.urdf'),
+                                       '--method', 'decompose'])
+    assert result.exit_code == 0, result.output
+    written = sum(len(trimesh.load(path).faces) for path in tmp_path.glob('u_bracket_*.stl'))
+    assert written > len(u_bracket().faces)  # trimesh: the parts have more faces
+    assert '0 collision mesh(es) made light' in result.output
+    assert 'more faces than its source had' in result.output

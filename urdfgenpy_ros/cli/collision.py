@@ -101,8 +101,12 @@ def collision(source: Path, arguments: tuple[str, ...], output: Path, method: st
         raise
     none = '' if report.results or report.unclosed else (
         ' (no chosen link has a mesh collision: primitives are light already)')
-    click.echo(f'wrote {output}: {len(report.results)} collision mesh(es) made light by '
-               f'{method}, {len(written)} new mesh file(s){none}', err=True)
+    heavier = [result.link for result in report.results
+               if result.measures.faces_after > result.measures.faces_before]
+    more = (f' and {len(heavier)} replaced by more faces than its source had (convex parts: '
+            f"link {', '.join(heavier)})") if heavier else ''
+    click.echo(f'wrote {output}: {len(report.results) - len(heavier)} collision mesh(es) made '
+               f'light by {method}{more}, {len(written)} new mesh file(s){none}', err=True)
 
 
 def mjcf_collisions(robot: Robot, method: str | None, search_paths: tuple[Path, ...]
