@@ -208,3 +208,35 @@ def test_a_heavier_result_is_not_called_light(tmp_path):
     assert written > len(u_bracket().faces)  # trimesh: the parts have more faces
     assert '0 collision mesh(es) made light' in result.output
     assert 'more faces than its source had' in result.output
+
+
+def _cli(*arguments):
+    from click.testing import CliRunner
+
+    from urdfgenpy_ros.cli import main
+    return CliRunner().invoke(main, [str(argument) for argument in arguments])
+
+
+def test_a_run_with_other_options_writes_other_files(tmp_path):
+    from collision_fixtures import robot_text
+    source = tmp_path / 'robot.urdf'
+    trimesh.creation.icosphere(subdivisions=4, radius=0.05).export(tmp_path / 'ball.stl')
+    source.write_text(robot_text({'ball': 'ball.stl'}))
+    for faces in (200, 300):
+        result = _cli('collision', source, '-o', tmp_path / f'o{faces}.urdf', '--method',
+                      'decimate', '--max-faces', faces)
+        assert result.exit_code == 0, result.output
+    written = sorted(tmp_path.glob('ball_decimate_*.stl'))
+    assert [len(trimesh.load(path).faces) <= 300 for path in written] == [True, True]
+    assert sorted(len(trimesh.load(path).faces) for path in written)[0] <= 200
+
+
+def test_a_clash_names_the_cli_option_and_prints_no_json(tmp_path):
+    from collision_fixtures import write_fixtures
+    source = write_fixtures(tmp_path, ('l_beam',))
+    (tmp_path / 'l_beam_hull.stl').write_bytes(b'not this')
+    result = _cli('collision', source, '-o', tmp_path / 'o.urdf', '--method', 'hull', '--json')
+    assert result.exit_code == 2
+    assert '--mesh-folder' in result.output and 'mesh_folder=' not in result.output
+    assert result.stdout == ''
+    assert (tmp_path / 'l_beam_hull.stl').read_bytes() == b'not this'

@@ -83,15 +83,12 @@ def collision(source: Path, arguments: tuple[str, ...], output: Path, method: st
     report = plan.report
     for line in report.lines():
         click.echo(line, err=True)
-    if as_json:
-        click.echo(json.dumps({'method': method, 'min_iou': report.floor,
-                               'collisions': report.table()}, indent=2))
     below = report.below()
     if below:
         raise UrdfgenpyError(f'{output} not written: {len(below)} collision(s) below '
                              f'--min-iou {min_iou} (above; pick another --method or lower '
                              '--min-iou)')
-    written = apply_plan(robot, plan)
+    written = apply_plan(robot, plan, '--mesh-folder')
     try:
         rebase_meshes(robot, source.parent, output.parent)  # relative meshes still found
         robot.save(output)
@@ -99,6 +96,9 @@ def collision(source: Path, arguments: tuple[str, ...], output: Path, method: st
         for path in written:  # nothing is written unless the whole run succeeds
             path.unlink(missing_ok=True)
         raise
+    if as_json:  # only once written: a table of files that are not there would mislead
+        click.echo(json.dumps({'method': method, 'min_iou': report.floor,
+                               'collisions': report.table()}, indent=2))
     none = '' if report.results or report.unclosed else (
         ' (no chosen link has a mesh collision: primitives are light already)')
     heavier = [result.link for result in report.results
