@@ -83,15 +83,12 @@ def collision(source: Path, arguments: tuple[str, ...], output: Path, method: st
     report = plan.report
     for line in report.lines():
         click.echo(line, err=True)
-    if as_json:
-        click.echo(json.dumps({'method': method, 'min_iou': min_iou,
-                               'collisions': report.table()}, indent=2))
     below = report.below()
     if below:
         raise UrdfgenpyError(f'{output} not written: {len(below)} collision(s) below '
                              f'--min-iou {min_iou} (above; pick another --method or lower '
                              '--min-iou)')
-    written = apply_plan(robot, plan)
+    written = apply_plan(robot, plan, '--mesh-folder')
     try:
         rebase_meshes(robot, source.parent, output.parent)  # relative meshes still found
         robot.save(output)
@@ -99,10 +96,17 @@ def collision(source: Path, arguments: tuple[str, ...], output: Path, method: st
         for path in written:  # nothing is written unless the whole run succeeds
             path.unlink(missing_ok=True)
         raise
+    if as_json:  # only once written: a table of files that are not there would mislead
+        click.echo(json.dumps({'method': method, 'min_iou': report.floor,
+                               'collisions': report.table()}, indent=2))
     none = '' if report.results or report.unclosed else (
         ' (no chosen link has a mesh collision: primitives are light already)')
-    click.echo(f'wrote {output}: {len(report.results)} collision mesh(es) made light by '
-               f'{method}, {len(written)} new mesh file(s){none}', err=True)
+    heavier = [result.link for result in report.results
+               if result.measures.faces_after > result.measures.faces_before]
+    more = (f' and {len(heavier)} replaced by more faces than its source had (convex parts: '
+            f"link {', '.join(heavier)})") if heavier else ''
+    click.echo(f'wrote {output}: {len(report.results) - len(heavier)} collision mesh(es) made '
+               f'light by {method}{more}, {len(written)} new mesh file(s){none}', err=True)
 
 
 def mjcf_collisions(robot: Robot, method: str | None, search_paths: tuple[Path, ...]
@@ -112,14 +116,16 @@ def mjcf_collisions(robot: Robot, method: str | None, search_paths: tuple[Path, 
 
     The new meshes go to a scratch folder that lives as long as the returned object (the
     MJCF writer copies them to its assets); capsules stay capsules. Each collision's line
-    goes to stderr.
+    goes to stderr. Each mesh is measured as its convex hull, the shape MuJoCo collides
+    with, and ``auto`` chooses on that.
     """
     if method is None:
         return None
     from urdfgenpy_ros.collision.apply import apply_plan, plan_collisions
     scratch = tempfile.TemporaryDirectory(prefix='urdfgenpy-collision-')
     plan = plan_collisions(robot, method, None, mesh_folder=Path(scratch.name),
-                           search_paths=search_paths, capsules=True, absolute=True)
+                           search_paths=search_paths, capsules=True, absolute=True,
+                           options=Options(hulls=True))  # MuJoCo collides with hulls
     for line in plan.report.lines():
         click.echo(line, err=True)
     apply_plan(robot, plan)

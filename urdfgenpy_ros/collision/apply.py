@@ -25,7 +25,9 @@ is kept only when it holds the same bytes.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+import hashlib
+import json
 import math
 import os
 from pathlib import Path
@@ -122,7 +124,7 @@ def _plan_one(run: _Run, link: str, index: int, item: Collision, numbered: int |
     except OpenMeshError as error:
         run.plan.report.unclosed.append((link, where, str(error)))
         return
-    stem = _stem(link, numbered, done.method)
+    stem = _stem(link, numbered, done.method, run.options)
     parts = _written(done.parts, run.capsules)
     several = sum(part.kind == 'mesh' for part in parts) > 1
     uri = _uri_maker(geometry.filename, run.folder, run.relative_to)
@@ -147,10 +149,19 @@ def _chosen_links(robot: RobotModel, links: Any) -> list[Any]:
     return [link for link in robot.links if link.name in names]
 
 
-def _stem(link: str, index: int | None, method: str) -> str:
-    """Return the file stem of a link's new collision mesh: link, collision, method."""
+def _stem(link: str, index: int | None, method: str, options: Options) -> str:
+    """
+    Return the file stem of a link's new collision mesh: link, collision, method, options.
+
+    A method whose result depends on options (decimate, decompose) gets a short hash of
+    them, so that a run with other options writes other files.
+    """
     safe = re.sub(r'[^A-Za-z0-9_.-]', '_', link)
-    return f'{safe}_{index}_{method}' if index is not None else f'{safe}_{method}'
+    stem = f'{safe}_{index}_{method}' if index is not None else f'{safe}_{method}'
+    key = replace(options, hulls=False).key(method)
+    if key:
+        stem += '_' + hashlib.sha256(json.dumps(list(key)).encode()).hexdigest()[:6]
+    return stem
 
 
 def _written(parts: list[Part], capsules: bool) -> list[Part]:
@@ -222,8 +233,13 @@ def _stl(part: Part) -> bytes:
     return data if isinstance(data, bytes) else data.encode()
 
 
-def apply_plan(robot: RobotModel, plan: Plan) -> list[Path]:
-    """Write the planned files (none, on failure), then replace the collisions."""
+def apply_plan(robot: RobotModel, plan: Plan, folder_option: str = 'mesh_folder=') -> list[Path]:
+    """
+    Write the planned files (none, on failure), then replace the collisions.
+
+    ``folder_option`` is how a failure names the mesh folder option (``--mesh-folder`` on
+    the command line).
+    """
     written: list[Path] = []
     try:
         for target, data in plan.files.items():
@@ -231,7 +247,7 @@ def apply_plan(robot: RobotModel, plan: Plan) -> list[Path]:
                 if target.read_bytes() == data:
                     continue
                 raise ModelError(f'collision: {target} exists with other content: move it '
-                                 'away, or pass mesh_folder= (nothing was written)')
+                                 f'away, or pass {folder_option} (nothing was written)')
             target.parent.mkdir(parents=True, exist_ok=True)
             with open(target, 'xb') as stream:
                 written.append(target)
@@ -242,7 +258,7 @@ def apply_plan(robot: RobotModel, plan: Plan) -> list[Path]:
         if isinstance(error, ModelError):
             raise
         raise ModelError(f'collision: cannot write {error.filename}: {error.strerror} '
-                         '(nothing was written; pass mesh_folder= a folder you can '
+                         f'(nothing was written; pass {folder_option} a folder you can '
                          'write)') from None
     later_first = sorted(plan.replacements.items(), key=lambda entry: -entry[0][1])
     for (name, index), collisions in later_first:  # earlier indices stay right

@@ -34,7 +34,7 @@ from typing import Any
 from urdfgenpy_ros.collision.measure import Measures
 from urdfgenpy_ros.collision.parts import Part
 
-VERSION = 2  # bump when a method's result changes for the same input
+VERSION = 3  # bump when a method's result changes for the same input
 
 
 def folder() -> Path | None:

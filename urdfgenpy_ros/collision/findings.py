@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from urdfgenpy_ros.collision.measure import Measures
+from urdfgenpy_ros.collision.methods import DEFAULT_MIN_IOU
 from urdfgenpy_ros.errors import ModelError, Severity, SourceLocation, ValidationError
 
 HINTS = {
@@ -53,8 +54,12 @@ class LinkResult:
     def line(self) -> str:
         """Return the measures in words."""
         m = self.measures
-        text = (f'{self.method}: IoU {m.iou:.3f}, coverage {m.coverage:.3f}, excess volume '
-                f'{m.excess:.1%}, faces {m.faces_before} -> {m.faces_after} '
+        shape = (f'IoU {m.iou:.3f}, coverage {m.coverage:.3f}, excess volume {m.excess:.1%}'
+                 if m.how != 'none' else 'IoU and coverage not measured (a shape has no '
+                 'volume)')
+        if m.how == 'sampled':
+            shape += ' (sampled with points: a mesh is no valid manifold solid)'
+        text = (f'{self.method}: {shape}, faces {m.faces_before} -> {m.faces_after} '
                 f"({m.parts} part{'s' if m.parts != 1 else ''})")
         if self.budget is not None and m.faces_after > self.budget:
             text += (f', above the budget of {self.budget} faces (fast-simplification '
@@ -75,11 +80,25 @@ class CollisionReport:
     unclosed: list[tuple[str, SourceLocation, str]] = field(default_factory=list)
     files: list[Path] = field(default_factory=list)
 
+    @property
+    def floor(self) -> float | None:
+        """Return the IoU floor the run used: ``min_iou``, or auto's default."""
+        if self.min_iou is None and self.method == 'auto':
+            return DEFAULT_MIN_IOU
+        return self.min_iou
+
+    def _short(self, result: LinkResult) -> bool:
+        """Return whether auto kept ``result`` although no method reached its floor."""
+        floor = self.floor
+        return (self.method == 'auto' and floor is not None and result.measures.how != 'none'
+                and result.measures.iou < floor)
+
     def below(self) -> list[LinkResult]:
         """Return the results under ``min_iou``."""
         if self.min_iou is None:
             return []
-        return [result for result in self.results if result.measures.iou < self.min_iou]
+        return [result for result in self.results
+                if result.measures.how != 'none' and result.measures.iou < self.min_iou]
 
     def findings(self) -> list[ValidationError]:
         """Return one finding per collision, in ``check``'s format."""
@@ -92,8 +111,12 @@ class CollisionReport:
                     'K912', Severity.ERROR, element, result.location,
                     f'{result.line()}: IoU below --min-iou {self.min_iou}', HINTS['K912']))
             else:
+                text = result.line()
+                if self._short(result):
+                    text = (f'auto: no method reaches IoU {self.floor} (the floor; set it with '
+                            f'--min-iou), the best is {text}')
                 found.append(ValidationError('K911', Severity.WARNING, element,
-                                             result.location, result.line(), HINTS['K911']))
+                                             result.location, text, HINTS['K911']))
             if result.repairs:
                 found.append(ValidationError('K913', Severity.WARNING, element,
                                              result.location, '; '.join(result.repairs),

@@ -15,6 +15,9 @@
 """
 How much shape a simplified collision loses, measured with manifold3d's exact booleans.
 
+Where a solid is no valid manifold (open, overlapping bodies) the volumes are sampled
+with points instead (:mod:`.solids`); ``Measures.how`` says which.
+
 IoU is the volume of the intersection over that of the union of the original solid and
 the new shape; coverage the share of the original inside the new shape (a collision must
 not lose material a gripper touches); excess the volume the new shape adds, as a share
@@ -27,6 +30,7 @@ from dataclasses import asdict, dataclass
 from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.collision.parts import Part
+from urdfgenpy_ros.collision.solids import parts_manifold, sampled, solid_manifold
 from urdfgenpy_ros.errors import ModelError
 
 if TYPE_CHECKING:
@@ -50,6 +54,7 @@ class Measures:
     faces_after: int
     parts: int
     inertia_change: float | None = None  # largest principal moment's, when from the mesh
+    how: str = 'exact'  # 'exact' (manifold3d booleans), 'sampled' (points inside), 'none'
 
     def as_dict(self) -> dict[str, Any]:
         """Return the measures as plain data (for JSON and the cache)."""
@@ -85,37 +90,36 @@ def closed_solid(mesh: Any, name: str) -> tuple[Any, list[str]]:
     return mesh, repairs
 
 
-def manifold_of(mesh: Any) -> Any:
-    """Return a closed trimesh mesh as a ``manifold3d.Manifold``."""
-    import manifold3d
-    import numpy
-    data = manifold3d.Mesh(vert_properties=numpy.asarray(mesh.vertices, numpy.float32),
-                           tri_verts=numpy.asarray(mesh.faces, numpy.uint32))
-    return manifold3d.Manifold(data)
+def measure(original: Any, parts: list[Part], inertial: Inertial | None = None,
+            hulls: bool = False) -> Measures:
+    """
+    Return the measures of ``parts`` against the closed solid ``original``.
 
-
-def union_of(parts: list[Part]) -> Any:
-    """Return the union of the parts as one Manifold."""
-    import manifold3d
-    solids = [manifold_of(part.solid()) for part in parts]
-    if len(solids) == 1:
-        return solids[0]
-    return manifold3d.Manifold.batch_boolean(solids, manifold3d.OpType.Add)
-
-
-def measure(original: Any, parts: list[Part], inertial: Inertial | None = None) -> Measures:
-    """Return the measures of ``parts`` against the closed solid ``original``."""
-    solid = manifold_of(original)
-    new = union_of(parts)
-    before, after = solid.volume(), new.volume()
-    common = (solid ^ new).volume()
+    Exact (manifold3d) when both are valid manifolds and the volumes agree, else sampled;
+    with ``hulls`` every mesh part is measured as its convex hull (as MuJoCo collides).
+    """
+    solid, new = solid_manifold(original), parts_manifold(parts, hulls)
+    how = 'exact'
+    if solid is not None and new is not None:
+        before, after = solid.volume(), new.volume()
+        common = (solid ^ new).volume()
+    if solid is None or new is None or not _consistent(before, after, common):
+        before, after, common = sampled(original, parts, hulls)
+        how = 'sampled'
+    if before <= 0 or after <= 0:
+        how, before, after, common = 'none', 1.0, 1.0, 0.0
     union = before + after - common
-    return Measures(iou=common / union if union > 0 else 0.0,
-                    coverage=min(common / before, 1.0) if before > 0 else 0.0,
-                    excess=max(after - common, 0.0) / before if before > 0 else 0.0,
+    return Measures(iou=min(common / union, 1.0), coverage=min(common / before, 1.0),
+                    excess=max(after - common, 0.0) / before,
                     faces_before=len(original.faces),
                     faces_after=sum(part.face_count for part in parts), parts=len(parts),
-                    inertia_change=_inertia_change(original, new, inertial))
+                    inertia_change=None if new is None else
+                    _inertia_change(original, new, inertial), how=how)
+
+
+def _consistent(before: float, after: float, common: float) -> bool:
+    """Return whether exact volumes can be (an intersection is no larger than either)."""
+    return before > 0 and after > 0 and 0 <= common <= min(before, after) * (1 + 1e-6)
 
 
 def _principal(mesh: Any, mass: float) -> Any:

@@ -34,6 +34,7 @@ METHODS = ('hull', 'decompose', 'primitive', 'decimate', 'auto')
 LIGHTEST_FIRST = ('primitive', 'hull', 'decompose', 'decimate')
 """The order ``auto`` tries the methods in: fewest contacts and faces first."""
 DEFAULT_MIN_IOU = 0.9  # what auto keeps when no --min-iou is given
+_FEWEST_VERTICES = 16  # a convex part of CoACD has at least this many, whatever the budget
 _TIE = 0.005  # primitives this close in IoU fit equally: the lighter one is kept
 
 
@@ -46,16 +47,18 @@ class Options:
     threshold: float = 0.05  # decompose: CoACD's concavity threshold
     seed: int = 0
     split: bool = False  # primitive: one per convex part of a decomposition
+    hulls: bool = False  # the consumer collides with each mesh's hull (MuJoCo): measure so
 
     def key(self, method: str) -> tuple:
         """Return the options that change ``method``'s result (for the cache)."""
+        measured = ('hulls',) if self.hulls else ()
         if method == 'decimate':
-            return (self.max_faces,)
+            return (self.max_faces, *measured)
         if method == 'decompose':
-            return (self.max_faces, self.max_hulls, self.threshold, self.seed)
+            return (self.max_faces, self.max_hulls, self.threshold, self.seed, *measured)
         if method == 'primitive' and self.split:
-            return (self.max_faces, self.max_hulls, self.threshold, self.seed, True)
-        return ()
+            return (self.max_faces, self.max_hulls, self.threshold, self.seed, True, *measured)
+        return measured
 
 
 def hull(solid: Any, options: Options) -> list[Part]:
@@ -64,7 +67,11 @@ def hull(solid: Any, options: Options) -> list[Part]:
 
 
 def decompose(solid: Any, options: Options) -> list[Part]:
-    """Return CoACD's convex parts of the solid (decimated first when large; seeded)."""
+    """
+    Return CoACD's convex parts of the solid (decimated first when large; seeded).
+
+    Each part has at most :func:`part_vertices` vertices, so the parts stay light.
+    """
     try:
         import coacd
     except ImportError:
@@ -75,13 +82,23 @@ def decompose(solid: Any, options: Options) -> list[Part]:
     source = decimated(solid, options.max_faces * 10)
     pieces = coacd.run_coacd(coacd.Mesh(source.vertices, source.faces),
                              threshold=options.threshold, max_convex_hull=options.max_hulls,
-                             seed=options.seed)
+                             seed=options.seed, decimate=True,
+                             max_ch_vertex=part_vertices(options))
     parts = []
     for vertices, faces in pieces:
         piece = trimesh.Trimesh(vertices, faces).convex_hull  # closed, outward, convex
         if piece.volume > 0:
             parts.append(mesh_part(piece))
     return parts or hull(solid, options)
+
+
+def part_vertices(options: Options) -> int:
+    """
+    Return CoACD's vertex limit per convex part: the parts share ``max_faces`` between them.
+
+    A convex hull of V vertices has at most 2V - 4 triangles.
+    """
+    return max(_FEWEST_VERTICES, options.max_faces // (2 * max(options.max_hulls, 1)) + 2)
 
 
 AGGRESSION = 3

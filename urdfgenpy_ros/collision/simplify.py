@@ -17,8 +17,9 @@
 One collision mesh made light: loaded, closed, simplified and measured, through the cache.
 
 ``auto`` tries the methods lightest first (:data:`methods.LIGHTEST_FIRST`) and keeps the
-first whose intersection over union reaches ``min_iou``; when none does, the one that
-comes closest, which the caller refuses with its numbers.
+first whose intersection over union reaches ``min_iou`` (when decompose does, decimate is
+tried too and the one with fewer faces kept); when none does, the one that comes closest,
+which the caller says or refuses with its numbers.
 """
 
 from __future__ import annotations
@@ -81,7 +82,8 @@ def simplify(path: Path, scale: tuple[float, float, float], method: str, options
         if not solid:
             solid.extend(closed_solid(load_solid(path, scale), str(path)))
         parts = RUN[name](solid[0], options)
-        result = Simplified(name, parts, measure(solid[0], parts, inertial), list(solid[1]))
+        measures = measure(solid[0], parts, inertial, options.hulls)
+        result = Simplified(name, parts, measures, list(solid[1]))
         cache.store(entry, result.parts, result.measures, result.repairs)
         return result
 
@@ -91,6 +93,9 @@ def simplify(path: Path, scale: tuple[float, float, float], method: str, options
     tried = []
     for name in LIGHTEST_FIRST:
         tried.append(run(name))
-        if tried[-1].measures.iou >= floor:
-            return tried[-1]
+        if tried[-1].measures.iou >= floor and name != 'decompose':
+            break  # decompose can be heavier than decimate: both are weighed
+    reaching = [result for result in tried if result.measures.iou >= floor]
+    if reaching:
+        return min(reaching, key=lambda result: result.measures.faces_after)
     return max(tried, key=lambda result: result.measures.iou)
