@@ -287,14 +287,10 @@ def _every_urdf() -> list:
             *corpus_cases(corpus, [str(path.relative_to(CORPUS)) for path in corpus])]
 
 
-@pytest.mark.parametrize('path', _every_urdf())
-def test_what_sdformat_converts_we_convert_and_what_it_drops_validate_names(
-        path: Path, check_sdf, tmp_path: Path) -> None:
+def readable_robot(path: Path):
+    """Return the robot of ``path``; skip a file we refuse, Xacro, or one validate() refuses."""
     from urdfgenpy_ros import ParseError, Severity
     from urdfgenpy_ros.formats import load
-    code, _, theirs, _, _ = check_sdf(path)  # libsdformat's own URDF conversion
-    if code != 0:
-        pytest.skip('libsdformat does not convert the original')
     try:
         robot = load(path)
     except ParseError as error:
@@ -304,6 +300,16 @@ def test_what_sdformat_converts_we_convert_and_what_it_drops_validate_names(
     errors = [f for f in robot.validate(check_meshes=False) if f.severity is Severity.ERROR]
     if errors:
         pytest.skip(f'validate() refuses it first: {errors[0]}')
+    return robot
+
+
+@pytest.mark.parametrize('path', _every_urdf())
+def test_what_sdformat_converts_we_convert_and_what_it_drops_validate_names(
+        path: Path, check_sdf, tmp_path: Path) -> None:
+    code, _, theirs, _, _ = check_sdf(path)  # libsdformat's own URDF conversion
+    if code != 0:
+        pytest.skip('libsdformat does not convert the original')
+    robot = readable_robot(path)
     lumped = _without_mimic(robot).to_sdf(tmp_path / 'ours.sdf', lump_fixed=True)
     code, _, ours, _, message = check_sdf(tmp_path / 'ours.sdf')
     assert code == 0, message

@@ -190,19 +190,11 @@ def _every_urdf() -> list:
 @pytest.mark.parametrize('path', _every_urdf())
 def test_gazebo_settings_match_libsdformat_on_every_robot(
         path: Path, printed, tmp_path: Path) -> None:
-    from urdfgenpy_ros import ParseError, Severity
-    from urdfgenpy_ros.formats import load
+    from test_sdf import readable_robot
     reference = printed(path)  # libsdformat's own URDF conversion
     if reference is None:
         pytest.skip('libsdformat does not convert the original')
-    try:
-        robot = load(path)
-    except ParseError as error:
-        pytest.skip(f'not a URDF we read: {error}')
-    if any(warning.code == 'X101' for warning in robot.read_warnings):
-        pytest.skip('Xacro: libsdformat converted the unexpanded file')
-    if any(f.severity is Severity.ERROR for f in robot.validate(check_meshes=False)):
-        pytest.skip('validate() refuses it first')
+    robot = readable_robot(path)
     try:
         ours = printed(_ours(robot, tmp_path))
     except ValueError as error:  # planar joints: SDF has none
