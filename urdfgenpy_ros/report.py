@@ -25,13 +25,13 @@ messages name the front end's own option for package folders (:func:`folder_fix`
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
 from contextvars import ContextVar
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 import sys
 
-from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.errors import InputError, ParseError, UrdfgenpyError
 
 EXIT_KNOWN_ERROR = 2
 """Exit status of the command-line tools for a user's mistake (the node exits 1)."""
@@ -52,7 +52,8 @@ class FrontEnd:
     ``prog`` leads the line (None: the logger names the program already); ``usage_errors``
     are the front end's own user-error types (click's UsageError); ``package_paths`` is how
     it names the folders ``$(find pkg)`` and ``package://`` resolve through;
-    ``verbose()`` true prints the traceback too.
+    ``verbose()`` true prints the traceback too. ``inputs`` are its words for the inputs
+    of the front door (``source``, ``args``, ``package_paths``: its option or parameter).
     """
 
     prog: str | None
@@ -61,10 +62,22 @@ class FrontEnd:
     package_paths: str = 'in search_paths / --package-path'
     verbose: Callable[[], bool] = lambda: False
     usage_errors: tuple[type[BaseException], ...] = ()
+    inputs: Mapping[str, str] = field(default_factory=dict)
 
     def line(self, error: BaseException) -> str:
         """Return the one line saying ``error``."""
-        return f'{self.prog}: {one_line(error)}' if self.prog else one_line(error)
+        said = self.said(error)
+        return f'{self.prog}: {said}' if self.prog else said
+
+    def said(self, error: BaseException) -> str:
+        """Return ``error``'s message in this front end's words, on one line."""
+        if isinstance(error, InputError) and error.where in self.inputs:
+            return ' '.join(error.said(self.inputs[error.where]).split())
+        text = one_line(error)
+        folders = self.inputs.get('package_paths')
+        if folders is not None and isinstance(error, ParseError):  # the reader's hint
+            return text.replace('--package-path', folders)
+        return text
 
 
 LIBRARY = FrontEnd(None)

@@ -42,14 +42,14 @@ def view(path: Path, arguments: tuple[str, ...], port: int, host: str,
     The findings are those of urdfgenpy check with the same --ignore and -p, the file's
     suppression comments included.
     """
-    from urdfgenpy_ros.formats import load
+    from urdfgenpy_ros.formats import open_description
     from urdfgenpy_ros.robot import Robot
     from urdfgenpy_ros.validation.checklist import ReviewOptions
     from urdfgenpy_ros.viewer.web import RobotViewer
     mappings = parse_mappings(arguments)
 
     def read() -> Robot:
-        return load(path, mappings, package_paths)
+        return open_description(path, mappings, package_paths)
 
     def watched(robot: Robot) -> list[str]:
         return sorted({str(path.resolve()), *robot.included_files})

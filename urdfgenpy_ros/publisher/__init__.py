@@ -13,3 +13,7 @@
 # limitations under the License.
 
 """The publisher node; only its ``node`` module imports rclpy."""
+
+NODE_INPUTS = {'source': "parameter 'model'", 'args': "parameter 'xacro_args'",
+               'package_paths': "parameter 'package_paths'"}
+"""How the node names the inputs of the front door: its parameters."""

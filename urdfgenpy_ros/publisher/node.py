@@ -39,9 +39,10 @@ from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
 
 from urdfgenpy_ros.errors import Severity, UrdfgenpyError
-from urdfgenpy_ros.model_source import load_model
+from urdfgenpy_ros.formats.open import files_read, open_description
+from urdfgenpy_ros.publisher import NODE_INPUTS
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
-from urdfgenpy_ros.report import boundary, FrontEnd, KNOWN_ERRORS, one_line
+from urdfgenpy_ros.report import boundary, FrontEnd, KNOWN_ERRORS
 from urdfgenpy_ros.validation.checklist import review, ReviewOptions
 from urdfgenpy_ros.validation.consumers import is_physics_only, physics_warning
 from urdfgenpy_ros.validation.suppressions import parse_codes
@@ -195,8 +196,8 @@ class PublisherNode(Node):
     # ---- model ------------------------------------------------------------------------
 
     def _load(self) -> tuple[Robot, list[str]]:
-        robot, watched = load_model(self.values['model'], self.values['xacro_args'],
-                                    self.values['package_paths'])
+        robot, watched = _open(self.values['model'], self.values['xacro_args'],
+                               self.values['package_paths'])
         # the file's own suppression comments count, as in `urdfgenpy check`, and 'ignore'
         found = review(robot, self.review_options)
         findings, silenced = found.findings, found.suppressed
@@ -246,9 +247,10 @@ class PublisherNode(Node):
             robot, watched = self._load()
             states = self._joint_states(robot)
         except KNOWN_ERRORS as error:
+            said = _WORDS.said(error)
             self.get_logger().error(f'reload failed, still publishing the last good model: '
-                                    f'{one_line(error)}')
-            return False, one_line(error)
+                                    f'{said}')
+            return False, said
         previous = dict(self.states.free)
         for name, joint in states.free.items():
             if name in previous:
@@ -382,6 +384,17 @@ class _TfPublisher:
 
 EXIT_NODE_ERROR = 1
 """The node's exit status for a user's mistake (a bad file, model or parameter)."""
+_WORDS = FrontEnd(None, inputs=NODE_INPUTS)
+
+
+def _open(model: str, xacro_args: list[str], package_paths: list[str]
+          ) -> tuple[Robot, list[str]]:
+    """Return the robot the ``model`` parameter names ('': the example), files to watch."""
+    if not model:
+        from urdfgenpy_ros.examples import pan_tilt_unit
+        return pan_tilt_unit(), []
+    robot = open_description(model, xacro_args, package_paths)
+    return robot, files_read(model, robot)
 
 
 def _start() -> PublisherNode:
@@ -397,7 +410,8 @@ def main(args: list[str] | None = None) -> int:
     rclpy.init(args=args)
     node = None
     said = FrontEnd(None, exit_code=EXIT_NODE_ERROR,  # the logger names the node
-                    say=rclpy.logging.get_logger('urdfgenpy_publisher').error)
+                    say=rclpy.logging.get_logger('urdfgenpy_publisher').error,
+                    inputs=NODE_INPUTS)
     try:
         with boundary(said):
             node = _start()
