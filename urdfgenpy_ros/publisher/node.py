@@ -126,17 +126,7 @@ class PublisherNode(Node):
             raise UrdfgenpyError(
                 f'bad parameter: {error} (an empty list has no type in ROS 2: leave the '
                 'parameter out to get its default)') from None
-        for name, (default, kind, description) in _PARAMETERS.items():
-            descriptor = ParameterDescriptor(description=description)
-            if kind is None:
-                descriptor.dynamic_typing = True
-            else:
-                descriptor.type = kind
-            if not self.has_parameter(name):
-                self.declare_parameter(name, default, descriptor)
-        self.values = {name: self.get_parameter(name).value for name in _PARAMETERS}
-        for name, (_, kind, _) in _PARAMETERS.items():
-            _check_type(name, kind, self.values[name])
+        self.values = self._declare_parameters()
         try:
             self.ignored = parse_codes(' '.join(self.values['ignore']))
         except ValueError as error:
@@ -150,6 +140,37 @@ class PublisherNode(Node):
         self.robot, self.watched = self._load()
         self.description = self.robot.to_urdf()
         self.states = self._joint_states(self.robot)
+        self._publish_description()
+        self._start_joint_states(rate)
+        self._warned: set[str] = set()
+        self._last_warning: dict[str, float] = {}
+        self.gui = None
+        if self.values['gui']:  # imported only here: the viewer's dependencies are heavy
+            from urdfgenpy_ros.publisher.gui import NodeGui
+            self.gui = NodeGui(self, self.values['gui_port'])
+        self.get_logger().info(
+            f'publishing {self.robot.name!r}: {len(self.robot.links)} links, '
+            f'{len(self.states.names)} joint states at {rate} Hz'
+            + ('' if self.description_publisher else ' (robot_description left to '
+               'robot_state_publisher)'))
+
+    def _declare_parameters(self) -> dict[str, Any]:
+        """Declare every parameter not overridden; return the values, each of its type."""
+        for name, (default, kind, description) in _PARAMETERS.items():
+            descriptor = ParameterDescriptor(description=description)
+            if kind is None:
+                descriptor.dynamic_typing = True
+            else:
+                descriptor.type = kind
+            if not self.has_parameter(name):
+                self.declare_parameter(name, default, descriptor)
+        values = {name: self.get_parameter(name).value for name in _PARAMETERS}
+        for name, (_, kind, _) in _PARAMETERS.items():
+            _check_type(name, kind, values[name])
+        return values
+
+    def _publish_description(self) -> None:
+        """Declare ``robot_description`` (read-only) and publish it, latched, if asked."""
         self._updating_description = False
         self.declare_parameter('robot_description', self.description, ParameterDescriptor(
             description='the published URDF (read-only: change the model and call ~/reload)'))
@@ -161,6 +182,9 @@ class PublisherNode(Node):
             self.description_publisher = self.create_publisher(String, 'robot_description',
                                                                latched)
             self.description_publisher.publish(String(data=self.description))
+
+    def _start_joint_states(self, rate: float) -> None:
+        """Publish joint states at ``rate`` Hz, merge the sources, serve ~/reload, watch."""
         # Only now what the description does not need (sensor_msgs imports numpy).
         from sensor_msgs.msg import JointState
         from std_srvs.srv import Trigger
@@ -181,17 +205,6 @@ class PublisherNode(Node):
         self._stamps = self._modification_times()
         if self.values['watch']:
             self.create_timer(0.5, self._watch)
-        self._warned: set[str] = set()
-        self._last_warning: dict[str, float] = {}
-        self.gui = None
-        if self.values['gui']:  # imported only here: the viewer's dependencies are heavy
-            from urdfgenpy_ros.publisher.gui import NodeGui
-            self.gui = NodeGui(self, self.values['gui_port'])
-        self.get_logger().info(
-            f'publishing {self.robot.name!r}: {len(self.robot.links)} links, '
-            f'{len(self.states.names)} joint states at {rate} Hz'
-            + ('' if self.description_publisher else ' (robot_description left to '
-               'robot_state_publisher)'))
 
     # ---- model ------------------------------------------------------------------------
 
