@@ -35,16 +35,24 @@ class Fix(NamedTuple):
 
 PACKAGE_FOLDER = Fix('pass its folder in search_paths / --package-path', 'package_paths')
 """The fix of a package not found: give the folder holding it."""
+FIXES = (PACKAGE_FOLDER,)
+"""Every fix a front end words its own way."""
 
 
 class UrdfgenpyError(Exception):
     """
     Base class of every error this package raises on purpose.
 
-    ``fixes`` are the fixes its message says, as data (a front end words them).
+    ``fixes`` are the fixes its message says in the library's words, as data: a front end
+    says each in its own (``report.FrontEnd.worded``).
     """
 
     fixes: tuple[Fix, ...] = ()
+
+    def __init__(self, *args: object, fixes: tuple[Fix, ...] = ()) -> None:
+        super().__init__(*args)
+        if fixes:
+            self.fixes = fixes
 
 
 class InputError(UrdfgenpyError):
@@ -120,12 +128,12 @@ class ParseError(UrdfgenpyError):
     """A description that cannot be read; the message is one line."""
 
     def __init__(self, message: str, location: SourceLocation | None = None,
-                 code: str = 'P001') -> None:
+                 code: str = 'P001', fixes: tuple[Fix, ...] = ()) -> None:
         self.location = location
         self.code = code
         self.message = message
         prefix = f'{location}: ' if location is not None else ''
-        super().__init__(f'{prefix}error {code} {message}{_via(location)}')
+        super().__init__(f'{prefix}error {code} {message}{_via(location)}', fixes=fixes)
 
 
 class ReadWarning(NamedTuple):

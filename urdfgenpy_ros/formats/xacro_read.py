@@ -27,11 +27,10 @@ import threading
 from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.errors import (
-    MissingDependencyError, ParseError, ReadWarning, SourceLocation)
+    MissingDependencyError, PACKAGE_FOLDER, ParseError, ReadWarning, SourceLocation)
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
 from urdfgenpy_ros.formats.xacro_args import misspelt_arguments, unknown_arguments
 from urdfgenpy_ros.formats.xacro_map import pretty_print, recording, XacroMap
-from urdfgenpy_ros.report import folder_fix
 from urdfgenpy_ros.resources import PackageResolver
 
 if TYPE_CHECKING:
@@ -88,7 +87,7 @@ def _finding_with(resolver: PackageResolver) -> Iterator[None]:
         except Exception:  # noqa: B902 - ament's, rospkg's or an unset AMENT_PREFIX_PATH
             raise _PackageMissing(
                 f'$(find {package}): package {package!r} not found (source the workspace '
-                f'that holds it, or {folder_fix()})'
+                f'that holds it, or {PACKAGE_FOLDER.text})'
             ) from None
 
     substitution_args._eval_find = find
@@ -148,8 +147,8 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
         if said:
             message += f' (xacro warned: {"; ".join(said)})'
         message += misspelt_arguments(dict.fromkeys(seen), mappings or {})
-        raise ParseError(f'xacro: {message}', _error_place(where, stack, message),
-                         'X001') from None
+        raise ParseError(f'xacro: {message}', _error_place(where, stack, message), 'X001',
+                         (PACKAGE_FOLDER,) if PACKAGE_FOLDER.text in message else ()) from None
     if warnings is not None:
         warnings += [ReadWarning(where, 'X102', f'xacro: {line}')
                      for line in _xacro_warnings(printed.getvalue())]

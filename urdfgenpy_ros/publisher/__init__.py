@@ -14,6 +14,9 @@
 
 """The publisher node; only its ``node`` module imports rclpy."""
 
-NODE_INPUTS = {'source': "parameter 'model'", 'args': "parameter 'xacro_args'",
-               'package_paths': "parameter 'package_paths'"}
-"""How the node names the inputs of the front door: its parameters."""
+from urdfgenpy_ros.report import FrontEnd
+
+NODE_WORDS = FrontEnd(None, exit_code=1,
+                      package_paths="in search_paths / parameter 'package_paths'",
+                      inputs={'source': "parameter 'model'", 'args': "parameter 'xacro_args'"})
+"""How the node says a user's mistake: its parameters' names (its logger names the node)."""

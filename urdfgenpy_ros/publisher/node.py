@@ -23,6 +23,7 @@ with ``watch``, reloads when the model or a file it includes changes.
 
 from __future__ import annotations
 
+from dataclasses import replace
 import math
 import os
 import sys
@@ -40,9 +41,9 @@ from std_msgs.msg import String
 
 from urdfgenpy_ros.errors import Severity, UrdfgenpyError
 from urdfgenpy_ros.formats.open import files_read, open_description
-from urdfgenpy_ros.publisher import NODE_INPUTS
+from urdfgenpy_ros.publisher import NODE_WORDS
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
-from urdfgenpy_ros.report import boundary, FrontEnd, KNOWN_ERRORS
+from urdfgenpy_ros.report import boundary, KNOWN_ERRORS
 from urdfgenpy_ros.validation.checklist import review, ReviewOptions
 from urdfgenpy_ros.validation.consumers import is_physics_only, physics_warning
 from urdfgenpy_ros.validation.suppressions import parse_codes
@@ -260,7 +261,7 @@ class PublisherNode(Node):
             robot, watched = self._load()
             states = self._joint_states(robot)
         except KNOWN_ERRORS as error:
-            said = _WORDS.said(error)
+            said = NODE_WORDS.said(error)
             self.get_logger().error(f'reload failed, still publishing the last good model: '
                                     f'{said}')
             return False, said
@@ -397,7 +398,6 @@ class _TfPublisher:
 
 EXIT_NODE_ERROR = 1
 """The node's exit status for a user's mistake (a bad file, model or parameter)."""
-_WORDS = FrontEnd(None, inputs=NODE_INPUTS)
 
 
 def _open(model: str, xacro_args: list[str], package_paths: list[str]
@@ -422,9 +422,7 @@ def main(args: list[str] | None = None) -> int:
     """Run the node until Ctrl-C; return 1 (one log line) when it cannot start."""
     rclpy.init(args=args)
     node = None
-    said = FrontEnd(None, exit_code=EXIT_NODE_ERROR,  # the logger names the node
-                    say=rclpy.logging.get_logger('urdfgenpy_publisher').error,
-                    inputs=NODE_INPUTS)
+    said = replace(NODE_WORDS, say=rclpy.logging.get_logger('urdfgenpy_publisher').error)
     try:
         with boundary(said):
             node = _start()
