@@ -63,7 +63,7 @@ class FrontEnd:
     package_paths: str = 'in search_paths / --package-path'
     verbose: Callable[[], bool] = lambda: False
     usage_errors: tuple[type[BaseException], ...] = ()
-    inputs: Mapping[str, str] = field(default_factory=dict)
+    inputs: Mapping[str, str] = field(default_factory=dict, hash=False)
 
     def line(self, error: BaseException) -> str:
         """Return the one line saying ``error``."""
