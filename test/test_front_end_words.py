@@ -21,7 +21,7 @@ from pathlib import Path
 import subprocess
 import sys
 
-from helpers import REPO
+from helpers import REPO, require_module
 import pytest
 
 from urdfgenpy_ros.errors import PACKAGE_FOLDER, UrdfgenpyError
@@ -120,3 +120,28 @@ def test_the_front_door_refuses_an_input_naming_it_in_each_front_ends_words() ->
     assert NODE_WORDS.said(error) == "parameter 'xacro_args': 'oops' is not name:=value"
     assert FrontEnd('urdfgenpy init', inputs=INIT_INPUTS).line(error) == (
         "urdfgenpy init: --xacro-args: 'oops' is not name:=value")
+
+
+def test_the_viewer_of_urdfgenpy_view_says_the_fix_as_the_command_line(tmp_path: Path) -> None:
+    require_module('viser')
+    from browser import free_port
+    from urdfgenpy_ros.cli.words import CLI_WORDS
+    from urdfgenpy_ros.viewer.web import RobotViewer
+    path = tmp_path / 'robot.urdf'
+    path.write_text('<robot name="r"><link name="base_link"><visual><geometry><mesh '
+                    'filename="package://no_such_description/a.stl"/></geometry></visual>'
+                    '</link></robot>')
+    viewer = RobotViewer(lambda: open_description(path), port=free_port(),
+                         words=CLI_WORDS.worded)
+    try:
+        missing = next(finding for finding in viewer.findings if finding.code == 'R303')
+        assert PACKAGE_FOLDER.text in missing.hint  # the review's own words
+        viewer.select(missing)
+        assert 'pass its folder with -p/--package-path' in viewer._selection.content
+        path.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                        '<xacro:include filename="$(find no_such_description)/a.xacro"/>'
+                        '<link name="base_link"/></robot>')  # a reload that fails
+        assert viewer.reload() is False
+        assert viewer.status.endswith('or pass its folder with -p/--package-path)')
+    finally:
+        viewer.close()

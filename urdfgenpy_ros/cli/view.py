@@ -24,6 +24,7 @@ import threading
 import click
 
 from urdfgenpy_ros.cli._options import ignore_option, input_options, parse_mappings
+from urdfgenpy_ros.cli.words import CLI_WORDS
 
 
 @click.command()
@@ -56,7 +57,8 @@ def view(path: Path, arguments: tuple[str, ...], port: int, host: str,
 
     viewer = RobotViewer(read, host=host, port=port, search_paths=package_paths,
                          watched=watched, review_options=ReviewOptions(
-                             search_paths=package_paths, ignore=ignored))
+                             search_paths=package_paths, ignore=ignored),
+                         words=CLI_WORDS.worded)
     viewer.watch()
     click.echo(f'urdfgenpy view: {viewer.url} shows {viewer.robot.name!r} '
                f'({len(viewer.findings)} findings); Ctrl-C stops')
