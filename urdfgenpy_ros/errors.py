@@ -59,7 +59,7 @@ class InputError(UrdfgenpyError):
     """
     An input of the front door refused: ``where`` names it, ``what`` is wrong, ``fix``.
 
-    ``where`` is ``source``, ``args`` or ``package_paths`` (the parameters of
+    ``where`` is ``source`` or ``args`` (the parameters of
     :func:`~urdfgenpy_ros.formats.open_description`); ``value`` is what was given. A
     front end says ``where`` in its own words (``--from``, ``parameter 'model'``).
     """

@@ -52,9 +52,10 @@ class FrontEnd:
     ``prog`` leads the line (None: the logger names the program already); ``usage_errors``
     are the front end's own user-error types (click's UsageError); ``package_paths`` is how
     it names the folders ``$(find pkg)`` and ``package://`` resolve through (in the fix
-    ``pass its folder ...``);
-    ``verbose()`` true prints the traceback too. ``inputs`` are its words for the inputs
-    of the front door (``source``, ``args``, ``package_paths``: its option or parameter).
+    ``pass its folder ...``); ``verbose()`` true prints the traceback too. ``inputs`` are
+    its names for the inputs of the front door (``source``, ``args``: its options or
+    parameters). A fix is found in a line by its library words, so a message that wraps
+    another's (an assembly's part, a Xacro include) is worded too.
     """
 
     prog: str | None
