@@ -26,8 +26,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from helpers import require_module
 import numpy
-import trimesh
+
+trimesh = require_module('trimesh')  # skips (naming it) without trimesh
 
 SAMPLES = 40000
 

@@ -25,6 +25,7 @@ from pathlib import Path
 import shutil
 import subprocess
 import sys
+from typing import NoReturn
 
 import pytest
 
@@ -68,10 +69,7 @@ def require_tool(name: str, package: str = 'liburdfdom-tools') -> str:
     path = shutil.which(name) or (f'/usr/bin/{name}' if Path(f'/usr/bin/{name}').exists()
                                   else None)
     if path is None:
-        message = f'{name} not installed (apt install {package})'
-        if os.environ.get('URDFGENPY_REQUIRE_TOOLS'):
-            pytest.fail(message)
-        pytest.skip(message)
+        tool_missing(f'{name} not installed (apt install {package})')
     return path
 
 
@@ -95,10 +93,18 @@ def require_module(name: str):
     try:
         return importlib.import_module(name)
     except ImportError as error:
-        message = f'{name} not importable ({error}): pip install -e ".[test]"'
-        if os.environ.get('URDFGENPY_REQUIRE_TOOLS'):
-            pytest.fail(message)
-        pytest.skip(message)
+        tool_missing(f'{name} not importable ({error}): pip install -e ".[test]"')
+
+
+def tool_missing(message: str) -> NoReturn:
+    """
+    Skip naming the missing tool (a whole module, at its top); fail in CI.
+
+    With ``URDFGENPY_REQUIRE_TOOLS`` set (scripts/test, so CI) a tool missing is a failure.
+    """
+    if os.environ.get('URDFGENPY_REQUIRE_TOOLS'):
+        pytest.fail(message)
+    pytest.skip(message, allow_module_level=True)
 
 
 _SDF_CHECKERS: list[Path] = []  # the libsdformat checker, compiled once: its users share it
@@ -169,10 +175,7 @@ def urdfdom6_tool(name: str) -> str:
     tool = Path(sys.executable).parent / name
     if tool.is_file() and importlib.util.find_spec('cmeel') is not None:
         return str(tool)
-    message = f'{name} of urdfdom 6 not installed (pip install cmeel-urdfdom==6.0.0)'
-    if os.environ.get('URDFGENPY_REQUIRE_TOOLS'):
-        pytest.fail(message)
-    pytest.skip(message)
+    tool_missing(f'{name} of urdfdom 6 not installed (pip install cmeel-urdfdom==6.0.0)')
 
 
 def check_urdf_verdict(path: Path, timeout: float = 30) -> bool:

@@ -33,12 +33,13 @@ from collision_fixtures import (coverage_inside, dense_torus, robot_text, sample
 from helpers import pose_matrix, require_module
 import numpy
 import pytest
-import trimesh
 
 from urdfgenpy_ros import Robot
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.collision import CollisionRefusedError
 from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Sphere
+
+trimesh = require_module('trimesh')  # skips (naming it) without trimesh
 
 
 @pytest.fixture(autouse=True)

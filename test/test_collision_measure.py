@@ -27,12 +27,14 @@ from __future__ import annotations
 import json
 import re
 
+from helpers import require_module
 import numpy
 import pytest
-import trimesh
 
 from urdfgenpy_ros.collision.measure import measure
 from urdfgenpy_ros.collision.parts import mesh_part
+
+trimesh = require_module('trimesh')  # skips (naming it) without trimesh
 
 SAMPLES = 60000
 
@@ -152,7 +154,6 @@ def test_mjcf_decimate_is_measured_as_the_hull_mujoco_collides_with(tmp_path):
 
 def test_auto_says_when_no_method_reaches_the_floor(tmp_path):
     from collision_fixtures import l_beam as beam, write_fixtures
-    from helpers import require_module
 
     from urdfgenpy_ros import Robot
     require_module('coacd')
@@ -182,7 +183,6 @@ def test_decompose_parts_stay_within_the_face_budget(tmp_path):
     from collision_fixtures import dense_torus
 
     from urdfgenpy_ros.collision.methods import decompose, Options
-    from helpers import require_module
     require_module('coacd')
     torus = dense_torus()
     options = Options(max_faces=400, max_hulls=8)
@@ -196,7 +196,6 @@ def test_decompose_parts_stay_within_the_face_budget(tmp_path):
 def test_a_heavier_result_is_not_called_light(tmp_path):
     from click.testing import CliRunner
     from collision_fixtures import u_bracket, write_fixtures
-    from helpers import require_module
 
     from urdfgenpy_ros.cli import main
     require_module('coacd')

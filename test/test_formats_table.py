@@ -25,9 +25,8 @@ import pytest
 
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.errors import UrdfgenpyError
-from urdfgenpy_ros.formats import find_format, format_of, FORMATS, load, save
+from urdfgenpy_ros.formats import find_format, format_of, FORMATS, load, open_description, save
 from urdfgenpy_ros.formats.table import readable_suffixes
-from urdfgenpy_ros.model_source import load_model
 from urdfgenpy_ros.robot import Robot
 
 
@@ -84,7 +83,7 @@ def test_every_front_end_refuses_a_suffix_it_cannot_read_in_one_line(
         assert str(path) in lines[0] and 'Traceback' not in result.output
         assert len(lines) == 1 or command[0] == 'check' and lines[1].endswith('1 unreadable')
     with pytest.raises(UrdfgenpyError) as refused:  # the node and the scaffold
-        load_model(str(path))
+        open_description(str(path))
     assert '\n' not in str(refused.value) and name in str(refused.value)
     assembly = tmp_path / 'robot.assembly.yaml'
     assembly.write_text(f'name: r\nparts:\n  - file: {name}\n')

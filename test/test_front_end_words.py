@@ -21,11 +21,12 @@ from pathlib import Path
 import subprocess
 import sys
 
-from helpers import REPO
+from helpers import REPO, require_module
 import pytest
 
-from urdfgenpy_ros.errors import UrdfgenpyError
-from urdfgenpy_ros.model_source import load_model
+from urdfgenpy_ros.errors import PACKAGE_FOLDER, UrdfgenpyError
+from urdfgenpy_ros.formats import open_description
+from urdfgenpy_ros.publisher import NODE_WORDS
 from urdfgenpy_ros.scaffold.command import main as init
 
 XACRO = """<?xml version="1.0"?>
@@ -54,9 +55,11 @@ def test_init_names_its_own_options(options: list[str], said: str, tmp_path: Pat
 def test_the_node_names_its_parameter_for_package_folders(tmp_path: Path) -> None:
     (tmp_path / 'robot.urdf.xacro').write_text(XACRO)
     with pytest.raises(UrdfgenpyError) as raised:
-        load_model(str(tmp_path / 'robot.urdf.xacro'))
-    assert "parameter 'package_paths'" in str(raised.value)
-    assert '--package-path' not in str(raised.value)
+        open_description(str(tmp_path / 'robot.urdf.xacro'))
+    said = NODE_WORDS.said(raised.value)  # as the node says it
+    assert "parameter 'package_paths'" in said and '--package-path' not in said
+    assert raised.value.fixes == (PACKAGE_FOLDER,)  # the fix, as data
+    assert PACKAGE_FOLDER.text in str(raised.value)  # in the library's own words
 
 
 def test_init_from_a_module_in_the_current_folder(tmp_path: Path) -> None:
@@ -84,3 +87,61 @@ def test_init_refuses_a_package_path_that_does_not_exist_as_check_does(
                  str(tmp_path)]) == 2
     assert f'--package-path {missing}: no such folder' in capsys.readouterr().err
     assert not (tmp_path / 'r_description').exists()
+
+
+def test_one_fix_as_data_each_front_end_in_its_own_words(tmp_path: Path) -> None:
+    from urdfgenpy_ros.cli.words import CLI_WORDS
+    from urdfgenpy_ros.report import LIBRARY
+    from urdfgenpy_ros.resources import PackageResolver, ResourceError
+    with pytest.raises(ResourceError) as raised:
+        PackageResolver([tmp_path]).resolve('package://no_such_description/a.stl')
+    error = raised.value
+    assert error.fixes == (PACKAGE_FOLDER,) and PACKAGE_FOLDER.names == 'package_paths'
+    assert LIBRARY.said(error) == str(error)  # Python callers: the library's words
+    assert CLI_WORDS.said(error).endswith('or pass its folder with -p/--package-path)')
+    assert NODE_WORDS.said(error).endswith(
+        "or pass its folder in search_paths / parameter 'package_paths')")
+    assert CLI_WORDS.line(error) == f'urdfgenpy: {CLI_WORDS.said(error)}'
+
+
+def test_the_front_door_refuses_an_input_naming_it_in_each_front_ends_words() -> None:
+    from urdfgenpy_ros.errors import InputError
+    from urdfgenpy_ros.report import FrontEnd
+    from urdfgenpy_ros.scaffold import INIT_INPUTS
+    with pytest.raises(InputError) as raised:
+        open_description('robot.urdf', ['use_sim=true'])
+    assert (raised.value.where, raised.value.value) == ('source', 'robot.urdf')
+    arm = REPO / 'test' / 'fixtures' / 'packages' / 'fixture_description' / 'urdf'
+    with pytest.raises(InputError) as raised:
+        open_description(str(arm / 'arm.urdf.xacro'), ['oops'])
+    error = raised.value
+    assert (error.where, error.value, str(error)) == (
+        'args', 'oops', "args: 'oops' is not name:=value")
+    assert NODE_WORDS.said(error) == "parameter 'xacro_args': 'oops' is not name:=value"
+    assert FrontEnd('urdfgenpy init', inputs=INIT_INPUTS).line(error) == (
+        "urdfgenpy init: --xacro-args: 'oops' is not name:=value")
+
+
+def test_the_viewer_of_urdfgenpy_view_says_the_fix_as_the_command_line(tmp_path: Path) -> None:
+    require_module('viser')
+    from browser import free_port
+    from urdfgenpy_ros.cli.words import CLI_WORDS
+    from urdfgenpy_ros.viewer.web import RobotViewer
+    path = tmp_path / 'robot.urdf'
+    path.write_text('<robot name="r"><link name="base_link"><visual><geometry><mesh '
+                    'filename="package://no_such_description/a.stl"/></geometry></visual>'
+                    '</link></robot>')
+    viewer = RobotViewer(lambda: open_description(path), port=free_port(),
+                         words=CLI_WORDS.worded)
+    try:
+        missing = next(finding for finding in viewer.findings if finding.code == 'R303')
+        assert PACKAGE_FOLDER.text in missing.hint  # the review's own words
+        viewer.select(missing)
+        assert 'pass its folder with -p/--package-path' in viewer._selection.content
+        path.write_text('<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">'
+                        '<xacro:include filename="$(find no_such_description)/a.xacro"/>'
+                        '<link name="base_link"/></robot>')  # a reload that fails
+        assert viewer.reload() is False
+        assert viewer.status.endswith('or pass its folder with -p/--package-path)')
+    finally:
+        viewer.close()

@@ -30,11 +30,14 @@ import subprocess
 
 from helpers import build_sdf_checker, check_urdf, require_module, urdfdom6_tool
 from helpers import xacro_expand
-from hypothesis import given, settings, strategies as st
 import pytest
 from urdfgenpy_ros import Capsule, Inertial, Origin, Robot
 from urdfgenpy_ros.errors import ParseError, Severity
 from urdfgenpy_ros.transforms import from_xyz_rpy
+
+hypothesis = require_module('hypothesis')  # its decorators are needed at import time
+st = require_module('hypothesis.strategies')
+given, settings = hypothesis.given, hypothesis.settings
 
 # Quaternions (x y z w) of every origin in the fixtures: some unit, some written to 7 digits
 QUATS = {

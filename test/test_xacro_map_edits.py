@@ -31,9 +31,13 @@ import re
 import tempfile
 
 from click.testing import CliRunner
-from hypothesis import given, HealthCheck, settings, strategies as st
+from helpers import require_module
 
 from urdfgenpy_ros.cli import main
+
+hypothesis = require_module('hypothesis')  # its decorators are needed at import time
+st = require_module('hypothesis.strategies')
+given, HealthCheck, settings = hypothesis.given, hypothesis.HealthCheck, hypothesis.settings
 
 NS = 'xmlns:xacro="http://www.ros.org/wiki/xacro"'
 INERTIA = '<inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/>'

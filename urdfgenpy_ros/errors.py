@@ -21,8 +21,56 @@ from enum import Enum
 from typing import NamedTuple
 
 
+class Fix(NamedTuple):
+    """
+    How to fix a user's mistake, as data: the library's words and the input they name.
+
+    ``names`` is the input the fix points the user at (``package_paths``): each front end
+    says it in its own words (``-p/--package-path``, the node's parameter).
+    """
+
+    text: str
+    names: str = ''
+
+
+PACKAGE_FOLDER = Fix('pass its folder in search_paths / --package-path', 'package_paths')
+"""The fix of a package not found: give the folder holding it."""
+FIXES = (PACKAGE_FOLDER,)
+"""Every fix a front end words its own way."""
+
+
 class UrdfgenpyError(Exception):
-    """Base class of every error this package raises on purpose."""
+    """
+    Base class of every error this package raises on purpose.
+
+    ``fixes`` are the fixes its message says in the library's words, as data: a front end
+    says each in its own (``report.FrontEnd.worded``).
+    """
+
+    fixes: tuple[Fix, ...] = ()
+
+    def __init__(self, *args: object, fixes: tuple[Fix, ...] = ()) -> None:
+        super().__init__(*args)
+        if fixes:
+            self.fixes = fixes
+
+
+class InputError(UrdfgenpyError):
+    """
+    An input of the front door refused: ``where`` names it, ``what`` is wrong, ``fix``.
+
+    ``where`` is ``source`` or ``args`` (the parameters of
+    :func:`~urdfgenpy_ros.formats.open_description`); ``value`` is what was given. A
+    front end says ``where`` in its own words (``--from``, ``parameter 'model'``).
+    """
+
+    def __init__(self, where: str, what: str, fix: str = '', value: str = '') -> None:
+        self.where, self.what, self.fix, self.value = where, what, fix, value
+        super().__init__(self.said(where))
+
+    def said(self, name: str) -> str:
+        """Return the message with the input called ``name``."""
+        return f'{name}: {self.what}' + (f' ({self.fix})' if self.fix else '')
 
 
 class ModelError(UrdfgenpyError, ValueError):
@@ -80,12 +128,12 @@ class ParseError(UrdfgenpyError):
     """A description that cannot be read; the message is one line."""
 
     def __init__(self, message: str, location: SourceLocation | None = None,
-                 code: str = 'P001') -> None:
+                 code: str = 'P001', fixes: tuple[Fix, ...] = ()) -> None:
         self.location = location
         self.code = code
         self.message = message
         prefix = f'{location}: ' if location is not None else ''
-        super().__init__(f'{prefix}error {code} {message}{_via(location)}')
+        super().__init__(f'{prefix}error {code} {message}{_via(location)}', fixes=fixes)
 
 
 class ReadWarning(NamedTuple):

@@ -19,19 +19,19 @@ The one error boundary of every front end: the CLI, ``init``, the node and the v
 the operating system refusing one of their files, a front end's usage errors such as
 click's) is something the user can fix: it is shown as one line, ``prog: file:line:
 element: message (fix)``, and the program exits with its documented status (2; the node
-1). Anything else is a bug in this package and keeps its traceback. Inside the boundary,
-messages name the front end's own option for package folders (:func:`folder_fix`).
+1). Anything else is a bug in this package and keeps its traceback. The library says a
+fix in its own words, declared as data (:class:`~urdfgenpy_ros.errors.Fix`); each front
+end words it with its own option (``-p/--package-path``, the node's parameter).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from contextlib import contextmanager
-from contextvars import ContextVar
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 import sys
 
-from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.errors import Fix, FIXES, InputError, UrdfgenpyError
 
 EXIT_KNOWN_ERROR = 2
 """Exit status of the command-line tools for a user's mistake (the node exits 1)."""
@@ -51,8 +51,11 @@ class FrontEnd:
 
     ``prog`` leads the line (None: the logger names the program already); ``usage_errors``
     are the front end's own user-error types (click's UsageError); ``package_paths`` is how
-    it names the folders ``$(find pkg)`` and ``package://`` resolve through;
-    ``verbose()`` true prints the traceback too.
+    it names the folders ``$(find pkg)`` and ``package://`` resolve through (in the fix
+    ``pass its folder ...``); ``verbose()`` true prints the traceback too. ``inputs`` are
+    its names for the inputs of the front door (``source``, ``args``: its options or
+    parameters). A fix is found in a line by its library words, so a message that wraps
+    another's (an assembly's part, a Xacro include) is worded too.
     """
 
     prog: str | None
@@ -61,20 +64,35 @@ class FrontEnd:
     package_paths: str = 'in search_paths / --package-path'
     verbose: Callable[[], bool] = lambda: False
     usage_errors: tuple[type[BaseException], ...] = ()
+    inputs: Mapping[str, str] = field(default_factory=dict, hash=False)
 
     def line(self, error: BaseException) -> str:
         """Return the one line saying ``error``."""
-        return f'{self.prog}: {one_line(error)}' if self.prog else one_line(error)
+        said = self.said(error)
+        return f'{self.prog}: {said}' if self.prog else said
+
+    def said(self, error: BaseException) -> str:
+        """Return ``error``'s message in this front end's words, on one line."""
+        if isinstance(error, InputError) and error.where in self.inputs:
+            return self.worded(' '.join(error.said(self.inputs[error.where]).split()))
+        return self.worded(one_line(error))
+
+    def worded(self, text: str) -> str:
+        """Return ``text`` (a message, a finding, a report) with each fix in its words."""
+        for fix in FIXES:
+            if fix.text in text:
+                text = text.replace(fix.text, self.fix(fix))
+        return text
+
+    def fix(self, fix: Fix) -> str:
+        """Return ``fix`` in this front end's words."""
+        if fix.names == 'package_paths':
+            return f'pass its folder {self.package_paths}'
+        return fix.text
 
 
 LIBRARY = FrontEnd(None)
 """Python callers: no boundary, the library's own words."""
-_CURRENT: ContextVar[FrontEnd] = ContextVar('urdfgenpy_front_end', default=LIBRARY)
-
-
-def folder_fix() -> str:
-    """Return how the running front end says "give the folder holding the package"."""
-    return f'pass its folder {_CURRENT.get().package_paths}'
 
 
 def counted(count: int, noun: str) -> str:
@@ -99,7 +117,6 @@ def boundary(front_end: FrontEnd) -> Iterator[None]:
     The lines an error carries in ``lines`` (the findings behind a refusal) come first.
     Any other exception, a bug, passes unchanged with its traceback.
     """
-    token = _CURRENT.set(front_end)
     try:
         yield
     except (*KNOWN_ERRORS, *front_end.usage_errors) as error:
@@ -107,11 +124,9 @@ def boundary(front_end: FrontEnd) -> Iterator[None]:
             import traceback  # only with --verbose (start-up)
             traceback.print_exc()
         for line in getattr(error, 'lines', ()):
-            front_end.say(str(line))
+            front_end.say(front_end.worded(str(line)))
         front_end.say(front_end.line(error))
         raise SystemExit(front_end.exit_code) from None
-    finally:
-        _CURRENT.reset(token)
 
 
 def exit_status(front_end: FrontEnd, body: Callable[[], int | None]) -> int:

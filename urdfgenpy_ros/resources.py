@@ -26,8 +26,7 @@ from urllib.parse import unquote, urlparse
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import UrdfgenpyError
-from urdfgenpy_ros.report import folder_fix
+from urdfgenpy_ros.errors import PACKAGE_FOLDER, UrdfgenpyError
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -110,7 +109,8 @@ class PackageResolver:
                 return root / rest
         raise ResourceError(f'{uri!r} names no package (package:/// with an empty name): '
                             f'{rest!r} is under none of the folders of packages (write '
-                            f'package://{rest}, or {folder_fix()})')
+                            f'package://{rest}, or {PACKAGE_FOLDER.text})',
+                            fixes=(PACKAGE_FOLDER,))
 
     @staticmethod
     def _ros_package_path() -> list[Path]:
@@ -147,7 +147,8 @@ class PackageResolver:
             directory = self.find(parsed.netloc)
             if directory is None:
                 raise ResourceError(f'package {parsed.netloc!r} of {uri!r} not found (source '
-                                    f'its workspace, or {folder_fix()})')
+                                    f'its workspace, or {PACKAGE_FOLDER.text})',
+                                    fixes=(PACKAGE_FOLDER,))
             # a/../b/x.stl: normalised, as a missing folder 'a' would stop the OS
             path = directory / posixpath.normpath(unquote(parsed.path).lstrip('/') or '.')
         elif parsed.scheme == 'file':

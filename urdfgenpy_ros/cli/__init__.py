@@ -21,12 +21,14 @@ its help), so ``urdfgenpy check`` loads what checking needs and nothing of the o
 
 from __future__ import annotations
 
+from dataclasses import replace
 import importlib
 from typing import Any
 
 import click
 
-from urdfgenpy_ros.report import boundary, FrontEnd
+from urdfgenpy_ros.cli.words import CLI_WORDS
+from urdfgenpy_ros.report import boundary
 
 COMMANDS = ('example', 'tree', 'convert', 'check', 'inertia', 'init', 'graph', 'render',
             'view', 'attach', 'dh', 'mirror', 'srdf', 'collision')
@@ -76,9 +78,7 @@ class _Group(click.Group):
         def verbose() -> bool:  # set by main() below, once the options are parsed
             return bool(ctx.obj and ctx.obj.get('verbose'))
 
-        with boundary(FrontEnd('urdfgenpy', say=_echo_error, verbose=verbose,
-                               package_paths='with -p/--package-path',
-                               usage_errors=(click.UsageError,))):
+        with boundary(replace(CLI_WORDS, say=_echo_error, verbose=verbose)):
             try:
                 return super().invoke(ctx)
             except click.UsageError as error:  # one line, naming where the options are

@@ -22,23 +22,20 @@ from typing import Any
 
 import click
 
-from urdfgenpy_ros.formats import load
+from urdfgenpy_ros.errors import InputError
+from urdfgenpy_ros.formats.open import open_description, parse_args
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.suppressions import parse_codes
 
 
 def parse_mappings(arguments: tuple[str, ...]) -> dict[str, str]:
-    """Turn ``name:=value`` arguments into a dict, as xacro's command line does."""
-    mappings = {}
-    for argument in arguments:
-        name, separator, value = argument.partition(':=')
-        if not separator or not name:
-            plain, equals, given = argument.partition('=')
-            spelt = f' (write {plain}:={given})' if equals and plain else ''
-            raise click.BadParameter(f'{argument!r} is not name:=value{spelt}',
-                                     param_hint='ARGS')
-        mappings[name] = value
-    return mappings
+    """Turn ``name:=value`` arguments into a dict; a bad one is a usage error of ARGS."""
+    try:
+        return parse_args(arguments)
+    except InputError as error:
+        plain, equals, given = error.value.partition('=')
+        spelt = f' (write {plain}:={given})' if equals and plain else ''
+        raise click.BadParameter(f'{error.what}{spelt}', param_hint='ARGS') from None
 
 
 def _codes(ctx: click.Context, param: click.Parameter, values: tuple[str, ...]
@@ -68,7 +65,7 @@ def input_options(function: Callable[..., Any]) -> Callable[..., Any]:
 def read_robot(path: Path, arguments: tuple[str, ...], package_paths: tuple[Path, ...],
                warn: bool = True) -> Robot:
     """Read ``path`` with its Xacro arguments; print the reader's warnings on stderr."""
-    robot = load(path, parse_mappings(arguments), package_paths)
+    robot = open_description(path, parse_mappings(arguments), package_paths)
     if warn:
         say_read_warnings(robot)
     return robot

@@ -31,6 +31,7 @@ from urdfgenpy_ros.cli.check_reports import FileReport, json_report, junit_repor
 from urdfgenpy_ros.cli.check_reports import sarif_report
 from urdfgenpy_ros.cli.check_xacro import fix_xacro
 from urdfgenpy_ros.cli.inputs import description_files
+from urdfgenpy_ros.cli.words import CLI_WORDS
 from urdfgenpy_ros.errors import ModelError, Severity, ValidationError
 from urdfgenpy_ros.formats import DH_SUFFIXES, load
 from urdfgenpy_ros.formats.urdf import urdf_file_bytes
@@ -194,14 +195,15 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
         lines += [report.refused] if report.refused is not None else []  # after its findings
         if text and report_file is None:  # as it goes; the diff of --dry-run owns stdout
             for line in lines:
-                click.echo(line, err=dry_run)
+                click.echo(CLI_WORDS.worded(line), err=dry_run)
             lines = []
     if not text:
         document = {'json': json_report, 'sarif': sarif_report}[output](reports) \
             if output != 'junit' else junit_report(reports, strict)
-        lines = [document.rstrip('\n')]
+        lines = [CLI_WORDS.worded(document.rstrip('\n'))]
     if report_file is not None:
-        report_file.write_text(''.join(f'{line}\n' for line in lines), encoding='utf-8')
+        report_file.write_text(''.join(f'{CLI_WORDS.worded(line)}\n' for line in lines),
+                               encoding='utf-8')
     elif not text:
         click.echo(lines[0], err=dry_run)
     every = [finding for report in reports for finding in report.findings]

@@ -28,6 +28,7 @@ import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot, say_read_warnings
 from urdfgenpy_ros.cli.convert_mjcf import mjcf_options, MjcfOptions, write_mjcf_file
+from urdfgenpy_ros.cli.words import CLI_WORDS
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.formats.sdf_frames import merge_for_sdf
@@ -114,7 +115,7 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     say_read_warnings(robot)
     if repair:
         for line in fix_for_output(robot, fix_radius, package_paths):
-            click.echo(line, err=True)
+            click.echo(CLI_WORDS.worded(line), err=True)
     if urdf_version is not None:
         robot, changes = as_version(robot, urdf_version)
         for change in changes:

@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING
 import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot
+from urdfgenpy_ros.cli.words import CLI_WORDS
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -88,5 +89,5 @@ def render(path: Path, arguments: tuple[str, ...], output: Path, joints: tuple[s
     picture = draw(robot, _inside_limits(robot, values), view, (width, height), collision,
                    package_paths)
     for problem in picture.problems:
-        click.echo(f'warning: {problem} (not drawn)', err=True)
+        click.echo(CLI_WORDS.worded(f'warning: {problem} (not drawn)'), err=True)
     click.echo(save_picture(picture, output))

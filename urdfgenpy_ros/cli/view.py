@@ -24,6 +24,7 @@ import threading
 import click
 
 from urdfgenpy_ros.cli._options import ignore_option, input_options, parse_mappings
+from urdfgenpy_ros.cli.words import CLI_WORDS
 
 
 @click.command()
@@ -42,21 +43,22 @@ def view(path: Path, arguments: tuple[str, ...], port: int, host: str,
     The findings are those of urdfgenpy check with the same --ignore and -p, the file's
     suppression comments included.
     """
-    from urdfgenpy_ros.formats import load
+    from urdfgenpy_ros.formats import open_description
     from urdfgenpy_ros.robot import Robot
     from urdfgenpy_ros.validation.checklist import ReviewOptions
     from urdfgenpy_ros.viewer.web import RobotViewer
     mappings = parse_mappings(arguments)
 
     def read() -> Robot:
-        return load(path, mappings, package_paths)
+        return open_description(path, mappings, package_paths)
 
     def watched(robot: Robot) -> list[str]:
         return sorted({str(path.resolve()), *robot.included_files})
 
     viewer = RobotViewer(read, host=host, port=port, search_paths=package_paths,
                          watched=watched, review_options=ReviewOptions(
-                             search_paths=package_paths, ignore=ignored))
+                             search_paths=package_paths, ignore=ignored),
+                         words=CLI_WORDS.worded)
     viewer.watch()
     click.echo(f'urdfgenpy view: {viewer.url} shows {viewer.robot.name!r} '
                f'({len(viewer.findings)} findings); Ctrl-C stops')

@@ -25,6 +25,7 @@ from __future__ import annotations
 from os import PathLike
 from typing import Any, TYPE_CHECKING
 
+from urdfgenpy_ros.formats.open import open_description
 from urdfgenpy_ros.formats.table import find_format, FORMATS, load, writer_for
 
 if TYPE_CHECKING:
@@ -34,7 +35,8 @@ WRITERS = {suffix: row.name for row in FORMATS if row.writer for suffix in row.s
 """Written suffix -> format name (derived from the table)."""
 DH_SUFFIXES = next(row.suffixes for row in FORMATS if row.name == 'dh')
 
-__all__ = ['DH_SUFFIXES', 'find_format', 'format_of', 'FORMATS', 'load', 'save', 'WRITERS']
+__all__ = ['DH_SUFFIXES', 'find_format', 'format_of', 'FORMATS', 'load', 'open_description',
+           'save', 'WRITERS']
 
 
 def format_of(path: str | PathLike[str]) -> str:

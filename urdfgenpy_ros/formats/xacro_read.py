@@ -27,11 +27,10 @@ import threading
 from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.errors import (
-    MissingDependencyError, ParseError, ReadWarning, SourceLocation)
+    MissingDependencyError, PACKAGE_FOLDER, ParseError, ReadWarning, SourceLocation)
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
 from urdfgenpy_ros.formats.xacro_args import misspelt_arguments, unknown_arguments
 from urdfgenpy_ros.formats.xacro_map import pretty_print, recording, XacroMap
-from urdfgenpy_ros.report import folder_fix
 from urdfgenpy_ros.resources import PackageResolver
 
 if TYPE_CHECKING:
@@ -88,7 +87,7 @@ def _finding_with(resolver: PackageResolver) -> Iterator[None]:
         except Exception:  # noqa: B902 - ament's, rospkg's or an unset AMENT_PREFIX_PATH
             raise _PackageMissing(
                 f'$(find {package}): package {package!r} not found (source the workspace '
-                f'that holds it, or {folder_fix()})'
+                f'that holds it, or {PACKAGE_FOLDER.text})'
             ) from None
 
     substitution_args._eval_find = find
@@ -96,6 +95,23 @@ def _finding_with(resolver: PackageResolver) -> Iterator[None]:
         yield
     finally:
         substitution_args._eval_find = original
+
+
+def _failure(error: Exception, context: str, printed: str) -> str:
+    """Return the one line saying why xacro failed, with where and what it warned."""
+    cause = getattr(error, 'exc', None)  # xacro wraps what substitutions raise
+    shown = cause if isinstance(cause, _PackageMissing) else error
+    message = ' '.join(str(shown).split()) or type(error).__name__
+    message = _ERRNO_AGAIN.sub('', message)  # xacro adds the OSError it already told
+    if ('ament_index_python' in message or 'PackageNotFound' in type(error).__name__) \
+            and 'search_paths' not in message:
+        message += ' (pass the package folders in search_paths)'
+    if context:
+        message += f' ({context})'
+    said = _xacro_warnings(printed)
+    if said:
+        message += f' (xacro warned: {"; ".join(said)})'
+    return message
 
 
 def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
@@ -135,21 +151,10 @@ def expand_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None =
             if recorder is not None:  # xacro's own print, with where each tag starts
                 text, source_map = pretty_print(recorder, document)
     except Exception as error:  # noqa: B902 - xacro raises many types; all are one line
-        cause = getattr(error, 'exc', None)  # xacro wraps what substitutions raise
-        shown = cause if isinstance(cause, _PackageMissing) else error
-        message = ' '.join(str(shown).split()) or type(error).__name__
-        message = _ERRNO_AGAIN.sub('', message)  # xacro adds the OSError it already told
-        if ('ament_index_python' in message or 'PackageNotFound' in type(error).__name__) \
-                and 'search_paths' not in message:
-            message += ' (pass the package folders in search_paths)'
-        if context:
-            message += f' ({context})'
-        said = _xacro_warnings(printed.getvalue())
-        if said:
-            message += f' (xacro warned: {"; ".join(said)})'
-        message += misspelt_arguments(dict.fromkeys(seen), mappings or {})
-        raise ParseError(f'xacro: {message}', _error_place(where, stack, message),
-                         'X001') from None
+        message = _failure(error, context, printed.getvalue()) + misspelt_arguments(
+            dict.fromkeys(seen), mappings or {})
+        raise ParseError(f'xacro: {message}', _error_place(where, stack, message), 'X001',
+                         (PACKAGE_FOLDER,) if PACKAGE_FOLDER.text in message else ()) from None
     if warnings is not None:
         warnings += [ReadWarning(where, 'X102', f'xacro: {line}')
                      for line in _xacro_warnings(printed.getvalue())]

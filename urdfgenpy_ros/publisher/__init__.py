@@ -13,3 +13,10 @@
 # limitations under the License.
 
 """The publisher node; only its ``node`` module imports rclpy."""
+
+from urdfgenpy_ros.report import FrontEnd
+
+NODE_WORDS = FrontEnd(None, exit_code=1,
+                      package_paths="in search_paths / parameter 'package_paths'",
+                      inputs={'source': "parameter 'model'", 'args': "parameter 'xacro_args'"})
+"""How the node says a user's mistake: its parameters' names (its logger names the node)."""

@@ -23,6 +23,7 @@ with ``watch``, reloads when the model or a file it includes changes.
 
 from __future__ import annotations
 
+from dataclasses import replace
 import math
 import os
 import sys
@@ -39,9 +40,10 @@ from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
 
 from urdfgenpy_ros.errors import Severity, UrdfgenpyError
-from urdfgenpy_ros.model_source import load_model
+from urdfgenpy_ros.formats.open import files_read, open_description
+from urdfgenpy_ros.publisher import NODE_WORDS
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
-from urdfgenpy_ros.report import boundary, FrontEnd, KNOWN_ERRORS, one_line
+from urdfgenpy_ros.report import boundary, KNOWN_ERRORS
 from urdfgenpy_ros.validation.checklist import review, ReviewOptions
 from urdfgenpy_ros.validation.consumers import is_physics_only, physics_warning
 from urdfgenpy_ros.validation.suppressions import parse_codes
@@ -125,17 +127,7 @@ class PublisherNode(Node):
             raise UrdfgenpyError(
                 f'bad parameter: {error} (an empty list has no type in ROS 2: leave the '
                 'parameter out to get its default)') from None
-        for name, (default, kind, description) in _PARAMETERS.items():
-            descriptor = ParameterDescriptor(description=description)
-            if kind is None:
-                descriptor.dynamic_typing = True
-            else:
-                descriptor.type = kind
-            if not self.has_parameter(name):
-                self.declare_parameter(name, default, descriptor)
-        self.values = {name: self.get_parameter(name).value for name in _PARAMETERS}
-        for name, (_, kind, _) in _PARAMETERS.items():
-            _check_type(name, kind, self.values[name])
+        self.values = self._declare_parameters()
         try:
             self.ignored = parse_codes(' '.join(self.values['ignore']))
         except ValueError as error:
@@ -149,6 +141,37 @@ class PublisherNode(Node):
         self.robot, self.watched = self._load()
         self.description = self.robot.to_urdf()
         self.states = self._joint_states(self.robot)
+        self._publish_description()
+        self._start_joint_states(rate)
+        self._warned: set[str] = set()
+        self._last_warning: dict[str, float] = {}
+        self.gui = None
+        if self.values['gui']:  # imported only here: the viewer's dependencies are heavy
+            from urdfgenpy_ros.publisher.gui import NodeGui
+            self.gui = NodeGui(self, self.values['gui_port'])
+        self.get_logger().info(
+            f'publishing {self.robot.name!r}: {len(self.robot.links)} links, '
+            f'{len(self.states.names)} joint states at {rate} Hz'
+            + ('' if self.description_publisher else ' (robot_description left to '
+               'robot_state_publisher)'))
+
+    def _declare_parameters(self) -> dict[str, Any]:
+        """Declare every parameter not overridden; return the values, each of its type."""
+        for name, (default, kind, description) in _PARAMETERS.items():
+            descriptor = ParameterDescriptor(description=description)
+            if kind is None:
+                descriptor.dynamic_typing = True
+            else:
+                descriptor.type = kind
+            if not self.has_parameter(name):
+                self.declare_parameter(name, default, descriptor)
+        values = {name: self.get_parameter(name).value for name in _PARAMETERS}
+        for name, (_, kind, _) in _PARAMETERS.items():
+            _check_type(name, kind, values[name])
+        return values
+
+    def _publish_description(self) -> None:
+        """Declare ``robot_description`` (read-only) and publish it, latched, if asked."""
         self._updating_description = False
         self.declare_parameter('robot_description', self.description, ParameterDescriptor(
             description='the published URDF (read-only: change the model and call ~/reload)'))
@@ -160,6 +183,9 @@ class PublisherNode(Node):
             self.description_publisher = self.create_publisher(String, 'robot_description',
                                                                latched)
             self.description_publisher.publish(String(data=self.description))
+
+    def _start_joint_states(self, rate: float) -> None:
+        """Publish joint states at ``rate`` Hz, merge the sources, serve ~/reload, watch."""
         # Only now what the description does not need (sensor_msgs imports numpy).
         from sensor_msgs.msg import JointState
         from std_srvs.srv import Trigger
@@ -180,23 +206,12 @@ class PublisherNode(Node):
         self._stamps = self._modification_times()
         if self.values['watch']:
             self.create_timer(0.5, self._watch)
-        self._warned: set[str] = set()
-        self._last_warning: dict[str, float] = {}
-        self.gui = None
-        if self.values['gui']:  # imported only here: the viewer's dependencies are heavy
-            from urdfgenpy_ros.publisher.gui import NodeGui
-            self.gui = NodeGui(self, self.values['gui_port'])
-        self.get_logger().info(
-            f'publishing {self.robot.name!r}: {len(self.robot.links)} links, '
-            f'{len(self.states.names)} joint states at {rate} Hz'
-            + ('' if self.description_publisher else ' (robot_description left to '
-               'robot_state_publisher)'))
 
     # ---- model ------------------------------------------------------------------------
 
     def _load(self) -> tuple[Robot, list[str]]:
-        robot, watched = load_model(self.values['model'], self.values['xacro_args'],
-                                    self.values['package_paths'])
+        robot, watched = _open(self.values['model'], self.values['xacro_args'],
+                               self.values['package_paths'])
         # the file's own suppression comments count, as in `urdfgenpy check`, and 'ignore'
         found = review(robot, self.review_options)
         findings, silenced = found.findings, found.suppressed
@@ -246,9 +261,10 @@ class PublisherNode(Node):
             robot, watched = self._load()
             states = self._joint_states(robot)
         except KNOWN_ERRORS as error:
+            said = NODE_WORDS.said(error)
             self.get_logger().error(f'reload failed, still publishing the last good model: '
-                                    f'{one_line(error)}')
-            return False, one_line(error)
+                                    f'{said}')
+            return False, said
         previous = dict(self.states.free)
         for name, joint in states.free.items():
             if name in previous:
@@ -384,6 +400,16 @@ EXIT_NODE_ERROR = 1
 """The node's exit status for a user's mistake (a bad file, model or parameter)."""
 
 
+def _open(model: str, xacro_args: list[str], package_paths: list[str]
+          ) -> tuple[Robot, list[str]]:
+    """Return the robot the ``model`` parameter names ('': the example), files to watch."""
+    if not model:
+        from urdfgenpy_ros.examples import pan_tilt_unit
+        return pan_tilt_unit(), []
+    robot = open_description(model, xacro_args, package_paths)
+    return robot, files_read(model, robot)
+
+
 def _start() -> PublisherNode:
     try:
         return PublisherNode()
@@ -396,8 +422,7 @@ def main(args: list[str] | None = None) -> int:
     """Run the node until Ctrl-C; return 1 (one log line) when it cannot start."""
     rclpy.init(args=args)
     node = None
-    said = FrontEnd(None, exit_code=EXIT_NODE_ERROR,  # the logger names the node
-                    say=rclpy.logging.get_logger('urdfgenpy_publisher').error)
+    said = replace(NODE_WORDS, say=rclpy.logging.get_logger('urdfgenpy_publisher').error)
     try:
         with boundary(said):
             node = _start()

@@ -18,3 +18,6 @@ from urdfgenpy_ros.scaffold.render import create_package
 from urdfgenpy_ros.scaffold.spec import check_package_name, PackageSpec
 
 __all__ = ['check_package_name', 'create_package', 'PackageSpec']
+
+INIT_INPUTS = {'source': '--from', 'args': '--xacro-args', 'package_paths': '--package-path'}
+"""How ``init`` (and ``ros2 pkg scaffold``) names the inputs of the front door."""

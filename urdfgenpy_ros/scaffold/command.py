@@ -22,15 +22,19 @@ import copy
 import math
 from pathlib import Path
 import sys
-from typing import NoReturn
+from typing import NoReturn, TYPE_CHECKING
 
 from urdfgenpy_ros.errors import UrdfgenpyError
-from urdfgenpy_ros.model_source import INIT_WORDS, load_model, parse_xacro_args
+from urdfgenpy_ros.formats.open import open_description, parse_args
 from urdfgenpy_ros.report import exit_status, FrontEnd
+from urdfgenpy_ros.scaffold import INIT_INPUTS
 from urdfgenpy_ros.scaffold.preflight import preflight
 from urdfgenpy_ros.scaffold.render import create_package
 from urdfgenpy_ros.scaffold.spec import BUILD_TYPES, PackageSpec
 from urdfgenpy_ros.validation.fix_output import DEFAULT_RADIUS
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -93,7 +97,7 @@ def run(args: argparse.Namespace, prog: str = 'urdfgenpy init') -> int:
     A user's mistake is one line on stderr, ``prog: message (fix)``, after the findings
     behind it, and status 2 (the boundary every front end uses); a bug keeps its traceback.
     """
-    return exit_status(FrontEnd(prog), lambda: _create(args))
+    return exit_status(FrontEnd(prog, inputs=INIT_INPUTS), lambda: _create(args))
 
 
 def _create(args: argparse.Namespace) -> int:
@@ -105,7 +109,7 @@ def _create(args: argparse.Namespace) -> int:
             raise UrdfgenpyError(f'--package-path {folder}: no such folder (give a folder '
                                  'holding ROS packages)')
     given = xacro_arguments(args)
-    robot, _ = load_model(args.source, given, args.package_path, INIT_WORDS)
+    robot = _robot(args.source, given, args.package_path)
     for note in robot.read_warnings:  # e.g. X101: a .urdf file expanded as Xacro
         print(note, file=sys.stderr)
     if args.fix:
@@ -116,12 +120,20 @@ def _create(args: argparse.Namespace) -> int:
     written, warnings = create_package(
         spec, robot, force=args.force, source=args.source or 'the built-in example',
         search_paths=args.package_path,
-        xacro_args=parse_xacro_args(given, INIT_WORDS))
+        xacro_args=parse_args(given))
     for warning in warnings:
         print(f'warning: {warning}', file=sys.stderr)
     print(f'created {spec.root} ({len(written)} files, {spec.build_type}): '
           f'colcon build --packages-select {spec.name}')
     return 0
+
+
+def _robot(source: str, given: list[str], package_paths: list[str]) -> Robot:
+    """Return the robot ``--from`` names, or the built-in example without it."""
+    if not source:
+        from urdfgenpy_ros.examples import pan_tilt_unit
+        return pan_tilt_unit()
+    return open_description(source, given, package_paths)
 
 
 def xacro_arguments(args: argparse.Namespace) -> list[str]:
@@ -167,7 +179,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                      '(or, with --moveit, a moveit_config package).')
     add_arguments(parser)
     add_moveit_arguments(parser)  # listed here; cli/init.py hands --moveit to its own parser
-    front_end = FrontEnd(parser.prog)
+    front_end = FrontEnd(parser.prog, inputs=INIT_INPUTS)
     # intermixed: NAME:=VALUE may come after the options, as in every other command
     return exit_status(front_end, lambda: run(_description_only(
         parser.parse_intermixed_args(argv)), parser.prog))

@@ -36,10 +36,11 @@ from typing import Any, NoReturn
 
 from lxml import etree
 from urdfgenpy_ros.errors import UrdfgenpyError
-from urdfgenpy_ros.model_source import INIT_WORDS, load_model
+from urdfgenpy_ros.formats.open import open_description
 from urdfgenpy_ros.moveit import config
 from urdfgenpy_ros.moveit.srdf import build_srdf
 from urdfgenpy_ros.report import exit_status, FrontEnd
+from urdfgenpy_ros.scaffold import INIT_INPUTS
 from urdfgenpy_ros.scaffold.templates import template_root
 import yaml
 
@@ -83,7 +84,7 @@ def render_package(args: argparse.Namespace) -> dict[str, str]:
     source = Path(args.source)
     package, urdf_path, folder = description_package(source)
     search = [*args.package_path, str(folder.parent)]  # its own package, found beside it
-    robot, _ = load_model(str(source), args.xacro_args, search, INIT_WORDS)
+    robot = open_description(str(source), args.xacro_args, search)
     srdf = build_srdf(robot, samples=SAMPLES if args.samples is None else args.samples,
                       seed=args.seed or 0, groups=list(args.groups), search_paths=search)
     for note in srdf.notes:
@@ -207,7 +208,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument('--package-path', '-p', action='append', default=[])
     parser.add_argument('--force', action='store_true', help='overwrite existing files')
     add_moveit_arguments(parser)
-    return exit_status(FrontEnd(parser.prog),
+    return exit_status(FrontEnd(parser.prog, inputs=INIT_INPUTS),
                        lambda: _create(parser.parse_args(argv)))
 
 

@@ -21,9 +21,9 @@ import os
 from pathlib import Path, PurePosixPath, PureWindowsPath
 from typing import Any, TYPE_CHECKING
 
+from urdfgenpy_ros.errors import PACKAGE_FOLDER
 from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Sphere
 from urdfgenpy_ros.link import Shape
-from urdfgenpy_ros.report import folder_fix
 from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
 from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
 
@@ -138,7 +138,8 @@ def _check_mesh(mesh: Mesh, element: str, where: str, findings: Findings,
     except ResourceError as error:
         message = str(error).split(' (', 1)[0]
         if 'not found' in message:
-            code, hint = 'R303', f'source the workspace that holds it, or {folder_fix()}'
+            code, hint = 'R303', ('source the workspace that holds it, or '
+                                  f'{PACKAGE_FOLDER.text}')
         else:
             code, hint = missing, 'fix the file name or add the file'
         findings.add(code, mesh, element, f'{where}/geometry/mesh', message, hint, 'mesh')

@@ -91,7 +91,8 @@ class RobotViewer:
     change triggers a reload; ``on_positions`` hears every slider move (the node's GUI
     mode publishes them). ``positions`` holds the current value of every movable joint.
     ``review_options`` say what the findings are (default: every check, meshes through
-    ``search_paths``); ``findings`` and ``suppressed`` are the last review's.
+    ``search_paths``); ``findings`` and ``suppressed`` are the last review's. ``words``
+    says the library's fixes in the front end's words (``FrontEnd.worded``).
     """
 
     def __init__(self, load: Callable[[], Robot], *, host: str = '127.0.0.1',
@@ -99,8 +100,10 @@ class RobotViewer:
                  watched: Callable[[Robot], list[str]] | None = None,
                  on_positions: Callable[[dict[str, float]], None] | None = None,
                  initial: Mapping[str, float] | None = None, validate: bool = True,
-                 review_options: ReviewOptions | None = None) -> None:
+                 review_options: ReviewOptions | None = None,
+                 words: Callable[[str], str] = str) -> None:
         self.viser = require('viser', 'view', 'The robot viewer')
+        self._words = words
         require('trimesh', 'view', 'The robot viewer')
         self._load = load
         self._search_paths = list(search_paths)
@@ -282,7 +285,7 @@ class RobotViewer:
                 mark = 'E' if finding.severity is Severity.ERROR else 'W'
                 button = gui.add_button(f'{mark} {finding.code} {finding.element}',
                                         color='red' if mark == 'E' else 'yellow',
-                                        hint=f'{finding.message} ({finding.hint})')
+                                        hint=self._words(f'{finding.message} ({finding.hint})'))
                 button.on_click(lambda _, finding=finding: self.select(finding))
 
     # ---- state -----------------------------------------------------------------------
@@ -313,7 +316,8 @@ class RobotViewer:
             self._highlight = []
             self.selected = finding.element
             self._selection.content = (f'**{finding.code}** {finding.element}: '
-                                       f'{finding.message}  \n*fix:* {finding.hint}  \n'
+                                       f'{finding.message}  \n*fix:* '
+                                       f'{self._words(finding.hint)}  \n'
                                        f'`{finding.location}`' + ''.join(
                                            f'  \n*via* {place.path} `{place}`'
                                            for place in finding.location.via))
@@ -396,7 +400,7 @@ class RobotViewer:
             robot = self._load()
         except KNOWN_ERRORS as error:
             self._set_status(f'**reload failed** (showing the last good model): '
-                             f'{one_line(error)}')
+                             f'{self._words(one_line(error))}')
             return False
         self.status = f'reloaded at {time.strftime("%H:%M:%S")}'
         self.show(robot)
