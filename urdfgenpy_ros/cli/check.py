@@ -31,7 +31,7 @@ from urdfgenpy_ros.cli.check_reports import sarif_report
 from urdfgenpy_ros.cli.check_xacro import fix_xacro
 from urdfgenpy_ros.cli.inputs import description_files
 from urdfgenpy_ros.errors import ModelError, Severity, ValidationError
-from urdfgenpy_ros.formats import DH_SUFFIXES, load
+from urdfgenpy_ros.formats import DH_SUFFIXES, find_format, load
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET, TARGETS
@@ -267,6 +267,15 @@ def _render(report: FileReport, found: Review, srdf: Path | None = None,
                                                          search_paths=search_paths)]
 
 
+def _prepared(report: FileReport, path: Path, robot: Robot) -> None:
+    """Add what the file's own format refuses (its row's ``prepare``; URDF and Xacro: none)."""
+    row = find_format(path)
+    if row is not None and row.prepare is not None:
+        found = row.prepare(robot, {})
+        report.findings = [*report.findings, *found.findings]
+        report.notes += [*found.lines, *([f'{path}: {found.refusal}'] if found.refusal else [])]
+
+
 def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> FileReport:
     """Read and review one file; with --fix, apply the review's repairs and review again."""
     report = FileReport(str(path))
@@ -279,6 +288,7 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
                          'nothing (codes look like I205)'
                          for line, word in found.unknown_suppressions]
         _render(report, found, options.srdf, robot, options.review.search_paths)
+        _prepared(report, path, robot)
         if not options.fix:
             return report
         if robot.source_map is not None:  # Xacro: its values are edited where written
