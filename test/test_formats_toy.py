@@ -118,3 +118,12 @@ def test_check_reports_what_the_toy_refuses(tmp_path: Path, ptu: Robot, toy: For
 def test_without_the_toy_its_suffix_is_refused(tmp_path: Path, ptu: Robot) -> None:
     with pytest.raises(UrdfgenpyError, match='unknown suffix'):
         ptu.save(tmp_path / 'ptu.toy.json')
+
+
+def test_a_row_whose_suffix_is_taken_is_refused() -> None:
+    with pytest.raises(UrdfgenpyError, match="format 'toy': its suffix .xml already"):
+        with registered(Format('toy', ('.xml',), 'toy', _read, None)):
+            pass  # pragma: no cover
+    with pytest.raises(UrdfgenpyError, match="format 'urdf': its name already"):
+        with registered(Format('urdf', ('.other',), 'URDF again', _read, None)):
+            pass  # pragma: no cover

@@ -203,10 +203,12 @@ def register(row: Format) -> None:
 
     It goes first, so a suffix more specific than another row's (``.toy.json``) wins.
     """
-    taken = [suffix for suffix in row.suffixes if find_format(f'x{suffix}') is not None]
-    if any(other.name == row.name for other in FORMATS) or taken:
-        raise ModelError(f'format {row.name!r}: its name or suffix {", ".join(taken)} is '
-                         'taken by a format already there: choose another')
+    taken = [f'suffix {suffix}' for suffix in row.suffixes
+             if find_format(f'x{suffix}') is not None]
+    taken += ['name'] if any(other.name == row.name for other in FORMATS) else []
+    if taken:
+        raise ModelError(f'format {row.name!r}: its {" and ".join(taken)} already belong '
+                         'to another format: choose another')
     FORMATS.insert(0, row)
 
 
