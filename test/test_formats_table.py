@@ -17,6 +17,7 @@
 
 from __future__ import annotations
 
+import inspect
 from pathlib import Path
 
 from click.testing import CliRunner
@@ -94,3 +95,13 @@ def test_every_front_end_refuses_a_suffix_it_cannot_read_in_one_line(
 def test_the_readers_suffixes_come_from_the_table() -> None:
     assert set(readable_suffixes()) == {'.urdf.xacro', '.xacro', '.urdf', '.assembly.yaml',
                                         '.assembly.yml', '.yaml', '.yml', '.csv'}
+
+
+def test_each_writers_keywords_are_its_declared_options() -> None:
+    from urdfgenpy_ros.formats.mjcf import write_mjcf
+    for row in FORMATS:
+        if row.writer is None:
+            continue
+        writer = write_mjcf if row.name == 'mjcf' else row.writer  # its warning wrapper
+        taken = list(inspect.signature(writer).parameters)[2:]  # after robot and path
+        assert taken == list(row.keywords()), row.name

@@ -23,6 +23,7 @@ from typing import Any
 
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import ModelError, ValidationError
+from urdfgenpy_ros.formats.table import save, write_as
 from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.joint import Joint
 from urdfgenpy_ros.link import Link
@@ -124,15 +125,7 @@ class Robot(RobotModel):
         and two spheres. Each change that is not exact is a ``UserWarning`` naming its
         place (``urdfgenpy convert --urdf-version`` prints them as findings).
         """
-        from urdfgenpy_ros.formats import urdf
-        if version is None:
-            return urdf.write_urdf(self, path)
-        import warnings
-        from urdfgenpy_ros.formats.urdf_downgrade import as_version
-        copy, changes = as_version(self, version)
-        for change in changes:
-            warnings.warn(str(change), stacklevel=2)
-        return urdf.write_urdf(copy, path)
+        return write_as(self, 'urdf', path, version=version)
 
     def to_xacro(self, path: str | PathLike[str] | None = None, *, macro: bool = False) -> str:
         """
@@ -142,10 +135,7 @@ class Robot(RobotModel):
         *origin">`` in ``<name>.macro.xacro`` beside ``path``, and ``path`` the file that
         instantiates it (see :func:`urdfgenpy_ros.formats.xacro.write_macro_xacro`).
         """
-        from urdfgenpy_ros.formats import xacro
-        if macro:
-            return xacro.write_macro_xacro(self, path)
-        return xacro.write_xacro(self, path)
+        return write_as(self, 'xacro', path, macro=macro)
 
     def to_sdf(self, path: str | PathLike[str] | None = None, lump_fixed: bool = False,
                version: str | None = None) -> str:
@@ -156,8 +146,7 @@ class Robot(RobotModel):
         SDFormat's own URDF conversion does. ``version`` is ``'1.9'`` or ``'1.11'`` (the
         default when a joint mimics another: 1.11 holds mimic joints).
         """
-        from urdfgenpy_ros.formats import sdf
-        return sdf.write_sdf(self, path, lump_fixed, version)
+        return write_as(self, 'sdf', path, lump_fixed=lump_fixed, version=version)
 
     def save(self, path: str | PathLike[str], **options: Any) -> None:
         """
@@ -165,7 +154,6 @@ class Robot(RobotModel):
 
         ``options`` go to that format's writer (``fuse_fixed=True`` for MJCF, say).
         """
-        from urdfgenpy_ros.formats import save
         save(self, path, **options)
 
     def tree_string(self) -> str:
@@ -363,8 +351,7 @@ class Robot(RobotModel):
         Each thing the MJCF cannot carry is a ``UserWarning`` in ``check``'s format, as is
         what asks you to act (no actuator written, a servo that needs damping).
         """
-        from urdfgenpy_ros.formats.table import write_mjcf_warning
-        return write_mjcf_warning(self, path, **options)
+        return write_as(self, 'mjcf', path, **options)
 
 
 set_robot_class(Robot)

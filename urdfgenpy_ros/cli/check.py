@@ -18,7 +18,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 import math
-import os
 from pathlib import Path
 from typing import Any, Sequence
 
@@ -33,14 +32,14 @@ from urdfgenpy_ros.cli.check_xacro import fix_xacro
 from urdfgenpy_ros.cli.inputs import description_files
 from urdfgenpy_ros.cli.words import CLI_WORDS
 from urdfgenpy_ros.errors import ModelError, Severity, ValidationError
-from urdfgenpy_ros.formats import DH_SUFFIXES, load
-from urdfgenpy_ros.formats.urdf import urdf_file_bytes
+from urdfgenpy_ros.formats import DH_SUFFIXES, find_format, load
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET, TARGETS
 from urdfgenpy_ros.validation.checklist import Review, review, ReviewOptions
-from urdfgenpy_ros.validation.fix import LIMIT_FIELDS
+from urdfgenpy_ros.validation.fix import LIMIT_FIELDS, Repair
 from urdfgenpy_ros.validation.preflight import ENGINES
+from urdfgenpy_ros.validation.rewrite import replace_file
 from urdfgenpy_ros.validation.xacro_source import EXPANDED
 
 
@@ -181,31 +180,46 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
         engines=engines, ignore=ignored, statics=statics, payload=payload,
         statics_margin=1.0 if statics_margin is None else statics_margin, mjcf=mjcf,
         limit_defaults=limit_defaults, strict=strict), repair, dry_run, srdf)
-    text = output == 'text'
-    done = 'to fix' if dry_run else 'fixed'
-    lines: list[str] = []
-    reports = []
-    for path in files:
-        report = _check_file(path, mappings, options)
-        reports.append(report)
-        lines += [str(repair).replace(': fixed ', f': {done} ', 1) for repair in report.repairs]
-        lines += [*(_line(finding) for finding in report.findings), *report.notes]
-        lines += [report.error] if report.error is not None else []
-        lines += [report.payload] if report.payload is not None else []
-        lines += [report.refused] if report.refused is not None else []  # after its findings
-        if text and report_file is None:  # as it goes; the diff of --dry-run owns stdout
-            for line in lines:
-                click.echo(CLI_WORDS.worded(line), err=dry_run)
-            lines = []
-    if not text:
+    reports = _check_files(files, mappings, options, output == 'text' and report_file is None)
+    if output != 'text':
         document = {'json': json_report, 'sarif': sarif_report}[output](reports) \
             if output != 'junit' else junit_report(reports, strict)
         lines = [CLI_WORDS.worded(document.rstrip('\n'))]
+    else:
+        lines = [CLI_WORDS.worded(line) for report in reports
+                 for line in _lines(report, dry_run)]
     if report_file is not None:
-        report_file.write_text(''.join(f'{CLI_WORDS.worded(line)}\n' for line in lines),
-                               encoding='utf-8')
-    elif not text:
+        report_file.write_text(''.join(f'{line}\n' for line in lines), encoding='utf-8')
+    elif output != 'text':
         click.echo(lines[0], err=dry_run)
+    raise SystemExit(_summary(reports, output == 'text', strict, dry_run))
+
+
+def _check_files(files: list[Path], mappings: dict[str, str], options: _Options,
+                 as_it_goes: bool) -> list[FileReport]:
+    """Check each file; print its lines as it goes (``as_it_goes``) and return the reports."""
+    reports = []
+    for path in files:
+        reports.append(_check_file(path, mappings, options))
+        if as_it_goes:  # the diff of --dry-run owns stdout
+            for line in _lines(reports[-1], options.dry_run):
+                click.echo(CLI_WORDS.worded(line), err=options.dry_run)
+    return reports
+
+
+def _lines(report: FileReport, dry_run: bool) -> list[str]:
+    """Return the text lines of one file's report."""
+    done = 'to fix' if dry_run else 'fixed'
+    lines = [str(repair).replace(': fixed ', f': {done} ', 1) for repair in report.repairs]
+    lines += [*(_line(finding) for finding in report.findings), *report.notes]
+    lines += [report.error] if report.error is not None else []
+    lines += [report.payload] if report.payload is not None else []
+    lines += [report.refused] if report.refused is not None else []  # after its findings
+    return lines
+
+
+def _summary(reports: list[FileReport], text: bool, strict: bool, dry_run: bool) -> int:
+    """Print the count line (text output); return the exit status."""
     every = [finding for report in reports for finding in report.findings]
     errors = sum(finding.severity is Severity.ERROR for finding in every)
     warnings, unreadable = len(every) - errors, sum(r.error is not None for r in reports)
@@ -215,13 +229,13 @@ def check(inputs: tuple[str, ...], output: str, report_file: Path | None, strict
     unmatched = sum(report.payload is not None for report in reports)
     if text:
         extra = (f', {suppressed} suppressed' if suppressed else '') + (
-            f', {fixed} {done}' if fixed else '') + (
+            f", {fixed} {'to fix' if dry_run else 'fixed'}" if fixed else '') + (
             f', {refused} not fixable by --fix' if refused else '') + (
             f', {unmatched} without the --payload link' if unmatched else '')
-        click.echo(f'{len(files)} file(s): {errors} error(s), {warnings} warning(s), '
+        click.echo(f'{len(reports)} file(s): {errors} error(s), {warnings} warning(s), '
                    f'{unreadable} unreadable{extra}', err=True)
     failed = errors or (strict and warnings)
-    raise SystemExit(2 if unreadable or refused or unmatched else 1 if failed else 0)
+    return 2 if unreadable or refused or unmatched else 1 if failed else 0
 
 
 def _line(finding: ValidationError) -> str:
@@ -255,6 +269,15 @@ def _render(report: FileReport, found: Review, srdf: Path | None = None,
                                                          search_paths=search_paths)]
 
 
+def _prepared(report: FileReport, path: Path, robot: Robot) -> None:
+    """Add what the file's own format refuses (its row's ``prepare``; URDF and Xacro: none)."""
+    row = find_format(path)
+    if row is not None and row.prepare is not None:
+        found = row.prepare(robot, {})
+        report.findings = [*report.findings, *found.findings]
+        report.notes += [*found.lines, *([f'{path}: {found.refusal}'] if found.refusal else [])]
+
+
 def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> FileReport:
     """Read and review one file; with --fix, apply the review's repairs and review again."""
     report = FileReport(str(path))
@@ -267,11 +290,12 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
                          'nothing (codes look like I205)'
                          for line, word in found.unknown_suppressions]
         _render(report, found, options.srdf, robot, options.review.search_paths)
+        _prepared(report, path, robot)
         if not options.fix:
             return report
         if robot.source_map is not None:  # Xacro: its values are edited where written
             if fix_xacro(path, robot, found, mappings, options.review.search_paths,
-                         options.dry_run, report, _replace):
+                         options.dry_run, report, replace_file):
                 _render(report, review(load(path, mappings, options.review.search_paths),
                                        options.review))
             return report
@@ -281,22 +305,8 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
             report.refused = refusal if repairs else None
             return report
         report.notes += [f'{path}: {line}' for line in found.needs]
-        if not repairs:
-            return report
-        old = path.read_bytes().decode('utf-8', 'surrogateescape')  # other bytes stay
-        # the writer copies all the repairs left alone from the file as it is
-        new = urdf_file_bytes(robot, mend=False).decode('utf-8', 'surrogateescape')
-        if new == old:
-            return report
-        report.repairs = repairs
-        if options.dry_run:
-            import difflib  # only for --fix --dry-run (start-up)
-            click.echo(''.join(difflib.unified_diff(
-                old.splitlines(keepends=True), new.splitlines(keepends=True),
-                f'a/{path.as_posix()}', f'b/{path.as_posix()}')), nl=False)
-            return report
-        _replace(path, new)
-        _render(report, review(Robot.from_urdf_string(new, file=str(path)), options.review))
+        if repairs:
+            _apply(found, path, repairs, report, options.dry_run)
     except KNOWN_ERRORS as error:
         said = str(getattr(error, 'message', error))
         if getattr(error, 'code', None) == 'X003':  # a macro library: checked where included
@@ -307,6 +317,21 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
             report.error = one_line(error)
         report.findings, report.suppressed, report.repairs = [], [], []
     return report
+
+
+def _apply(found: Review, path: Path, repairs: list[Repair], report: FileReport,
+           dry_run: bool) -> None:
+    """Write the repaired file (or print the diff, with ``dry_run``); review what is written."""
+    if dry_run:
+        diff = found.diff(path)
+        if diff:
+            report.repairs = repairs
+            click.echo(diff, nl=False)
+        return
+    written = found.apply(path)
+    if written is not None:
+        report.repairs = repairs
+        _render(report, written)
 
 
 def _repairable(count: int, listed: int) -> str:
@@ -332,19 +357,3 @@ def _not_rewritable(path: Path, robot: Robot, count: str) -> str | None:
                 'hand (their lines say how), or write a repaired copy with urdfgenpy convert '
                 f'{path} OUT.urdf --fix (or OUT.sdf)')
     return None
-
-
-def _replace(path: Path, text: str) -> None:
-    """Write ``text`` over ``path`` atomically, keeping its permissions (and symlinks)."""
-    path = path.resolve()
-    mode = path.stat().st_mode
-    import tempfile  # only for --fix (start-up)
-    handle, temporary = tempfile.mkstemp(dir=path.parent, prefix=f'.{path.name}.')
-    try:
-        with os.fdopen(handle, 'wb') as stream:
-            stream.write(text.encode('utf-8', 'surrogateescape'))
-        os.chmod(temporary, mode & 0o7777)
-        os.replace(temporary, path)
-    except BaseException:
-        Path(temporary).unlink(missing_ok=True)
-        raise

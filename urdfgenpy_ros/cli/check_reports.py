@@ -163,23 +163,7 @@ def sarif_report(reports: list[FileReport]) -> str:
               'defaultConfiguration': {'level': _LEVEL[CODES[code][0]]
                                        if code in CODES else 'warning'}}
              for code in codes]
-    index = {code: number for number, code in enumerate(codes)}
-    results = []
-    for report in reports:
-        pairs = [(f, None) for f in report.findings] + [
-            (item.finding, item.reason) for item in report.suppressed]
-        for finding, kind in pairs:
-            result: dict[str, object] = {
-                'ruleId': finding.code, 'ruleIndex': index[finding.code],
-                'level': _LEVEL[finding.severity],
-                'message': {'text': _message(finding)},
-                'locations': [_location(finding, report.path)]}
-            related = _related(finding)
-            if related:
-                result['relatedLocations'] = related
-            if kind is not None:
-                result['suppressions'] = [{'kind': kind}]
-            results.append(result)
+    results = _results(reports, {code: number for number, code in enumerate(codes)})
     notifications = []
     for report in reports:
         for text in (report.error, report.refused):
@@ -202,6 +186,27 @@ def sarif_report(reports: list[FileReport]) -> str:
         'invocations': [invocation],
         'results': results}]}
     return json.dumps(log, indent=2)
+
+
+def _results(reports: list[FileReport], index: dict[str, int]) -> list[dict[str, object]]:
+    """Return the SARIF results: each finding, and each suppressed one with its reason."""
+    results = []
+    for report in reports:
+        pairs = [(f, None) for f in report.findings] + [
+            (item.finding, item.reason) for item in report.suppressed]
+        for finding, kind in pairs:
+            result: dict[str, object] = {
+                'ruleId': finding.code, 'ruleIndex': index[finding.code],
+                'level': _LEVEL[finding.severity],
+                'message': {'text': _message(finding)},
+                'locations': [_location(finding, report.path)]}
+            related = _related(finding)
+            if related:
+                result['relatedLocations'] = related
+            if kind is not None:
+                result['suppressions'] = [{'kind': kind}]
+            results.append(result)
+    return results
 
 
 def junit_report(reports: list[FileReport], strict: bool) -> str:

@@ -23,13 +23,9 @@ The formats are the rows of :data:`urdfgenpy_ros.formats.table.FORMATS`; ``load`
 from __future__ import annotations
 
 from os import PathLike
-from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.formats.open import open_description
-from urdfgenpy_ros.formats.table import find_format, FORMATS, load, writer_for
-
-if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+from urdfgenpy_ros.formats.table import find_format, FORMATS, load, save, writer_for
 
 WRITERS = {suffix: row.name for row in FORMATS if row.writer for suffix in row.suffixes}
 """Written suffix -> format name (derived from the table)."""
@@ -46,19 +42,3 @@ def format_of(path: str | PathLike[str]) -> str:
     :raises ModelError: one line, for a suffix no format writes.
     """
     return writer_for(path).name
-
-
-def save(robot: Robot, path: str | PathLike[str], **options: Any) -> None:
-    """
-    Write ``robot`` to ``path`` in the format its suffix names, with the writer's options.
-
-    :raises ModelError: for a suffix no format writes, or an option its writer lacks.
-    """
-    row = writer_for(path)
-    unknown = sorted(set(options) - set(row.options))
-    if unknown:
-        from urdfgenpy_ros.errors import ModelError
-        raise ModelError(f'{path}: {row.description} output takes no option '
-                         f"{', '.join(unknown)} (it takes {', '.join(row.options) or 'none'})")
-    assert row.writer is not None
-    row.writer(robot, path, **options)

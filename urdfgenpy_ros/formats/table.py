@@ -16,45 +16,74 @@
 The formats urdfgenpy reads and writes, declared as data: one row per format.
 
 A row names the format, the file suffixes it owns, its reader and writer (None when it
-has none) and the keyword options its writer takes. Every front end (the library's
-``load``/``save``, the CLI, the node, assembly files, the scaffold, the viewer) finds a
-format here, so a suffix nobody declares is refused in one line everywhere, and adding a
-format is one module plus one row.
+has none), its writer's options (each an :class:`~urdfgenpy_ros.formats.options.Option`,
+giving both the Python keyword and ``convert``'s flag) and its ``prepare``, what the target
+refuses. Every front end (the library's ``load``/``save``, the CLI, the node, assembly
+files, the scaffold, the viewer) finds a format here, so a suffix nobody declares is
+refused in one line everywhere, and adding a format is one module plus one row
+(:func:`register` adds one at run time).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
+from contextlib import contextmanager
 from dataclasses import dataclass
 from os import PathLike
 from pathlib import Path
 from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.errors import ModelError
+from urdfgenpy_ros.formats import writer_options
+from urdfgenpy_ros.formats.options import keywords, Option
+from urdfgenpy_ros.formats.prepare import prepare_mjcf, prepare_sdf
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.validation.checklist import Review
 
 PathArg = str | PathLike[str]
 Reader = Callable[[Path, Mapping[str, str], Iterable[PathArg]], 'Robot']
 Writer = Callable[..., str]
+Options = tuple[Option, ...] | Callable[[], tuple[Option, ...]]
 
 
 @dataclass(frozen=True)
 class Format:
-    """One format: its name, suffixes, reader, writer and the writer's options."""
+    """
+    One format: its name, suffixes, reader, writer, the writer's options and ``prepare``.
+
+    ``options`` may be a function returning them (called when first asked for).
+    ``prepare(robot, options)`` returns the :class:`Review` of what the target refuses;
+    ``one_tree`` says ``convert`` refuses a robot that is not one tree before any other
+    word; ``convert`` names (``module:function``) the CLI's write step when it is not the
+    plain one (write, then one line counting links and joints); ``misplaced`` words the
+    refusal of its flags on other output (``{flag}``: the first, ``{flags}``: all).
+    """
 
     name: str
     suffixes: tuple[str, ...]
     description: str
     reader: Reader | None
     writer: Writer | None
-    options: tuple[str, ...] = ()
+    options: Options = ()
     not_read: str = ''  # why it cannot be read, and what to do instead
+    prepare: Callable[[Robot, Mapping[str, Any]], Review] | None = None
+    one_tree: bool = False
+    convert: str = ''
+    misplaced: str = '{flag} applies to {suffix} output only: drop it or write {suffix}'
 
     def matches(self, path: PathArg) -> bool:
         """Return whether the file name ``path`` ends in one of this format's suffixes."""
         return Path(path).name.lower().endswith(self.suffixes)
+
+    def declared(self) -> tuple[Option, ...]:
+        """Return the writer's options."""
+        return self.options() if callable(self.options) else self.options
+
+    def keywords(self) -> tuple[str, ...]:
+        """Return the writer's Python keywords."""
+        return keywords(self.declared())
 
 
 def _read_urdf(path: Path, mappings: Mapping[str, str], search_paths: Iterable[PathArg]
@@ -109,11 +138,11 @@ def _read_table(path: Path, mappings: Mapping[str, str], search_paths: Iterable[
 def _write_urdf(robot: Robot, path: PathArg, version: str | None = None) -> str:
     from urdfgenpy_ros.formats.urdf import write_urdf
     if version is not None:
-        import warnings
+        from urdfgenpy_ros.caller import warn_caller
         from urdfgenpy_ros.formats.urdf_downgrade import as_version
         robot, changes = as_version(robot, version)
         for change in changes:
-            warnings.warn(str(change), stacklevel=3)
+            warn_caller(str(change))
     return write_urdf(robot, path)
 
 
@@ -122,9 +151,10 @@ def _write_xacro(robot: Robot, path: PathArg, macro: bool = False) -> str:
     return xacro.write_macro_xacro(robot, path) if macro else xacro.write_xacro(robot, path)
 
 
-def _write_sdf(robot: Robot, path: PathArg, **options: Any) -> str:
+def _write_sdf(robot: Robot, path: PathArg, lump_fixed: bool = False,
+               version: str | None = None) -> str:
     from urdfgenpy_ros.formats.sdf import write_sdf
-    return write_sdf(robot, path, **options)
+    return write_sdf(robot, path, lump_fixed, version)
 
 
 def write_mjcf_warning(robot: Robot, path: PathArg | None, **options: Any) -> str:
@@ -144,22 +174,57 @@ def write_mjcf_warning(robot: Robot, path: PathArg | None, **options: Any) -> st
     return result.text
 
 
-FORMATS: tuple[Format, ...] = (
+FORMATS: list[Format] = [
     Format('xacro', ('.urdf.xacro', '.xacro'), 'Xacro', _read_xacro, _write_xacro,
-           ('macro',)),
-    Format('urdf', ('.urdf',), 'URDF', _read_urdf, _write_urdf, ('version',)),
-    Format('sdf', ('.sdf',), 'SDF', None, _write_sdf, ('lump_fixed', 'version'),
-           not_read='reading SDF is not supported (convert from URDF or Xacro)'),
+           writer_options.xacro_options),
+    Format('urdf', ('.urdf',), 'URDF', _read_urdf, _write_urdf, writer_options.urdf_options,
+           misplaced='{flag} applies to .urdf and .xacro output only: drop it or write .urdf'),
+    Format('sdf', ('.sdf',), 'SDF', None, _write_sdf, writer_options.sdf_options,
+           not_read='reading SDF is not supported (convert from URDF or Xacro)',
+           prepare=prepare_sdf, one_tree=True,
+           convert='urdfgenpy_ros.cli.convert_write:write_sdf_file'),
     Format('mjcf', ('.xml', '.mjcf'), 'MuJoCo MJCF', None, write_mjcf_warning,
-           ('fuse_fixed', 'base', 'actuators', 'kp', 'kv', 'scene', 'overlay', 'meshdir',
-            'search_paths', 'overwrite', 'strict'),
+           writer_options.mjcf_options,
            not_read='reading MJCF is not supported: urdfgenpy writes it (a URDF or Xacro '
-                    'file named .xml: rename it .urdf or .urdf.xacro)'),
+                    'file named .xml: rename it .urdf or .urdf.xacro)',
+           prepare=prepare_mjcf, one_tree=True,
+           convert='urdfgenpy_ros.cli.convert_mjcf:write_mjcf_file',
+           misplaced='{flags} apply to MJCF output (.xml, .mjcf) only: drop them or write .xml'),
     Format('assembly', ('.assembly.yaml', '.assembly.yml'), 'assembly file',
            _read_assembly, None),
     Format('dh', ('.yaml', '.yml', '.csv'), 'DH table', _read_table, None),
-)
+]
 """Every format, most specific suffix first (``.urdf.xacro`` before ``.urdf``)."""
+
+
+def register(row: Format) -> None:
+    """
+    Add the format ``row`` (a suffix it shares with a row already there is refused).
+
+    It goes first, so a suffix more specific than another row's (``.toy.json``) wins.
+    """
+    taken = [f'suffix {suffix}' for suffix in row.suffixes
+             if find_format(f'x{suffix}') is not None]
+    taken += ['name'] if any(other.name == row.name for other in FORMATS) else []
+    if taken:
+        raise ModelError(f'format {row.name!r}: its {" and ".join(taken)} already belong '
+                         'to another format: choose another')
+    FORMATS.insert(0, row)
+
+
+def unregister(name: str) -> None:
+    """Remove the format called ``name``."""
+    FORMATS[:] = [row for row in FORMATS if row.name != name]
+
+
+@contextmanager
+def registered(row: Format) -> Iterator[Format]:
+    """Add the format ``row`` for the ``with`` block (a test's format, say)."""
+    register(row)
+    try:
+        yield row
+    finally:
+        unregister(row.name)
 
 
 def _known(role: str) -> str:
@@ -209,6 +274,33 @@ def writer_for(path: PathArg) -> Format:
         raise ModelError(f'{path}: {what} {Path(path).suffix.lower()!r} (urdfgenpy writes '
                          f'{_known("write")})')
     return row
+
+
+def write_as(robot: Robot, name: str, path: PathArg | None, **options: Any) -> str:
+    """Return the text of ``robot`` in the format called ``name``; write it with ``path``."""
+    row = next(row for row in FORMATS if row.name == name)
+    return _write(row, robot, path, options)
+
+
+def save(robot: Robot, path: PathArg, **options: Any) -> None:
+    """
+    Write ``robot`` to ``path`` in the format its suffix names, with the writer's options.
+
+    :raises ModelError: for a suffix no format writes, or an option its writer lacks.
+    """
+    _write(writer_for(path), robot, path, options)
+
+
+def _write(row: Format, robot: Robot, path: PathArg | None, options: Mapping[str, Any]
+           ) -> str:
+    """Return ``row``'s writer's text; refuse an option it lacks in one line."""
+    taken = row.keywords()
+    unknown = sorted(set(options) - set(taken))
+    if unknown:
+        raise ModelError(f'{path}: {row.description} output takes no option '
+                         f"{', '.join(unknown)} (it takes {', '.join(taken) or 'none'})")
+    assert row.writer is not None
+    return row.writer(robot, path, **options)
 
 
 def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,

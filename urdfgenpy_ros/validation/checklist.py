@@ -147,6 +147,8 @@ class Review:
     lacks for some (J103, J106 without ``limit_defaults``); ``refused`` names, per consumer,
     the findings for which it refuses the robot (``'libsdformat'`` with ``write_sdf``);
     ``unknown_suppressions`` are (line, word) of comment words that are no finding code.
+    A format's ``prepare`` adds the ``lines`` a front end says before writing and the
+    ``refusal``, why nothing is written, when the target refuses the robot.
     """
 
     robot: Robot
@@ -157,6 +159,8 @@ class Review:
     needs: list[str] = field(default_factory=list)
     refused: dict[str, list[ValidationError]] = field(default_factory=dict)
     unknown_suppressions: list[tuple[int, str]] = field(default_factory=list)
+    lines: list[str] = field(default_factory=list)
+    refusal: str | None = None
 
     @property
     def errors(self) -> list[ValidationError]:
@@ -182,6 +186,25 @@ class Review:
         """Return what ``fix()`` would do, made on a copy: ``robot`` is left as it is."""
         return fix(copy.deepcopy(self.robot), self.repairable,
                    dict(self.options.limit_defaults), self.options.search_paths)
+
+    def diff(self, path: str | PathLike[str]) -> str:
+        """Return the unified diff ``apply(path)`` would make ('' when it changes nothing)."""
+        from urdfgenpy_ros.validation.rewrite import repaired_text, unified_diff
+        return unified_diff(Path(path), *repaired_text(self.robot, Path(path)))
+
+    def apply(self, path: str | PathLike[str]) -> Review | None:
+        """
+        Write ``robot`` (repaired by ``fix()``) over its URDF file ``path``; review it again.
+
+        Only the repaired lines change; the file keeps its permissions. Return the review
+        of the file written, or None when the file would not change (nothing written).
+        """
+        from urdfgenpy_ros.validation.rewrite import read_written, repaired_text, replace_file
+        old, new = repaired_text(self.robot, Path(path))
+        if new == old:
+            return None
+        replace_file(Path(path), new)
+        return review(read_written(self.robot, Path(path), new), self.options)
 
 
 # ---- the checks -------------------------------------------------------------------------
