@@ -318,3 +318,41 @@ def test_a_mimic_of_a_missing_joint_moves_on_its_own_and_j107_says_why() -> None
     expected = pin.computeGeneralizedGravity(model, data, numpy.array([0.4]))
     assert robot.gravity_torques({'finger_joint': 0.4}) == pytest.approx(expected, abs=1e-12)
     assert model.nq == 1
+
+
+def _agrees_with_pinocchio(robot: Robot, q: list[float]) -> bool:
+    """Return whether FK, gravity and a Jacobian at ``q`` equal pinocchio's on ``robot``."""
+    judge = Pinocchio(robot)
+    pin, model, data = judge.pin, judge.model, judge.data
+    pin.framesForwardKinematics(model, data, judge.q(numpy.asarray(q)))
+    poses = robot.fk(q)
+    worst = max(abs(poses[link] - data.oMf[model.getFrameId(link)].homogeneous).max()
+                for link in poses if model.existFrame(link))
+    gravity = judge.fold(pin.computeGeneralizedGravity(model, data, judge.q(numpy.asarray(q))))
+    pin.computeJointJacobians(model, data, judge.q(numpy.asarray(q)))
+    tip = robot.links[-1].name
+    theirs = pin.getFrameJacobian(model, data, model.getFrameId(tip), pin.LOCAL_WORLD_ALIGNED)
+    jacobian = judge.fold(numpy.reshape(theirs, (6, model.nv)))
+    return bool(worst < 1e-12 and abs(robot.gravity_torques(q) - gravity).max() < 1e-9
+                and abs(robot.jacobian(tip, q) - jacobian).max() < 1e-12)
+
+
+def test_every_edit_after_a_call_is_seen_by_the_next_call() -> None:
+    robot = odd_robot()
+    q = [0.1, 0.2, 0.3]
+    edits = [lambda: setattr(robot.get_joint('e'), 'origin', Origin((0.3, 0, 0.1), (0, 0.2, 1))),
+             lambda: setattr(robot.get_joint('a'), 'axis', (0.0, 1.0, 0.0)),
+             lambda: setattr(robot.get_joint('d'), 'mimic', JointMimic('a', -2.0, 0.3)),
+             lambda: setattr(robot.get_joint('d'), 'mimic', None),
+             lambda: setattr(robot.get_joint('f'), 'type', 'revolute'),
+             lambda: setattr(robot.get_joint('e'), 'parent', 'link_a'),
+             lambda: robot.remove_link('link_g'),
+             lambda: robot.add_link(_link('tip', 1.0, (0, 0, 0.2))).add_joint(Joint(
+                 'h', 'fixed', 'link_f', 'tip', origin=Origin((0, 0, 0.4)))),
+             lambda: setattr(robot.get_link('tip'), 'name', 'tool')]
+    assert _agrees_with_pinocchio(robot, q)
+    for edit in edits:
+        edit()
+        q = [0.1 * (number + 1) for number in range(len(robot.movable_joints))]
+        assert _agrees_with_pinocchio(robot, q)
+    assert 'tool' in robot.fk(q) and 'tip' not in robot.fk(q)

@@ -23,6 +23,7 @@ from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.checks import Vec3
+from urdfgenpy_ros.edits import counted, edited
 from urdfgenpy_ros.errors import ModelError, SourceLocation
 from urdfgenpy_ros.geometry import IDENTITY, Origin
 from urdfgenpy_ros.lazy_lists import lazy_lists, LazySlots
@@ -316,6 +317,7 @@ class _TypeField:
             raise ModelError(f'joint {joint.name!r}: unknown type {value!r} '
                              f'(use one of {_TYPE_NAMES})')
         self._set(joint, kind)
+        edited()
 
 
 setattr(Joint, 'type_slot', Joint.__dict__['type'])
@@ -323,3 +325,4 @@ Joint.type = _TypeField(Joint.__dict__['type'])  # type: ignore[assignment]
 setattr(Joint, 'name_slot', Joint.__dict__['name'])  # the slot, also under this name
 own_names(Joint, 'joint')
 lazy_lists(Joint, 'extensions', 'sensors')
+counted(Joint, 'parent', 'child', 'origin', 'axis', 'mimic')  # kinematics caches see edits

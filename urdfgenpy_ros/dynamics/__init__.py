@@ -29,6 +29,7 @@ import weakref
 
 import numpy
 
+from urdfgenpy_ros import edits
 from urdfgenpy_ros.dynamics.forward import jacobian as _jacobian, link_matrices
 from urdfgenpy_ros.dynamics.forward import LinkPoses
 from urdfgenpy_ros.dynamics.gravity import gravity_torques as _gravity, mass_model
@@ -39,20 +40,27 @@ if TYPE_CHECKING:
 
 __all__ = ['compiled', 'fk', 'gravity_torques', 'jacobian', 'LinkPoses', 'movable_joints']
 
-_CACHE: dict[int, tuple[weakref.ref, tuple, ChainModel]] = {}
+_CACHE: dict[int, list] = {}  # id: [weak reference, fingerprint, edit count, model]
 
 
 def compiled(robot: Robot) -> ChainModel:
     """Return the arrays of ``robot``, compiled again only when its joints changed."""
-    key = fingerprint(robot)
+    count = edits.count
     entry = _CACHE.get(id(robot))
-    if entry is not None and entry[0]() is robot and entry[1] == key:
-        return entry[2]
+    if entry is not None and entry[0]() is robot:
+        if entry[2] == count:  # no robot's tree was edited since: one read
+            return entry[3]
+        key = fingerprint(robot)
+        if entry[1] == key:
+            entry[2] = count
+            return entry[3]
+    else:
+        key = fingerprint(robot)
     model = compile_robot(robot)
     if len(_CACHE) > 64:
         for number in [number for number, item in _CACHE.items() if item[0]() is None]:
             del _CACHE[number]
-    _CACHE[id(robot)] = (weakref.ref(robot), key, model)
+    _CACHE[id(robot)] = [weakref.ref(robot), key, count, model]
     return model
 
 
@@ -66,7 +74,7 @@ def fk(robot: Robot, q: Any = None, base: Any = None, strict: bool = False) -> L
     model = compiled(robot)
     values, single = positions(model, q, strict)
     matrices = link_matrices(model, values, base)
-    return LinkPoses(model.links, matrices[0] if single else matrices)
+    return LinkPoses(model.links, matrices[0] if single else matrices, model.index)
 
 
 def jacobian(robot: Robot, link: str, q: Any = None, frame: str = 'world',

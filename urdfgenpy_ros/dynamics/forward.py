@@ -131,10 +131,12 @@ class LinkPoses(Mapping[str, numpy.ndarray]):
     ``array`` holds them all, (L, 4, 4) or (N, L, 4, 4), links in ``links`` order.
     """
 
-    def __init__(self, links: tuple[str, ...], array: numpy.ndarray) -> None:
+    def __init__(self, links: tuple[str, ...], array: numpy.ndarray,
+                 index: Mapping[str, int] | None = None) -> None:
         self.links = links
         self.array = array
-        self._index = {name: number for number, name in enumerate(links)}
+        self._index = index if index is not None else {
+            name: number for number, name in enumerate(links)}
 
     def __getitem__(self, link: str) -> numpy.ndarray:
         """Return the pose of ``link``."""
