@@ -356,3 +356,26 @@ def test_every_edit_after_a_call_is_seen_by_the_next_call() -> None:
         q = [0.1 * (number + 1) for number in range(len(robot.movable_joints))]
         assert _agrees_with_pinocchio(robot, q)
     assert 'tool' in robot.fk(q) and 'tip' not in robot.fk(q)
+
+
+@pytest.mark.parametrize('path', ROBOTS)
+def test_the_pinocchio_path_gives_the_numpy_paths_numbers(path: Path) -> None:
+    require_module('pinocchio')
+    from urdfgenpy_ros.dynamics import compiled
+    from urdfgenpy_ros.dynamics.forward import jacobian
+    from urdfgenpy_ros.dynamics.gravity import gravity_torques, mass_model
+    robot = _robot(path)
+    model = compiled(robot)
+    configurations = _configurations(robot, 20, 5)
+    tip = model.links[-1]
+    torques = robot.gravity_torques(configurations)  # pinocchio's, where it is installed
+    expected = gravity_torques(model, mass_model(robot, model), configurations)
+    assert abs(torques - expected).max() <= 1e-12 * max(1.0, abs(expected).max())
+    for frame in ('world', 'local'):
+        found = robot.jacobian(tip, configurations, frame)
+        assert abs(found - jacobian(model, tip, configurations, frame)).max() < 1e-12
+        assert abs(robot.jacobian(tip, configurations[3], frame) - found[3]).max() < 1e-15
+    tilted = (0.5, -9.0, -2.0)
+    assert abs(robot.gravity_torques(configurations[0], tilted) - gravity_torques(
+        model, mass_model(robot, model), configurations[:1], tilted)[0]).max() < 1e-12 * max(
+            1.0, abs(expected).max())

@@ -30,8 +30,8 @@ def _package(folder: Path, name: str) -> Path:
     folder.mkdir(parents=True, exist_ok=True)
     (folder / 'package.xml').write_text(
         f'<package format="3"><name>{name}</name><version>1.0.0</version><description>d'
-        '</description><maintainer email="someone@example.com">a</maintainer><license>Apache-2.0</license>'
-        '</package>')
+        '</description><maintainer email="someone@example.com">a</maintainer>'
+        '<license>Apache-2.0</license></package>')
     return folder
 
 

@@ -15,9 +15,10 @@
 """
 A count of the edits that can change any robot's tree, for caches to check in one read.
 
-Adding, removing or renaming a link or joint, and setting a joint's type, ends, origin,
-axis or mimic, add one to :data:`count` (whatever robot the object is in, if any). A
-cache keeps the count it was made at: while it is unchanged, no robot's tree changed.
+Adding, removing or renaming a link or joint, setting a joint's type, ends, origin, axis
+or mimic, a link's inertial or an inertial's mass or origin add one to :data:`count`
+(whatever robot the object is in, if any). A cache keeps the count it was made at: while
+it is unchanged, no robot's tree or masses changed.
 """
 
 from __future__ import annotations

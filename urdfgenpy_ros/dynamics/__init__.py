@@ -17,6 +17,8 @@ Kinematics and statics of a robot, vectorised with numpy.
 
 What ``robot.fk``, ``robot.jacobian`` and ``robot.gravity_torques`` call. The robot is
 compiled to arrays once (:mod:`.model`) and again only when its joints or links change.
+Where pinocchio is installed, Jacobians and gravity torques are computed by it on a model
+built from those arrays (:mod:`.accelerated`): the same numbers, to rounding.
 ``q`` is a mapping of joint names, an array over :func:`movable_joints`, or an (N, dof)
 array of configurations, which gives N results at once.
 """
@@ -30,9 +32,11 @@ import weakref
 import numpy
 
 from urdfgenpy_ros import edits
+from urdfgenpy_ros.dynamics.accelerated import accelerated
 from urdfgenpy_ros.dynamics.forward import jacobian as _jacobian, link_matrices
 from urdfgenpy_ros.dynamics.forward import LinkPoses
-from urdfgenpy_ros.dynamics.gravity import gravity_torques as _gravity, mass_model
+from urdfgenpy_ros.dynamics.gravity import gravity_torques as _gravity, gravity_vector
+from urdfgenpy_ros.dynamics.gravity import mass_model
 from urdfgenpy_ros.dynamics.model import ChainModel, compile_robot, fingerprint, positions
 
 if TYPE_CHECKING:
@@ -82,7 +86,13 @@ def jacobian(robot: Robot, link: str, q: Any = None, frame: str = 'world',
     """Return the geometric Jacobian (6 x dof, or N x 6 x dof) of ``link``."""
     model = compiled(robot)
     values, single = positions(model, q, strict)
-    result = _jacobian(model, link, values, frame, base)
+    fast = None
+    if base is None and frame in ('world', 'local') and link in model.index:
+        fast = accelerated(model, lambda: mass_model(robot, model))
+    if fast is not None:  # pinocchio: the same numbers
+        result = fast.jacobian(model.index[link], values, frame == 'local')
+    else:
+        result = _jacobian(model, link, values, frame, base)
     return result[0] if single else result
 
 
@@ -93,5 +103,9 @@ def gravity_torques(robot: Robot, q: Any = None,
     """Return the torque or force (dof, or N x dof) each movable joint needs to hold still."""
     model = compiled(robot)
     values, single = positions(model, q, strict)
-    result = _gravity(model, mass_model(robot, model, payload), values, gravity)
+    fast = accelerated(model, lambda: mass_model(robot, model)) if payload is None else None
+    if fast is not None:  # pinocchio: the same numbers
+        result = fast.gravity_torques(values, gravity_vector(gravity))
+    else:
+        result = _gravity(model, mass_model(robot, model, payload), values, gravity)
     return result[0] if single else result

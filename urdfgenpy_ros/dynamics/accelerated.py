@@ -1,0 +1,149 @@
+# Copyright 2026 urdfgenpy_ros contributors
+#
+# Licensed under the Apache License, Version 2.0 (the "License");
+# you may not use this file except in compliance with the License.
+# You may obtain a copy of the License at
+#
+#     http://www.apache.org/licenses/LICENSE-2.0
+#
+# Unless required by applicable law or agreed to in writing, software
+# distributed under the License is distributed on an "AS IS" BASIS,
+# WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+# See the License for the specific language governing permissions and
+# limitations under the License.
+
+"""
+Gravity torques and Jacobians through pinocchio where it is installed: the same numbers.
+
+pinocchio is not read from a file: its model is built from the compiled arrays of
+:mod:`.model` and the masses of :mod:`.gravity`, once per compiled model while no robot
+was edited (:mod:`urdfgenpy_ros.edits`). Every joint a value moves (a mimic one too) is
+an unaligned revolute or prismatic joint; fixed, floating and planar joints are merged
+into the placement of what they carry, as the numpy path keeps them at their origin.
+q is spread over pinocchio's joints by the mimic formula, and pinocchio's torques and
+Jacobian columns are folded back (a mimic joint's times its multiplier, added to its
+leader's), as the numpy path does. Without pinocchio, nothing here is used.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+import weakref
+
+import numpy
+
+from urdfgenpy_ros import edits
+from urdfgenpy_ros.dynamics.gravity import MassModel
+from urdfgenpy_ros.dynamics.model import ChainModel, REVOLUTE
+
+_MODULE: list[Any] = []  # [pinocchio or None], once looked for
+
+
+def _pinocchio() -> Any:
+    if not _MODULE:
+        try:
+            import pinocchio
+        except ImportError:
+            pinocchio = None
+        _MODULE.append(pinocchio)
+    return _MODULE[0]
+
+
+class Accelerated:
+    """A pinocchio model and data of one compiled model and its masses."""
+
+    def __init__(self, pin: Any, chain: ChainModel, masses: MassModel) -> None:
+        self.pin, self.chain = pin, chain
+        self.mass = masses.mass.copy()
+        self.moment = masses.moment.copy()
+        model = pin.Model()
+        joint = numpy.zeros(len(chain.links), dtype=int)  # pinocchio joint carrying each
+        placement = numpy.tile(numpy.eye(4), (len(chain.links), 1, 1))  # link in that joint
+        moving: list[int] = []
+        for link in range(1, len(chain.links)):
+            parent = int(chain.parent[link])
+            local = placement[parent] @ chain.origin[link]
+            if chain.source[link] >= 0:
+                kind = (pin.JointModelRevoluteUnaligned if chain.motion[link] == REVOLUTE
+                        else pin.JointModelPrismaticUnaligned)
+                joint[link] = model.addJoint(int(joint[parent]), kind(chain.axis[link].copy()),
+                                             pin.SE3(local), f'{chain.joints[link]}#{link}')
+                moving.append(link)
+            else:
+                joint[link], placement[link] = joint[parent], local
+        self.frames = [self._body(model, link, int(joint[link]), placement[link])
+                       for link in range(len(chain.links))]
+        self.model, self.data = model, model.createData()
+        self.spread = numpy.zeros((len(moving), len(chain.movable)))
+        self.spread[numpy.arange(len(moving)), chain.source[moving]] = chain.multiplier[moving]
+        self.offset = chain.offset[moving]
+        self.gravity = model.gravity.linear.copy()
+
+    def _body(self, model: Any, link: int, joint: int, placement: numpy.ndarray) -> int:
+        pin, mass = self.pin, float(self.mass[link])
+        com = self.moment[link] / mass if mass > 0.0 else numpy.zeros(3)
+        inertia = pin.Inertia(mass, com, numpy.zeros((3, 3)))
+        model.appendBodyToJoint(joint, inertia, pin.SE3(placement))
+        return int(model.addFrame(pin.Frame(f'{self.chain.links[link]}#{link}', joint,
+                                            pin.SE3(placement), pin.FrameType.OP_FRAME)))
+
+    def holds(self, masses: MassModel) -> bool:
+        """Return whether this model's masses are ``masses``."""
+        return bool(numpy.array_equal(self.mass, masses.mass)
+                    and numpy.array_equal(self.moment, masses.moment))
+
+    def gravity_torques(self, q: numpy.ndarray, gravity: numpy.ndarray) -> numpy.ndarray:
+        """Return the (N, dof) torques at the (N, dof) configurations ``q``."""
+        if not numpy.array_equal(gravity, self.gravity):
+            self.model.gravity.linear = gravity
+            self.gravity = gravity.copy()
+        pin, model, data = self.pin, self.model, self.data
+        spread = q @ self.spread.T + self.offset
+        found = numpy.empty((len(q), model.nv))
+        for number, values in enumerate(spread):
+            found[number] = pin.computeGeneralizedGravity(model, data, values)
+        return found @ self.spread
+
+    def jacobian(self, link: int, q: numpy.ndarray, local: bool) -> numpy.ndarray:
+        """Return the (N, 6, dof) Jacobians of link number ``link``."""
+        pin, model, data = self.pin, self.model, self.data
+        frame = self.frames[link]
+        where = pin.LOCAL if local else pin.LOCAL_WORLD_ALIGNED
+        spread = q @ self.spread.T + self.offset
+        found = numpy.empty((len(q), 6, model.nv))
+        flat = found.reshape(len(q), 6 * model.nv)  # pinocchio gives one column 1-D
+        for number, values in enumerate(spread):
+            flat[number] = pin.computeFrameJacobian(model, data, values, frame, where).ravel()
+        return found @ self.spread
+
+
+_CACHE: dict[int, list] = {}  # id of a ChainModel: [weak reference, edit count, Accelerated]
+
+
+def accelerated(chain: ChainModel, masses: Any) -> Accelerated | None:
+    """
+    Return pinocchio's model of ``chain``, or None without pinocchio or with no movable joint.
+
+    ``masses`` is a MassModel, or a function returning it (called only when a robot was
+    edited since the model was made).
+    """
+    pin = _pinocchio()
+    if pin is None or not chain.movable:
+        return None
+    count = edits.count
+    entry = _CACHE.get(id(chain))
+    if entry is not None and entry[0]() is chain:
+        if entry[1] == count:
+            return entry[2]
+        mass = masses() if callable(masses) else masses
+        if entry[2].holds(mass):
+            entry[1] = count
+            return entry[2]
+    else:
+        mass = masses() if callable(masses) else masses
+    found = Accelerated(pin, chain, mass)
+    if len(_CACHE) > 32:
+        for number in [number for number, item in _CACHE.items() if item[0]() is None]:
+            del _CACHE[number]
+    _CACHE[id(chain)] = [weakref.ref(chain), count, found]
+    return found
