@@ -74,9 +74,11 @@ class Accelerated:
         self.frames = [self._body(model, link, int(joint[link]), placement[link])
                        for link in range(len(chain.links))]
         self.model, self.data = model, model.createData()
-        self.spread = numpy.zeros((len(moving), len(chain.movable)))
-        self.spread[numpy.arange(len(moving)), chain.source[moving]] = chain.multiplier[moving]
+        # q to pinocchio's joints and back without a matrix product (BLAS's threads spin)
+        self.column, self.factor = chain.source[moving], chain.multiplier[moving]
         self.offset = chain.offset[moving]
+        self.order = numpy.argsort(self.column, kind='stable')  # each column's joints together
+        self.starts = numpy.searchsorted(self.column[self.order], numpy.arange(len(chain.movable)))
         self.gravity = model.gravity.linear.copy()
 
     def _body(self, model: Any, link: int, joint: int, placement: numpy.ndarray) -> int:
@@ -98,23 +100,29 @@ class Accelerated:
             self.model.gravity.linear = gravity
             self.gravity = gravity.copy()
         pin, model, data = self.pin, self.model, self.data
-        spread = q @ self.spread.T + self.offset
         found = numpy.empty((len(q), model.nv))
-        for number, values in enumerate(spread):
+        for number, values in enumerate(self._spread(q)):
             found[number] = pin.computeGeneralizedGravity(model, data, values)
-        return found @ self.spread
+        return self._fold(found)
 
     def jacobian(self, link: int, q: numpy.ndarray, local: bool) -> numpy.ndarray:
         """Return the (N, 6, dof) Jacobians of link number ``link``."""
         pin, model, data = self.pin, self.model, self.data
         frame = self.frames[link]
         where = pin.LOCAL if local else pin.LOCAL_WORLD_ALIGNED
-        spread = q @ self.spread.T + self.offset
         found = numpy.empty((len(q), 6, model.nv))
         flat = found.reshape(len(q), 6 * model.nv)  # pinocchio gives one column 1-D
-        for number, values in enumerate(spread):
+        for number, values in enumerate(self._spread(q)):
             flat[number] = pin.computeFrameJacobian(model, data, values, frame, where).ravel()
-        return found @ self.spread
+        return self._fold(found)
+
+    def _spread(self, q: numpy.ndarray) -> numpy.ndarray:
+        """Return each pinocchio joint's value: its column of ``q`` by the mimic formula."""
+        return q[:, self.column] * self.factor + self.offset
+
+    def _fold(self, found: numpy.ndarray) -> numpy.ndarray:
+        """Return pinocchio's last axis over our columns: each joint's times its multiplier."""
+        return numpy.add.reduceat((found * self.factor)[..., self.order], self.starts, axis=-1)
 
 
 _CACHE: dict[int, list] = {}  # id of a ChainModel: [weak reference, edit count, Accelerated]
@@ -122,7 +130,7 @@ _CACHE: dict[int, list] = {}  # id of a ChainModel: [weak reference, edit count,
 
 def accelerated(chain: ChainModel, masses: Any) -> Accelerated | None:
     """
-    Return pinocchio's model of ``chain``, or None without pinocchio or with no movable joint.
+    Return pinocchio's model of ``chain``, or None (no pinocchio, or nothing it would move).
 
     ``masses`` is a MassModel, or a function returning it (called only when a robot was
     edited since the model was made).
@@ -141,6 +149,8 @@ def accelerated(chain: ChainModel, masses: Any) -> Accelerated | None:
             return entry[2]
     else:
         mass = masses() if callable(masses) else masses
+    if len(set(chain.source[chain.moving].tolist())) < len(chain.movable):
+        return None  # a column moves no link of the tree: the numpy path gives its zeros
     found = Accelerated(pin, chain, mass)
     if len(_CACHE) > 32:
         for number in [number for number, item in _CACHE.items() if item[0]() is None]:
