@@ -15,10 +15,10 @@
 """
 A count of the edits that can change any robot's tree, for caches to check in one read.
 
-Adding, removing or renaming a link or joint, setting a joint's type, ends, origin, axis
-or mimic, a link's inertial or an inertial's mass or origin add one to :data:`count`
-(whatever robot the object is in, if any). A cache keeps the count it was made at: while
-it is unchanged, no robot's tree or masses changed.
+Adding, removing or renaming a link or joint, and setting a joint's type, ends, origin,
+axis or mimic, add one to :data:`count` (whatever robot the object is in, if any). A
+cache keeps the count it was made at: while it is unchanged, no robot's tree changed
+(masses are not counted: they are read where they are used).
 """
 
 from __future__ import annotations
@@ -36,11 +36,16 @@ def edited() -> None:
 
 
 def counted(cls: type, *names: str) -> None:
-    """Make setting each named slot of ``cls`` count an edit (reading it stays a slot read)."""
+    """
+    Make setting each named slot of ``cls`` count an edit (reading it stays a slot read).
+
+    The slot itself stays settable as ``<name>_slot``, counting nothing (constructors).
+    """
     for name in names:
         slot = cls.__dict__[name]
         setattr(cls, name, property(slot.__get__, _setter(slot.__set__),
                                     doc=getattr(slot, '__doc__', None)))
+        setattr(cls, f'{name}_slot', slot)
 
 
 def _setter(set_slot: Any) -> Any:

@@ -21,7 +21,6 @@ from dataclasses import dataclass, field, KW_ONLY
 import math
 
 from urdfgenpy_ros import checks
-from urdfgenpy_ros.edits import counted
 from urdfgenpy_ros.errors import ModelError, ModelTypeError, SourceLocation
 from urdfgenpy_ros.geometry import (
     _positive, Box, Capsule, Cylinder, Geometry, IDENTITY, Mesh, Origin, Sphere)
@@ -216,5 +215,3 @@ _new = object.__new__
 _SOLID_TENSORS: dict[str, Callable[..., tuple[float, ...]]] = {
     'box': box_tensor, 'cylinder': cylinder_tensor, 'sphere': sphere_tensor,
     'capsule': capsule_tensor}
-
-counted(Inertial, 'mass', 'origin')  # caches of the masses see edits

@@ -252,13 +252,13 @@ class Joint(LazySlots):
                                  'joint (give the direction of motion, e.g. (0, 0, 1))')
         self.name_slot = name  # the slot itself: a new joint belongs to no robot yet
         self.type_slot = kind  # the slot itself: the type is checked above
-        self.parent = parent
-        self.child = child
-        self.origin = origin
-        self.axis = axis
+        self.parent_slot = parent  # the slots themselves: a new joint is in no robot yet
+        self.child_slot = child
+        self.origin_slot = origin
+        self.axis_slot = axis
         self.limit = limit
         self.dynamics = dynamics
-        self.mimic = mimic
+        self.mimic_slot = mimic
         self.safety_controller = safety_controller
         self.calibration = calibration
         self.extensions_if_any = extensions  # None: made on first use (lazy_lists)
@@ -285,6 +285,14 @@ class Joint(LazySlots):
         @type_slot.setter
         def type_slot(self, value: JointType) -> None:
             """Set the type's slot itself."""
+
+        # the slots of the fields a set of counts as an edit (urdfgenpy_ros.edits), set
+        # as they are by the constructor: a new joint belongs to no robot yet
+        parent_slot: str = ''
+        child_slot: str = ''
+        origin_slot: Origin = IDENTITY
+        axis_slot: Vec3 | None = None
+        mimic_slot: JointMimic | None = None
 
     def add_sensor(self, sensor: Sensor) -> Joint:
         """Attach a sensor that lives in a joint (ForceTorque) and return the joint."""

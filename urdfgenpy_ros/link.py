@@ -20,7 +20,6 @@ from dataclasses import dataclass, field, KW_ONLY
 from typing import TYPE_CHECKING
 
 from urdfgenpy_ros import checks
-from urdfgenpy_ros.edits import counted
 from urdfgenpy_ros.errors import ModelTypeError, SourceLocation
 from urdfgenpy_ros.geometry import Geometry, IDENTITY, Origin
 from urdfgenpy_ros.inertial import Inertial
@@ -150,4 +149,3 @@ class Link(LazySlots):
 setattr(Link, 'name_slot', Link.__dict__['name'])  # the slot, also under this name
 own_names(Link, 'link')
 lazy_lists(Link, 'extensions', 'sensors')
-counted(Link, 'inertial')  # caches of the masses see edits

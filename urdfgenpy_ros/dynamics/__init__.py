@@ -88,7 +88,7 @@ def jacobian(robot: Robot, link: str, q: Any = None, frame: str = 'world',
     values, single = positions(model, q, strict)
     fast = None
     if base is None and frame in ('world', 'local') and link in model.index:
-        fast = accelerated(model, lambda: mass_model(robot, model))
+        fast = accelerated(model, robot, masses=False)
     if fast is not None:  # pinocchio: the same numbers
         result = fast.jacobian(model.index[link], values, frame == 'local')
     else:
@@ -103,7 +103,7 @@ def gravity_torques(robot: Robot, q: Any = None,
     """Return the torque or force (dof, or N x dof) each movable joint needs to hold still."""
     model = compiled(robot)
     values, single = positions(model, q, strict)
-    fast = accelerated(model, lambda: mass_model(robot, model)) if payload is None else None
+    fast = accelerated(model, robot, masses=True) if payload is None else None
     if fast is not None:  # pinocchio: the same numbers
         result = fast.gravity_torques(values, gravity_vector(gravity))
     else:

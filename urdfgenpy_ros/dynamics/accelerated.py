@@ -16,10 +16,11 @@
 Gravity torques and Jacobians through pinocchio where it is installed: the same numbers.
 
 pinocchio is not read from a file: its model is built from the compiled arrays of
-:mod:`.model` and the masses of :mod:`.gravity`, once per compiled model while no robot
-was edited (:mod:`urdfgenpy_ros.edits`). Every joint a value moves (a mimic one too) is
-an unaligned revolute or prismatic joint; fixed, floating and planar joints are merged
-into the placement of what they carry, as the numpy path keeps them at their origin.
+:mod:`.model` and the masses of :mod:`.gravity`, once per compiled model (a new one when
+the tree changed) and again when an inertial changed. Every joint a value moves (a mimic
+one too) is an unaligned revolute or prismatic joint; fixed, floating and planar joints
+are merged into the placement of what they carry, as the numpy path keeps them at their
+origin.
 q is spread over pinocchio's joints by the mimic formula, and pinocchio's torques and
 Jacobian columns are folded back (a mimic joint's times its multiplier, added to its
 leader's), as the numpy path does. Without pinocchio, nothing here is used.
@@ -27,14 +28,17 @@ leader's), as the numpy path does. Without pinocchio, nothing here is used.
 
 from __future__ import annotations
 
-from typing import Any
+import operator
+from typing import Any, TYPE_CHECKING
 import weakref
 
 import numpy
 
-from urdfgenpy_ros import edits
-from urdfgenpy_ros.dynamics.gravity import MassModel
+from urdfgenpy_ros.dynamics.gravity import mass_model, MassModel
 from urdfgenpy_ros.dynamics.model import ChainModel, REVOLUTE
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.robot import Robot
 
 _MODULE: list[Any] = []  # [pinocchio or None], once looked for
 
@@ -80,6 +84,7 @@ class Accelerated:
         self.order = numpy.argsort(self.column, kind='stable')  # each column's joints together
         self.starts = numpy.searchsorted(self.column[self.order], numpy.arange(len(chain.movable)))
         self.gravity = model.gravity.linear.copy()
+        self.state: tuple[list, list] = ([], [])  # the masses' mass_state when made
 
     def _body(self, model: Any, link: int, joint: int, placement: numpy.ndarray) -> int:
         pin, mass = self.pin, float(self.mass[link])
@@ -88,11 +93,6 @@ class Accelerated:
         model.appendBodyToJoint(joint, inertia, pin.SE3(placement))
         return int(model.addFrame(pin.Frame(f'{self.chain.links[link]}#{link}', joint,
                                             pin.SE3(placement), pin.FrameType.OP_FRAME)))
-
-    def holds(self, masses: MassModel) -> bool:
-        """Return whether this model's masses are ``masses``."""
-        return bool(numpy.array_equal(self.mass, masses.mass)
-                    and numpy.array_equal(self.moment, masses.moment))
 
     def gravity_torques(self, q: numpy.ndarray, gravity: numpy.ndarray) -> numpy.ndarray:
         """Return the (N, dof) torques at the (N, dof) configurations ``q``."""
@@ -125,35 +125,42 @@ class Accelerated:
         return numpy.add.reduceat((found * self.factor)[..., self.order], self.starts, axis=-1)
 
 
-_CACHE: dict[int, list] = {}  # id of a ChainModel: [weak reference, edit count, Accelerated]
+_CACHE: dict[int, list] = {}  # id of a ChainModel: [weak reference, Accelerated]
+_INERTIAL = operator.attrgetter('inertial')
+_MASS = operator.attrgetter('mass', 'origin')
 
 
-def accelerated(chain: ChainModel, masses: Any) -> Accelerated | None:
+def mass_state(robot: Robot) -> tuple[list, list]:
+    """Return what the masses depend on: each link's inertial, and their masses and origins."""
+    inertials = list(map(_INERTIAL, robot.links))
+    return inertials, list(map(_MASS, filter(None, inertials)))
+
+
+def accelerated(chain: ChainModel, robot: Robot, masses: bool) -> Accelerated | None:
     """
-    Return pinocchio's model of ``chain``, or None (no pinocchio, or nothing it would move).
+    Return pinocchio's model of ``robot`` compiled as ``chain``, or None.
 
-    ``masses`` is a MassModel, or a function returning it (called only when a robot was
-    edited since the model was made).
+    None without pinocchio, or with nothing it would move. With ``masses``, its masses are
+    the robot's as they are now (read again when an inertial changed since).
     """
     pin = _pinocchio()
     if pin is None or not chain.movable:
         return None
-    count = edits.count
     entry = _CACHE.get(id(chain))
     if entry is not None and entry[0]() is chain:
-        if entry[1] == count:
-            return entry[2]
-        mass = masses() if callable(masses) else masses
-        if entry[2].holds(mass):
-            entry[1] = count
-            return entry[2]
+        if not masses:
+            return entry[1]
+        state = mass_state(robot)
+        if state == entry[1].state:
+            return entry[1]
     else:
-        mass = masses() if callable(masses) else masses
+        state = mass_state(robot)
     if len(set(chain.source[chain.moving].tolist())) < len(chain.movable):
         return None  # a column moves no link of the tree: the numpy path gives its zeros
-    found = Accelerated(pin, chain, mass)
+    found = Accelerated(pin, chain, mass_model(robot, chain))
+    found.state = state
     if len(_CACHE) > 32:
         for number in [number for number, item in _CACHE.items() if item[0]() is None]:
             del _CACHE[number]
-    _CACHE[id(chain)] = [weakref.ref(chain), count, found]
+    _CACHE[id(chain)] = [weakref.ref(chain), found]
     return found
