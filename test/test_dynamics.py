@@ -364,8 +364,10 @@ def test_the_pinocchio_path_gives_the_numpy_paths_numbers(path: Path) -> None:
     from urdfgenpy_ros.dynamics import compiled
     from urdfgenpy_ros.dynamics.forward import jacobian
     from urdfgenpy_ros.dynamics.gravity import gravity_torques, mass_model
+    from urdfgenpy_ros.dynamics.accelerated import accelerated
     robot = _robot(path)
     model = compiled(robot)
+    assert accelerated(model, robot, masses=True) is not None  # the path is taken
     configurations = _configurations(robot, 20, 5)
     tip = model.links[-1]
     torques = robot.gravity_torques(configurations)  # pinocchio's, where it is installed
@@ -379,3 +381,15 @@ def test_the_pinocchio_path_gives_the_numpy_paths_numbers(path: Path) -> None:
     assert abs(robot.gravity_torques(configurations[0], tilted) - gravity_torques(
         model, mass_model(robot, model), configurations[:1], tilted)[0]).max() < 1e-12 * max(
             1.0, abs(expected).max())
+
+
+def test_without_pinocchio_the_numpy_path_answers(monkeypatch: pytest.MonkeyPatch) -> None:
+    from urdfgenpy_ros.dynamics import accelerated, compiled
+    robot = odd_robot()
+    q = [0.3, -0.2, 0.5]
+    with_it = robot.gravity_torques(q), robot.jacobian('link_g', q, 'local')
+    monkeypatch.setattr(accelerated, '_MODULE', [None])  # as if it were not installed
+    assert accelerated.accelerated(compiled(robot), robot, True) is None
+    without = robot.gravity_torques(q), robot.jacobian('link_g', q, 'local')
+    assert abs(with_it[0] - without[0]).max() < 1e-12
+    assert abs(with_it[1] - without[1]).max() < 1e-12

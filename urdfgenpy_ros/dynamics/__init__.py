@@ -32,7 +32,7 @@ import weakref
 import numpy
 
 from urdfgenpy_ros import edits
-from urdfgenpy_ros.dynamics.accelerated import accelerated
+from urdfgenpy_ros.dynamics.accelerated import accelerated as _accelerated
 from urdfgenpy_ros.dynamics.forward import jacobian as _jacobian, link_matrices
 from urdfgenpy_ros.dynamics.forward import LinkPoses
 from urdfgenpy_ros.dynamics.gravity import gravity_torques as _gravity, gravity_vector
@@ -88,7 +88,7 @@ def jacobian(robot: Robot, link: str, q: Any = None, frame: str = 'world',
     values, single = positions(model, q, strict)
     fast = None
     if base is None and frame in ('world', 'local') and link in model.index:
-        fast = accelerated(model, robot, masses=False)
+        fast = _accelerated(model, robot, masses=False)
     if fast is not None:  # pinocchio: the same numbers
         result = fast.jacobian(model.index[link], values, frame == 'local')
     else:
@@ -103,7 +103,7 @@ def gravity_torques(robot: Robot, q: Any = None,
     """Return the torque or force (dof, or N x dof) each movable joint needs to hold still."""
     model = compiled(robot)
     values, single = positions(model, q, strict)
-    fast = accelerated(model, robot, masses=True) if payload is None else None
+    fast = _accelerated(model, robot, masses=True) if payload is None else None
     if fast is not None:  # pinocchio: the same numbers
         result = fast.gravity_torques(values, gravity_vector(gravity))
     else:

@@ -47,7 +47,7 @@ def _pinocchio() -> Any:
     if not _MODULE:
         try:
             import pinocchio
-        except ImportError:
+        except (ImportError, OSError):  # not installed, or its libraries not loadable
             pinocchio = None
         _MODULE.append(pinocchio)
     return _MODULE[0]
@@ -91,7 +91,7 @@ class Accelerated:
         com = self.moment[link] / mass if mass > 0.0 else numpy.zeros(3)
         inertia = pin.Inertia(mass, com, numpy.zeros((3, 3)))
         model.appendBodyToJoint(joint, inertia, pin.SE3(placement))
-        return int(model.addFrame(pin.Frame(f'{self.chain.links[link]}#{link}', joint,
+        return int(model.addFrame(pin.Frame(f'{self.chain.links[link]}#{link}', joint, 0,
                                             pin.SE3(placement), pin.FrameType.OP_FRAME)))
 
     def gravity_torques(self, q: numpy.ndarray, gravity: numpy.ndarray) -> numpy.ndarray:
