@@ -28,9 +28,11 @@ temporary folder, ``PYTHONDONTWRITEBYTECODE`` dropped), as in any installed pack
 - **Start-up**: ``urdfgenpy check`` of a two-link file as a process, CPU time (user +
   system), against ``python -c "import lxml.etree"``, the floor of any reader.
 - **Kinematics** on TALOS: one ``robot.fk``/``gravity_torques``/``jacobian`` per call
-  (200 configurations) and 10,000 in one call, microseconds per configuration, against
-  pinocchio's ``framesForwardKinematics``, ``computeGeneralizedGravity`` and
-  ``computeJointJacobians`` + ``getFrameJacobian`` in the same process.
+  (200 configurations) and 10,000 in one call, microseconds of CPU per configuration
+  (the process's, every thread's: OpenBLAS's waiting threads count), against pinocchio's
+  ``framesForwardKinematics``, ``computeGeneralizedGravity`` and
+  ``computeJointJacobians`` + ``getFrameJacobian`` in the same process. CPU time, as
+  the wall clock of a process the shared machine deschedules counts other sessions' work.
 
     python bench/bench_speed.py --baseline /tmp/base [--repeat 5]
 """
@@ -81,9 +83,9 @@ link = 'arm_left_7_link'
 def per(function, count):
     runs = []
     for _ in range(5):
-        start = time.perf_counter()
+        start = time.process_time()
         function()
-        runs.append((time.perf_counter() - start) / count * 1e6)
+        runs.append((time.process_time() - start) / count * 1e6)
     return statistics.median(runs)
 result = {
     'fk': per(lambda: [robot.fk(q) for q in few], len(few)),

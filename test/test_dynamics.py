@@ -318,3 +318,78 @@ def test_a_mimic_of_a_missing_joint_moves_on_its_own_and_j107_says_why() -> None
     expected = pin.computeGeneralizedGravity(model, data, numpy.array([0.4]))
     assert robot.gravity_torques({'finger_joint': 0.4}) == pytest.approx(expected, abs=1e-12)
     assert model.nq == 1
+
+
+def _agrees_with_pinocchio(robot: Robot, q: list[float]) -> bool:
+    """Return whether FK, gravity and a Jacobian at ``q`` equal pinocchio's on ``robot``."""
+    judge = Pinocchio(robot)
+    pin, model, data = judge.pin, judge.model, judge.data
+    pin.framesForwardKinematics(model, data, judge.q(numpy.asarray(q)))
+    poses = robot.fk(q)
+    worst = max(abs(poses[link] - data.oMf[model.getFrameId(link)].homogeneous).max()
+                for link in poses if model.existFrame(link))
+    gravity = judge.fold(pin.computeGeneralizedGravity(model, data, judge.q(numpy.asarray(q))))
+    pin.computeJointJacobians(model, data, judge.q(numpy.asarray(q)))
+    tip = robot.links[-1].name
+    theirs = pin.getFrameJacobian(model, data, model.getFrameId(tip), pin.LOCAL_WORLD_ALIGNED)
+    jacobian = judge.fold(numpy.reshape(theirs, (6, model.nv)))
+    return bool(worst < 1e-12 and abs(robot.gravity_torques(q) - gravity).max() < 1e-9
+                and abs(robot.jacobian(tip, q) - jacobian).max() < 1e-12)
+
+
+def test_every_edit_after_a_call_is_seen_by_the_next_call() -> None:
+    robot = odd_robot()
+    q = [0.1, 0.2, 0.3]
+    edits = [lambda: setattr(robot.get_joint('e'), 'origin', Origin((0.3, 0, 0.1), (0, 0.2, 1))),
+             lambda: setattr(robot.get_joint('a'), 'axis', (0.0, 1.0, 0.0)),
+             lambda: setattr(robot.get_joint('d'), 'mimic', JointMimic('a', -2.0, 0.3)),
+             lambda: setattr(robot.get_joint('d'), 'mimic', None),
+             lambda: setattr(robot.get_joint('f'), 'type', 'revolute'),
+             lambda: setattr(robot.get_joint('e'), 'parent', 'link_a'),
+             lambda: robot.remove_link('link_g'),
+             lambda: robot.add_link(_link('tip', 1.0, (0, 0, 0.2))).add_joint(Joint(
+                 'h', 'fixed', 'link_f', 'tip', origin=Origin((0, 0, 0.4)))),
+             lambda: setattr(robot.get_link('tip'), 'name', 'tool')]
+    assert _agrees_with_pinocchio(robot, q)
+    for edit in edits:
+        edit()
+        q = [0.1 * (number + 1) for number in range(len(robot.movable_joints))]
+        assert _agrees_with_pinocchio(robot, q)
+    assert 'tool' in robot.fk(q) and 'tip' not in robot.fk(q)
+
+
+@pytest.mark.parametrize('path', ROBOTS)
+def test_the_pinocchio_path_gives_the_numpy_paths_numbers(path: Path) -> None:
+    require_module('pinocchio')
+    from urdfgenpy_ros.dynamics import compiled
+    from urdfgenpy_ros.dynamics.forward import jacobian
+    from urdfgenpy_ros.dynamics.gravity import gravity_torques, mass_model
+    from urdfgenpy_ros.dynamics.accelerated import accelerated
+    robot = _robot(path)
+    model = compiled(robot)
+    assert accelerated(model, robot, masses=True) is not None  # the path is taken
+    configurations = _configurations(robot, 20, 5)
+    tip = model.links[-1]
+    torques = robot.gravity_torques(configurations)  # pinocchio's, where it is installed
+    expected = gravity_torques(model, mass_model(robot, model), configurations)
+    assert abs(torques - expected).max() <= 1e-12 * max(1.0, abs(expected).max())
+    for frame in ('world', 'local'):
+        found = robot.jacobian(tip, configurations, frame)
+        assert abs(found - jacobian(model, tip, configurations, frame)).max() < 1e-12
+        assert abs(robot.jacobian(tip, configurations[3], frame) - found[3]).max() < 1e-15
+    tilted = (0.5, -9.0, -2.0)
+    assert abs(robot.gravity_torques(configurations[0], tilted) - gravity_torques(
+        model, mass_model(robot, model), configurations[:1], tilted)[0]).max() < 1e-12 * max(
+            1.0, abs(expected).max())
+
+
+def test_without_pinocchio_the_numpy_path_answers(monkeypatch: pytest.MonkeyPatch) -> None:
+    from urdfgenpy_ros.dynamics import accelerated, compiled
+    robot = odd_robot()
+    q = [0.3, -0.2, 0.5]
+    with_it = robot.gravity_torques(q), robot.jacobian('link_g', q, 'local')
+    monkeypatch.setattr(accelerated, '_MODULE', [None])  # as if it were not installed
+    assert accelerated.accelerated(compiled(robot), robot, True) is None
+    without = robot.gravity_torques(q), robot.jacobian('link_g', q, 'local')
+    assert abs(with_it[0] - without[0]).max() < 1e-12
+    assert abs(with_it[1] - without[1]).max() < 1e-12

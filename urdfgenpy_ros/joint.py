@@ -23,6 +23,7 @@ from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.checks import Vec3
+from urdfgenpy_ros.edits import counted, edited
 from urdfgenpy_ros.errors import ModelError, SourceLocation
 from urdfgenpy_ros.geometry import IDENTITY, Origin
 from urdfgenpy_ros.lazy_lists import lazy_lists, LazySlots
@@ -251,13 +252,13 @@ class Joint(LazySlots):
                                  'joint (give the direction of motion, e.g. (0, 0, 1))')
         self.name_slot = name  # the slot itself: a new joint belongs to no robot yet
         self.type_slot = kind  # the slot itself: the type is checked above
-        self.parent = parent
-        self.child = child
-        self.origin = origin
-        self.axis = axis
+        self.parent_slot = parent  # the slots themselves: a new joint is in no robot yet
+        self.child_slot = child
+        self.origin_slot = origin
+        self.axis_slot = axis
         self.limit = limit
         self.dynamics = dynamics
-        self.mimic = mimic
+        self.mimic_slot = mimic
         self.safety_controller = safety_controller
         self.calibration = calibration
         self.extensions_if_any = extensions  # None: made on first use (lazy_lists)
@@ -284,6 +285,14 @@ class Joint(LazySlots):
         @type_slot.setter
         def type_slot(self, value: JointType) -> None:
             """Set the type's slot itself."""
+
+        # the slots of the fields a set of counts as an edit (urdfgenpy_ros.edits), set
+        # as they are by the constructor: a new joint belongs to no robot yet
+        parent_slot: str = ''
+        child_slot: str = ''
+        origin_slot: Origin = IDENTITY
+        axis_slot: Vec3 | None = None
+        mimic_slot: JointMimic | None = None
 
     def add_sensor(self, sensor: Sensor) -> Joint:
         """Attach a sensor that lives in a joint (ForceTorque) and return the joint."""
@@ -316,6 +325,7 @@ class _TypeField:
             raise ModelError(f'joint {joint.name!r}: unknown type {value!r} '
                              f'(use one of {_TYPE_NAMES})')
         self._set(joint, kind)
+        edited()
 
 
 setattr(Joint, 'type_slot', Joint.__dict__['type'])
@@ -323,3 +333,4 @@ Joint.type = _TypeField(Joint.__dict__['type'])  # type: ignore[assignment]
 setattr(Joint, 'name_slot', Joint.__dict__['name'])  # the slot, also under this name
 own_names(Joint, 'joint')
 lazy_lists(Joint, 'extensions', 'sensors')
+counted(Joint, 'parent', 'child', 'origin', 'axis', 'mimic')  # kinematics caches see edits

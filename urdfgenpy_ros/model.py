@@ -29,6 +29,7 @@ from collections.abc import Callable, Iterator, Mapping
 from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros import checks
+from urdfgenpy_ros.edits import edited
 from urdfgenpy_ros.errors import ModelError, ModelTypeError, ReadWarning, SourceLocation
 from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.joint import Joint
@@ -102,6 +103,7 @@ class RobotModel:
                              '(link names must be unique: rename one)')
         links[name] = link
         link._robot = self
+        edited()
         return self
 
     def add_joint(self, joint: Joint) -> Self:
@@ -127,6 +129,7 @@ class RobotModel:
                              f'{child!r} (a joint connects two different links)')
         joints[name] = joint
         joint._robot = self
+        edited()
         return self
 
     def add_material(self, material: Material) -> Self:
@@ -293,6 +296,7 @@ class RobotModel:
         joint = self.get_joint(name)
         del self._joints[name]
         joint._robot = None
+        edited()
         return joint
 
     def remove_link(self, name: str, *, subtree: bool = False) -> list[Link]:
@@ -316,6 +320,7 @@ class RobotModel:
         for node in below:
             del self._links[node.name]
             node._robot = None
+        edited()
         return below
 
     def remove_material(self, name: str) -> Material:
@@ -366,6 +371,7 @@ class RobotModel:
         """Key links and joints by their names again, after they were renamed in place."""
         self._links = {link.name: link for link in self._links.values()}
         self._joints = {joint.name: joint for joint in self._joints.values()}
+        edited()
 
 
 _built: list[type[Robot]] = []

@@ -25,6 +25,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from urdfgenpy_ros.edits import edited
+
 _SLOTS: dict[type, Any] = {}
 
 
@@ -45,6 +47,7 @@ def own_names(cls: type, kind: str) -> None:
                 getattr(robot, rename)(old, value)
                 return
         slot.__set__(self, value)
+        edited()
 
     setattr(cls, 'name', property(slot.__get__, set_name,
                                   doc=f'The {kind} name; setting it renames the {kind} '
@@ -55,3 +58,4 @@ def set_name_only(element: Any, value: str) -> None:
     """Set a link's or joint's name without renaming anything else (for the renamer)."""
     slot = next(_SLOTS[klass] for klass in type(element).__mro__ if klass in _SLOTS)
     slot.__set__(element, value)
+    edited()

@@ -24,9 +24,8 @@ import posixpath
 from typing import TYPE_CHECKING
 from urllib.parse import unquote, urlparse
 
-from lxml import etree
-
 from urdfgenpy_ros.errors import PACKAGE_FOLDER, UrdfgenpyError
+from urdfgenpy_ros.package_search import package_name, search
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
@@ -37,14 +36,7 @@ class ResourceError(UrdfgenpyError):
 
 
 def _package_name(directory: Path) -> str | None:
-    manifest = directory / 'package.xml'
-    if not manifest.is_file():
-        return None
-    try:
-        name = etree.parse(str(manifest)).findtext('name')
-    except (OSError, etree.XMLSyntaxError):
-        return None
-    return name.strip() if name else None
+    return package_name(directory)
 
 
 class PackageResolver:
@@ -75,18 +67,18 @@ class PackageResolver:
         if name in self.packages:
             return self.packages[name]
         for root in self.search_paths:
-            found = _search(root, name, depth=3)
+            found = search(root, name, depth=3)
             if found is not None:
                 return found
         found = self._installed(name)
         if found is not None:
             return found
         for root in self._ros_package_path():
-            found = _search(root, name, depth=3)
+            found = search(root, name, depth=3)
             if found is not None:
                 return found
         for root in (*self.search_paths, *self._ros_package_path()):
-            found = _search(root, name, depth=3, by_folder_name=True)
+            found = search(root, name, depth=3, by_folder_name=True)
             if found is not None:
                 return found
         return None
@@ -201,30 +193,6 @@ def uri_warning(uri: str) -> str | None:
     return (f'{uri!r} is a relative path written as a file URI, read against the folder of '
             f'the file; it is not portable: write {relative!r} or '
             f'package://<package>/{relative}')
-
-
-def _search(root: Path, name: str, depth: int, by_folder_name: bool = False) -> Path | None:
-    """Find the package ``name`` under ``root`` (or, ``by_folder_name``, a folder so named)."""
-    if not root.is_dir():
-        return None
-    own = _package_name(root)
-    if own == name or (by_folder_name and root.name == name):
-        return root
-    if depth == 0 or own is not None:  # packages do not nest
-        return None
-    try:
-        children = sorted(child for child in root.iterdir() if child.is_dir()
-                          and not child.name.startswith('.'))
-    except OSError:
-        return None
-    for child in children:  # the likely place first: a folder bearing the name
-        if child.name == name and (by_folder_name or _package_name(child) == name):
-            return child
-    for child in children:
-        found = _search(child, name, depth - 1, by_folder_name)
-        if found is not None:
-            return found
-    return None
 
 
 def rebase_meshes(robot: Robot, source_folder: Path, target_folder: Path) -> None:

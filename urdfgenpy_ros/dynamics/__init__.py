@@ -17,6 +17,8 @@ Kinematics and statics of a robot, vectorised with numpy.
 
 What ``robot.fk``, ``robot.jacobian`` and ``robot.gravity_torques`` call. The robot is
 compiled to arrays once (:mod:`.model`) and again only when its joints or links change.
+Where pinocchio is installed, Jacobians and gravity torques are computed by it on a model
+built from those arrays (:mod:`.accelerated`): the same numbers, to rounding.
 ``q`` is a mapping of joint names, an array over :func:`movable_joints`, or an (N, dof)
 array of configurations, which gives N results at once.
 """
@@ -29,9 +31,12 @@ import weakref
 
 import numpy
 
+from urdfgenpy_ros import edits
+from urdfgenpy_ros.dynamics.accelerated import accelerated as _accelerated
 from urdfgenpy_ros.dynamics.forward import jacobian as _jacobian, link_matrices
 from urdfgenpy_ros.dynamics.forward import LinkPoses
-from urdfgenpy_ros.dynamics.gravity import gravity_torques as _gravity, mass_model
+from urdfgenpy_ros.dynamics.gravity import gravity_torques as _gravity, gravity_vector
+from urdfgenpy_ros.dynamics.gravity import mass_model
 from urdfgenpy_ros.dynamics.model import ChainModel, compile_robot, fingerprint, positions
 
 if TYPE_CHECKING:
@@ -39,20 +44,27 @@ if TYPE_CHECKING:
 
 __all__ = ['compiled', 'fk', 'gravity_torques', 'jacobian', 'LinkPoses', 'movable_joints']
 
-_CACHE: dict[int, tuple[weakref.ref, tuple, ChainModel]] = {}
+_CACHE: dict[int, list] = {}  # id: [weak reference, fingerprint, edit count, model]
 
 
 def compiled(robot: Robot) -> ChainModel:
     """Return the arrays of ``robot``, compiled again only when its joints changed."""
-    key = fingerprint(robot)
+    count = edits.count
     entry = _CACHE.get(id(robot))
-    if entry is not None and entry[0]() is robot and entry[1] == key:
-        return entry[2]
+    if entry is not None and entry[0]() is robot:
+        if entry[2] == count:  # no robot's tree was edited since: one read
+            return entry[3]
+        key = fingerprint(robot)
+        if entry[1] == key:
+            entry[2] = count
+            return entry[3]
+    else:
+        key = fingerprint(robot)
     model = compile_robot(robot)
     if len(_CACHE) > 64:
         for number in [number for number, item in _CACHE.items() if item[0]() is None]:
             del _CACHE[number]
-    _CACHE[id(robot)] = (weakref.ref(robot), key, model)
+    _CACHE[id(robot)] = [weakref.ref(robot), key, count, model]
     return model
 
 
@@ -66,7 +78,7 @@ def fk(robot: Robot, q: Any = None, base: Any = None, strict: bool = False) -> L
     model = compiled(robot)
     values, single = positions(model, q, strict)
     matrices = link_matrices(model, values, base)
-    return LinkPoses(model.links, matrices[0] if single else matrices)
+    return LinkPoses(model.links, matrices[0] if single else matrices, model.index)
 
 
 def jacobian(robot: Robot, link: str, q: Any = None, frame: str = 'world',
@@ -74,7 +86,13 @@ def jacobian(robot: Robot, link: str, q: Any = None, frame: str = 'world',
     """Return the geometric Jacobian (6 x dof, or N x 6 x dof) of ``link``."""
     model = compiled(robot)
     values, single = positions(model, q, strict)
-    result = _jacobian(model, link, values, frame, base)
+    fast = None
+    if base is None and frame in ('world', 'local') and link in model.index:
+        fast = _accelerated(model, robot, masses=False)
+    if fast is not None:  # pinocchio: the same numbers
+        result = fast.jacobian(model.index[link], values, frame == 'local')
+    else:
+        result = _jacobian(model, link, values, frame, base)
     return result[0] if single else result
 
 
@@ -85,5 +103,9 @@ def gravity_torques(robot: Robot, q: Any = None,
     """Return the torque or force (dof, or N x dof) each movable joint needs to hold still."""
     model = compiled(robot)
     values, single = positions(model, q, strict)
-    result = _gravity(model, mass_model(robot, model, payload), values, gravity)
+    fast = _accelerated(model, robot, masses=True) if payload is None else None
+    if fast is not None:  # pinocchio: the same numbers
+        result = fast.gravity_torques(values, gravity_vector(gravity))
+    else:
+        result = _gravity(model, mass_model(robot, model, payload), values, gravity)
     return result[0] if single else result

@@ -89,13 +89,19 @@ def _payload(model: ChainModel, payload: Mapping[str, object]
     return model.links.index(str(link)), weight, com
 
 
+def gravity_vector(gravity: Sequence[float] | numpy.ndarray) -> numpy.ndarray:
+    """Return ``gravity`` as a 3-vector, or a ModelError."""
+    g = numpy.asarray(gravity, dtype=float)
+    if g.shape != (3,):
+        raise ModelError(f'gravity must be three numbers (m/s^2), got {gravity!r}')
+    return g
+
+
 def gravity_torques(model: ChainModel, masses: MassModel, q: numpy.ndarray,
                     gravity: Sequence[float] | numpy.ndarray = (0.0, 0.0, -9.81)
                     ) -> numpy.ndarray:
     """Return the (N, dof) torques (N m) or forces (N) that hold the robot at ``q``."""
-    g = numpy.asarray(gravity, dtype=float)
-    if g.shape != (3,):
-        raise ModelError(f'gravity must be three numbers (m/s^2), got {gravity!r}')
+    g = gravity_vector(gravity)
     rotation, position = link_frames(model, q)
     count, links = position.shape[:2]
     first = masses.mass[:, None] * position + (rotation @ masses.moment[:, :, None])[..., 0]

@@ -71,9 +71,9 @@ class ChainModel:
     depth: int
     """The most joints between the root and a link."""
 
-    @property
+    @cached_property
     def index(self) -> dict[str, int]:
-        """Return each link's position in :attr:`links`."""
+        """Return each link's position in :attr:`links` (do not change it)."""
         return {name: number for number, name in enumerate(self.links)}
 
     @cached_property
