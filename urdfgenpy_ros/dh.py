@@ -46,7 +46,7 @@ from urdfgenpy_ros.transforms import (
     translation)
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 __all__ = ['DHConvention', 'DHRow', 'DHTable']
 
@@ -131,7 +131,7 @@ class DHTable:
         return origins, multiply(carried, tool)
 
     def to_robot(self, name: str, link_mass: float = 1.0, link_geometry: str = 'cylinder',
-                 *, link_radius: float = 0.04) -> Robot:
+                 *, link_radius: float = 0.04) -> RobotModel:
         """
         Return the skeleton of the table as a Robot.
 
@@ -165,7 +165,7 @@ class DHTable:
         return robot
 
     @classmethod
-    def from_robot(cls, robot: Robot, base: str, tip: str,
+    def from_robot(cls, robot: RobotModel, base: str, tip: str,
                    convention: DHConvention | str = 'standard') -> DHTable:
         """
         Return the DH table of ``robot``'s serial chain from link ``base`` to link ``tip``.

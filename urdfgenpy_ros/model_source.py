@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
-from typing import NamedTuple
+from typing import cast, NamedTuple
 
 from urdfgenpy_ros.builders import robot_from_function
 from urdfgenpy_ros.errors import ParseError, UrdfgenpyError
@@ -85,11 +85,11 @@ def _load_model(model: str, xacro_args: Sequence[str], package_paths: Sequence[s
         if row.reader is not None and not path.is_file():
             raise UrdfgenpyError(f'{words.model}: {model} does not exist (give the path '
                                  'of a .urdf, .xacro, DH table or assembly file)')
-        robot = load(path, parse_xacro_args(xacro_args, words), package_paths)
+        robot = cast(Robot, load(path, parse_xacro_args(xacro_args, words), package_paths))
         return robot, robot.included_files or [str(path.resolve())]
     if ':' in model and '/' not in model:
         try:
-            return robot_from_function(model), []
+            return cast(Robot, robot_from_function(model)), []
         except UrdfgenpyError as error:
             raise UrdfgenpyError(f'{words.model}: {error}') from None
     raise UrdfgenpyError(f'{words.model}: {model!r} is neither a .urdf/.xacro file nor '

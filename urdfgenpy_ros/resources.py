@@ -30,7 +30,7 @@ from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.report import folder_fix
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
 class ResourceError(UrdfgenpyError):
@@ -226,7 +226,7 @@ def _search(root: Path, name: str, depth: int, by_folder_name: bool = False) -> 
     return None
 
 
-def rebase_meshes(robot: Robot, source_folder: Path, target_folder: Path) -> None:
+def rebase_meshes(robot: RobotModel, source_folder: Path, target_folder: Path) -> None:
     """
     Make the relative mesh paths of ``robot`` right from where it is about to be written.
 

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 import click
 
@@ -68,7 +68,7 @@ def input_options(function: Callable[..., Any]) -> Callable[..., Any]:
 def read_robot(path: Path, arguments: tuple[str, ...], package_paths: tuple[Path, ...],
                warn: bool = True) -> Robot:
     """Read ``path`` with its Xacro arguments; print the reader's warnings on stderr."""
-    robot = load(path, parse_mappings(arguments), package_paths)
+    robot = cast(Robot, load(path, parse_mappings(arguments), package_paths))  # robot_class()
     if warn:
         say_read_warnings(robot)
     return robot

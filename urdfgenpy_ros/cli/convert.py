@@ -22,6 +22,7 @@ each such link gets one line naming the fix, and the exit status is 2.
 from __future__ import annotations
 
 from pathlib import Path
+from typing import cast
 import warnings
 
 import click
@@ -34,6 +35,7 @@ from urdfgenpy_ros.formats.sdf_frames import merge_for_sdf
 from urdfgenpy_ros.formats.sdf_mass import default_mass_notes, mass_only_notes
 from urdfgenpy_ros.formats.sdf_mimic import VERSIONS as SDF_VERSIONS
 from urdfgenpy_ros.formats.urdf_downgrade import as_version, VERSIONS
+from urdfgenpy_ros.model import RobotModel
 from urdfgenpy_ros.report import counted
 from urdfgenpy_ros.resources import rebase_meshes
 from urdfgenpy_ros.robot import Robot
@@ -116,7 +118,7 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
         for line in fix_for_output(robot, fix_radius, package_paths):
             click.echo(line, err=True)
     if urdf_version is not None:
-        robot, changes = as_version(robot, urdf_version)
+        robot, changes = cast(tuple[Robot, list], as_version(robot, urdf_version))
         for change in changes:
             click.echo(str(change), err=True)
     if merge_fixed:
@@ -171,7 +173,7 @@ def _refuse_broken_tree(robot: Robot, target: Path) -> None:
         raise UrdfgenpyError(f'{finding}: {target} not written')
 
 
-def _refuse_invalid_inertia(robot: Robot, target: Path) -> None:
+def _refuse_invalid_inertia(robot: RobotModel, target: Path) -> None:
     """Print one line per link of ``robot`` whose inertia libsdformat refuses; then refuse."""
     found = review(robot, ReviewOptions(check_meshes=False, write_sdf=True, suppressions=False,
                                         checks=('inertia', 'libsdformat')))

@@ -20,6 +20,7 @@ from __future__ import annotations
 from pathlib import Path
 import sys
 import threading
+from typing import cast
 
 import click
 
@@ -49,7 +50,7 @@ def view(path: Path, arguments: tuple[str, ...], port: int, host: str,
     mappings = parse_mappings(arguments)
 
     def read() -> Robot:
-        return load(path, mappings, package_paths)
+        return cast(Robot, load(path, mappings, package_paths))  # robot_class()
 
     def watched(robot: Robot) -> list[str]:
         return sorted({str(path.resolve()), *robot.included_files})

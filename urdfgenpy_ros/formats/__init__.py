@@ -28,7 +28,7 @@ from typing import Any, TYPE_CHECKING
 from urdfgenpy_ros.formats.table import find_format, FORMATS, load, writer_for
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 WRITERS = {suffix: row.name for row in FORMATS if row.writer for suffix in row.suffixes}
 """Written suffix -> format name (derived from the table)."""
@@ -46,7 +46,7 @@ def format_of(path: str | PathLike[str]) -> str:
     return writer_for(path).name
 
 
-def save(robot: Robot, path: str | PathLike[str], **options: Any) -> None:
+def save(robot: RobotModel, path: str | PathLike[str], **options: Any) -> None:
     """
     Write ``robot`` to ``path`` in the format its suffix names, with the writer's options.
 

@@ -33,10 +33,10 @@ from typing import Any, TYPE_CHECKING
 from urdfgenpy_ros.errors import ModelError
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 PathArg = str | PathLike[str]
-Reader = Callable[[Path, Mapping[str, str], Iterable[PathArg]], 'Robot']
+Reader = Callable[[Path, Mapping[str, str], Iterable[PathArg]], 'RobotModel']
 Writer = Callable[..., str]
 
 
@@ -58,7 +58,7 @@ class Format:
 
 
 def _read_urdf(path: Path, mappings: Mapping[str, str], search_paths: Iterable[PathArg]
-               ) -> Robot:
+               ) -> RobotModel:
     from urdfgenpy_ros.formats.detect import xacro_evidence_in
     from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
     data = path.read_bytes()
@@ -86,19 +86,19 @@ def _read_urdf(path: Path, mappings: Mapping[str, str], search_paths: Iterable[P
 
 
 def _read_xacro(path: Path, mappings: Mapping[str, str], search_paths: Iterable[PathArg]
-                ) -> Robot:
+                ) -> RobotModel:
     from urdfgenpy_ros.formats.xacro_read import read_xacro
     return read_xacro(path, dict(mappings), search_paths=list(search_paths))
 
 
 def _read_assembly(path: Path, mappings: Mapping[str, str],
-                   search_paths: Iterable[PathArg]) -> Robot:
+                   search_paths: Iterable[PathArg]) -> RobotModel:
     from urdfgenpy_ros.assembly_file import read_assembly
     return read_assembly(path, list(search_paths), load=load)  # parts: any format
 
 
 def _read_table(path: Path, mappings: Mapping[str, str], search_paths: Iterable[PathArg]
-                ) -> Robot:
+                ) -> RobotModel:
     from urdfgenpy_ros.assembly_file import is_assembly
     if is_assembly(path):  # a YAML file with a top-level parts:
         return _read_assembly(path, mappings, search_paths)
@@ -106,7 +106,7 @@ def _read_table(path: Path, mappings: Mapping[str, str], search_paths: Iterable[
     return DHTable.from_file(path).to_robot(path.name.split('.')[0])
 
 
-def _write_urdf(robot: Robot, path: PathArg, version: str | None = None) -> str:
+def _write_urdf(robot: RobotModel, path: PathArg, version: str | None = None) -> str:
     from urdfgenpy_ros.formats.urdf import write_urdf
     if version is not None:
         import warnings
@@ -117,17 +117,17 @@ def _write_urdf(robot: Robot, path: PathArg, version: str | None = None) -> str:
     return write_urdf(robot, path)
 
 
-def _write_xacro(robot: Robot, path: PathArg, macro: bool = False) -> str:
+def _write_xacro(robot: RobotModel, path: PathArg, macro: bool = False) -> str:
     from urdfgenpy_ros.formats import xacro
     return xacro.write_macro_xacro(robot, path) if macro else xacro.write_xacro(robot, path)
 
 
-def _write_sdf(robot: Robot, path: PathArg, **options: Any) -> str:
+def _write_sdf(robot: RobotModel, path: PathArg, **options: Any) -> str:
     from urdfgenpy_ros.formats.sdf import write_sdf
     return write_sdf(robot, path, **options)
 
 
-def write_mjcf_warning(robot: Robot, path: PathArg | None, **options: Any) -> str:
+def write_mjcf_warning(robot: RobotModel, path: PathArg | None, **options: Any) -> str:
     """
     Return the MJCF text (and write it with ``path``), warning at the caller's line.
 
@@ -212,7 +212,7 @@ def writer_for(path: PathArg) -> Format:
 
 
 def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
-         search_paths: Iterable[str | PathLike[str]] = ()) -> Robot:
+         search_paths: Iterable[str | PathLike[str]] = ()) -> RobotModel:
     """
     Read a robot from ``path`` in the format its suffix names.
 
