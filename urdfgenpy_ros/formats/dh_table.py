@@ -28,23 +28,15 @@ import io
 import math
 from os import PathLike
 from pathlib import Path
-from typing import Any, Protocol, TypeVar
+from typing import Any, TypeVar
 
 from urdfgenpy_ros.dh_row import DHConvention, DHRow
+from urdfgenpy_ros.dh_skeleton import Table
 from urdfgenpy_ros.errors import MissingDependencyError, ModelError, ParseError, SourceLocation
 from urdfgenpy_ros.geometry import Origin
 
 Built = TypeVar('Built')
-"""What ``cls`` builds: a ``dh.DHTable`` (this module does not import it)."""
-
-
-class Table(Protocol):
-    """What is written of a DH table (a ``dh.DHTable``)."""
-
-    convention: DHConvention
-    rows: list[DHRow]
-    base: Origin
-    tool: Origin
+"""What ``cls`` builds: a ``dh.DHTable`` or a ``dh_skeleton.TableRows``."""
 
 
 COLUMNS = ('joint', 'a', 'alpha', 'd', 'theta_offset', 'type', 'lower', 'upper', 'effort',
