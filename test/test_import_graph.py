@@ -26,7 +26,8 @@ strings (the user's builder functions, the viewer's optional engines) are not re
 Packages have no cycle either: each subpackage (``formats``, ``validation``, ``dynamics``,
 ``reshape``, ``moveit``, ``collision``, ``cli``, ...) is one node, with everything in it,
 and each module at the top level is a node of its own (the top level as one node would be a
-cycle by construction: it holds both the model and the facade).
+cycle by construction: it holds both the model and the facade). The edges that still close
+a cycle of packages are named in :data:`CYCLE_LEFT`, each with why.
 
 The layers (docs/architecture.md), each importing only those below it:
 
@@ -69,7 +70,8 @@ MODEL = frozenset(f'{PACKAGE}.{name}' for name in (
 USE_ROBOT = (PACKAGE, f'{PACKAGE}.dh', f'{PACKAGE}.cli.', f'{PACKAGE}.publisher.',
              f'{PACKAGE}.scaffold.',
              f'{PACKAGE}.viewer.', f'{PACKAGE}.model_source', f'{PACKAGE}.examples')
-"""What may import the facade, ``urdfgenpy_ros.robot``, even for types (a name, or a prefix.)"""
+"""What may import the facade, ``urdfgenpy_ros.robot``, even for types (a module, or a
+package's prefix ending in a dot)."""
 CYCLE_LEFT = {
     # formats/ reads assemblies and builder functions with modules outside it, which read
     # through formats/ (the layout puts them in formats/)
