@@ -16,26 +16,35 @@
 The package's import graph, read from its source, has no cycle, and its layers hold.
 
 Every ``import`` and ``from ... import`` anywhere in a module counts, inside functions and
-methods too: an import that runs late is still a dependency, and a cycle through one ties
-modules that then cannot be understood, tested or moved one without the other. ``from pkg
-import name`` is an edge to ``pkg.name`` when that is a module, else to ``pkg``; relative
-imports are resolved. Imports under ``if TYPE_CHECKING:`` are left out: they never run,
-annotations are all they serve. Names given to ``importlib.import_module`` as strings (the
-user's builder functions, the viewer's optional engines) are not read.
+methods too, and those under ``if TYPE_CHECKING:`` as well: an import that runs late is
+still a dependency, and one for the type hints says what a module works on, so a cycle
+through either ties modules that then cannot be understood, tested or moved one without
+the other. ``from pkg import name`` is an edge to ``pkg.name`` when that is a module, else
+to ``pkg``; relative imports are resolved. Names given to ``importlib.import_module`` as
+strings (the user's builder functions, the viewer's optional engines) are not read.
+
+Packages have no cycle either: each subpackage (``formats``, ``validation``, ``dynamics``,
+``reshape``, ``moveit``, ``collision``, ``cli``, ...) is one node, with everything in it,
+and each module at the top level is a node of its own (the top level as one node would be a
+cycle by construction: it holds both the model and the facade). The edges that still close
+a cycle of packages are named in :data:`CYCLE_LEFT`, each with why.
 
 The layers (docs/architecture.md), each importing only those below it:
 
 1. **Model** (:data:`MODEL`): the elements (``geometry``, ``link``, ``joint``,
-   ``inertial``, ...), ``dh_row``, ``mesh_inertia``, ``mesh_read`` and
+   ``inertial``, ...), ``dh_row``, ``dh_skeleton``, ``mesh_inertia``, ``mesh_read`` and
    ``model.RobotModel``, the robot's data and tree.
 2. **Operations** on a model: ``formats/``, ``validation/``, ``dynamics/``, ``reshape/``,
    ``assembly``, ``assembly_file``, ``builders``, ``tree``, ``lumping``, ``resources``,
-   ``dh``, ``urdf_versions``, ``kinematics``, ``plugins``. They name ``Robot`` only for
-   typing; a reader builds the class it is told (``Robot.from_urdf`` passes ``cls``) or
-   else ``model.robot_class()``, which ``robot.py`` sets to ``Robot``; a copy is
-   ``copy.deepcopy(robot)`` or ``type(robot)(...)``.
+   ``urdf_versions``, ``kinematics``, ``plugins``. They are typed against
+   ``RobotModel`` and never name ``Robot``; a reader builds the class it is told
+   (``Robot.from_urdf`` passes ``cls``) or else ``model.robot_class()``, which
+   ``robot.py`` sets to ``Robot``; a copy is ``copy.deepcopy(robot)`` or
+   ``type(robot)(...)``.
 3. **Facade**: ``robot.Robot(RobotModel)``, whose methods (``save``, ``validate``, ``fk``,
-   ``mirror``, ...) call down into the operations.
+   ``mirror``, ...) call down into the operations, and ``dh.DHTable``, whose
+   ``to_robot`` gives a ``Robot`` (the skeleton is ``dh_skeleton``'s, the files
+   ``formats.dh_table``'s).
 4. **Above it** (:data:`USE_ROBOT`): the package's ``__init__``, the front ends (``cli/``,
    ``publisher/``, ``scaffold/``, ``viewer/``), ``model_source``, ``examples``.
 """
@@ -54,14 +63,30 @@ Graph = dict[str, set[str]]
 
 PACKAGE = 'urdfgenpy_ros'
 MODEL = frozenset(f'{PACKAGE}.{name}' for name in (
-    'checks', 'dh_row', 'errors', 'extensions', 'floats', 'geometry', 'inertial', 'joint',
-    'lazy_lists', 'link', 'material', 'mesh_inertia', 'mesh_read', 'model', 'owned_names',
-    'preserved',
-    'sensors', 'transforms', 'value_kinds'))
+    'checks', 'dh_row', 'dh_skeleton', 'errors', 'extensions', 'floats', 'geometry',
+    'inertial', 'joint', 'lazy_lists', 'link', 'material', 'mesh_inertia', 'mesh_read',
+    'model', 'owned_names', 'preserved', 'sensors', 'transforms', 'value_kinds'))
 """The model layer: these import only each other."""
-USE_ROBOT = (PACKAGE, f'{PACKAGE}.cli.', f'{PACKAGE}.publisher.', f'{PACKAGE}.scaffold.',
+USE_ROBOT = (PACKAGE, f'{PACKAGE}.dh', f'{PACKAGE}.cli.', f'{PACKAGE}.publisher.',
+             f'{PACKAGE}.scaffold.',
              f'{PACKAGE}.viewer.', f'{PACKAGE}.model_source', f'{PACKAGE}.examples')
-"""What may import the facade, ``urdfgenpy_ros.robot``, to run (a name, or a prefix.)"""
+"""What may import the facade, ``urdfgenpy_ros.robot``, even for types (a module, or a
+package's prefix ending in a dot)."""
+CYCLE_LEFT = {
+    # formats/ reads assemblies and builder functions with modules outside it, which read
+    # through formats/ (the layout puts them in formats/)
+    (f'{PACKAGE}.formats.table', f'{PACKAGE}.assembly_file'),
+    # the findings and the Xacro source map, shared with validation/ (the layout puts them
+    # below it: model/findings, model/codes, formats/xacro_source, formats/xacro_mapped)
+    (f'{PACKAGE}.formats.mjcf.losses', f'{PACKAGE}.validation.findings'),
+    (f'{PACKAGE}.formats.urdf_downgrade', f'{PACKAGE}.validation.findings'),
+    (f'{PACKAGE}.formats.xacro_read', f'{PACKAGE}.validation.xacro_source'),
+    (f'{PACKAGE}.formats.mjcf', f'{PACKAGE}.validation.xacro_source'),
+    # the MJCF writer refuses what MuJoCo refuses with validate(): validation/ reads what
+    # the writers make, so a refusal the writer runs belongs above it or below validation/
+    (f'{PACKAGE}.formats.mjcf', f'{PACKAGE}.validation'),
+}
+"""The import edges that close a cycle of packages, each still to cut (and why it is there)."""
 
 
 def _modules(root: Path) -> dict[str, Path]:
@@ -75,20 +100,11 @@ def _modules(root: Path) -> dict[str, Path]:
     return modules
 
 
-def _is_type_checking(test: ast.expr) -> bool:
-    return ((isinstance(test, ast.Name) and test.id == 'TYPE_CHECKING')
-            or (isinstance(test, ast.Attribute) and test.attr == 'TYPE_CHECKING'))
-
-
 def _imports(node: ast.AST) -> Iterator[ast.Import | ast.ImportFrom]:
-    """Yield every import statement under ``node`` that can run (not TYPE_CHECKING's)."""
+    """Yield every import statement under ``node``, TYPE_CHECKING's included."""
     if isinstance(node, ast.Import | ast.ImportFrom):
         yield node
-    if isinstance(node, ast.If) and _is_type_checking(node.test):
-        children: list[ast.AST] = list(node.orelse)
-    else:
-        children = list(ast.iter_child_nodes(node))
-    for child in children:
+    for child in ast.iter_child_nodes(node):
         yield from _imports(child)
 
 
@@ -118,6 +134,24 @@ def import_graph(root: Path) -> Graph:
             edges.update(target for target in _targets(statement, package, modules)
                          if target in modules and target != name)
     return graph
+
+
+def package_of(module: str, packages: set[str]) -> str:
+    """Return the node of ``module`` in the package graph: its subpackage, else itself."""
+    top = '.'.join(module.split('.')[:2])
+    return top if top in packages else module
+
+
+def package_graph(graph: Graph, root: Path) -> Graph:
+    """Return the graph of :func:`package_of`'s nodes: a subpackage with all it holds is one."""
+    packages = {f'{root.name}.{path.parent.name}' for path in root.glob('*/__init__.py')}
+    nodes: Graph = {}
+    for module, targets in graph.items():
+        node = package_of(module, packages)
+        edges = nodes.setdefault(node, set())
+        edges.update(package_of(target, packages) for target in targets)
+        edges.discard(node)
+    return nodes
 
 
 def _components(graph: Graph) -> list[list[str]]:
@@ -209,17 +243,32 @@ def test_the_package_has_no_import_cycle(graph: Graph) -> None:
     assert_no_cycle(graph)
 
 
+def test_the_packages_have_no_import_cycle(graph: Graph) -> None:
+    still = {edge for edge in CYCLE_LEFT if edge[1] in graph.get(edge[0], ())}
+    assert still == set(CYCLE_LEFT), 'gone: take them off CYCLE_LEFT'
+    cut = {module: targets - {target for source, target in CYCLE_LEFT if source == module}
+           for module, targets in graph.items()}
+    packages = package_graph(cut, REPO / PACKAGE)
+    assert {f'{PACKAGE}.formats', f'{PACKAGE}.validation', f'{PACKAGE}.robot'} <= set(packages)
+    assert_no_cycle(packages)
+
+
 def test_the_model_imports_nothing_above_it(graph: Graph) -> None:
     assert MODEL <= set(graph)
     above = {f'{module} -> {target}' for module in MODEL for target in graph[module] - MODEL}
     assert above == set()
 
 
-def test_only_what_is_above_the_facade_imports_it_to_run(graph: Graph) -> None:
+def _above(module: str) -> bool:
+    return any(module == name or name.endswith('.') and module.startswith(name)
+               for name in USE_ROBOT)
+
+
+def test_only_what_is_above_the_facade_imports_it(graph: Graph) -> None:
     users = {module for module, targets in graph.items() if f'{PACKAGE}.robot' in targets}
-    assert {f'{PACKAGE}.cli.view', f'{PACKAGE}.examples', PACKAGE} <= users
-    assert {module for module in users
-            if module != PACKAGE and not module.startswith(USE_ROBOT[1:])} == set()
+    assert {f'{PACKAGE}.cli.view', f'{PACKAGE}.examples', f'{PACKAGE}.dh', PACKAGE} <= users
+    assert {module for module in users if not _above(module)} == set()
+    assert not _above(f'{PACKAGE}.dh_row') and _above(f'{PACKAGE}.cli.view')
 
 
 def _package(folder: Path, files: dict[str, str]) -> Path:
@@ -245,7 +294,7 @@ def test_a_cycle_through_an_import_inside_a_function_is_found(tmp_path: Path) ->
     })
     graph = import_graph(root)
     assert graph['pkg.ops.write'] == {'pkg.facade'}
-    assert graph['pkg.ops.typed'] == {'pkg.model'}  # TYPE_CHECKING's import left out
+    assert graph['pkg.ops.typed'] == {'pkg.facade', 'pkg.model'}  # TYPE_CHECKING's counts
     assert graph['pkg.ops.deep'] == {'pkg.ops.write', 'pkg.model'}
     assert graph['pkg.other'] == {'pkg.ops.deep'}
     assert cycles(graph) == ['pkg.facade -> pkg.ops.write -> pkg.facade']
@@ -264,6 +313,36 @@ def test_each_component_names_its_shortest_cycle(tmp_path: Path) -> None:
         'z.py': 'import pkg.a\n',
     })
     assert cycles(import_graph(root)) == ['pkg.a -> pkg.c -> pkg.a', 'pkg.x -> pkg.y -> pkg.x']
+
+
+def test_a_cycle_between_packages_is_found_without_one_between_modules(tmp_path: Path) -> None:
+    root = _package(tmp_path, {
+        '__init__.py': '', 'top.py': 'from pkg.a import x\n', 'low.py': '',
+        'a/__init__.py': '', 'a/x.py': 'from pkg.b import y\nfrom pkg import low\n',
+        'a/z.py': '',
+        'b/__init__.py': '', 'b/y.py': 'from typing import TYPE_CHECKING\n'
+                                       'if TYPE_CHECKING:\n    from pkg.a.z import Z\n',
+    })
+    graph = import_graph(root)
+    assert cycles(graph) == []
+    assert package_graph(graph, root) == {
+        'pkg': set(), 'pkg.top': {'pkg.a'}, 'pkg.low': set(), 'pkg.a': {'pkg.b', 'pkg.low'},
+        'pkg.b': {'pkg.a'}}
+    assert cycles(package_graph(graph, root)) == ['pkg.a -> pkg.b -> pkg.a']
+
+
+def numbers(root: Path) -> dict[str, int]:
+    """Return the sizes of the import graph read from ``root``, for the record."""
+    graph = import_graph(root)
+    packages = package_graph(graph, root)
+    return {'modules': len(graph), 'edges': sum(map(len, graph.values())),
+            'module cycles': len(cycles(graph)),
+            'modules in cycles': sum(map(len, _components(graph))),
+            'packages': len(packages), 'package edges': sum(map(len, packages.values())),
+            'package cycles': len(cycles(packages)),
+            'packages in cycles': sum(map(len, _components(packages))),
+            'importers of robot': sum(f'{root.name}.robot' in targets
+                                      for targets in graph.values())}
 
 
 def test_every_reader_and_copy_builds_a_robot_of_the_class_asked(
@@ -309,3 +388,12 @@ def test_every_reader_and_copy_builds_a_robot_of_the_class_asked(
     assert [type(robot) for robot in mine] == [Mine] * len(mine)
     assert isinstance(mine[0], RobotModel)
     assert type(DHTable.from_file(tmp_path / 'arm.yaml')) is DHTable
+
+
+if __name__ == '__main__':  # python test/test_import_graph.py [package folder]
+    import sys
+    folder = Path(sys.argv[1]) if len(sys.argv) > 1 else REPO / PACKAGE
+    for name, count in numbers(folder).items():
+        print(f'{name}: {count}')
+    found = import_graph(folder)
+    print(*cycles(found), *cycles(package_graph(found, folder)), sep='\n')

@@ -36,7 +36,7 @@ from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.owned_names import set_name_only
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel, RobotT
 
 _TOP_NAMES = ('transmission', 'ros2_control')  # blocks whose own name must be unique
 _NAMED_INSIDE = ('actuator', 'sensor', 'gpio')  # names that must be unique robot-wide
@@ -57,7 +57,7 @@ class _Renaming:
         return self.links.get(name, self.joints.get(name))
 
 
-def prefixed(robot: Robot, prefix: str, *, materials: bool = False) -> Robot:
+def prefixed(robot: RobotT, prefix: str, *, materials: bool = False) -> RobotT:
     """
     Return a copy of ``robot`` with ``prefix`` before every link and joint name.
 
@@ -79,13 +79,13 @@ def prefixed(robot: Robot, prefix: str, *, materials: bool = False) -> Robot:
     return clone
 
 
-def rename(robot: Robot, links: dict[str, str] | None = None,
+def rename(robot: RobotModel, links: dict[str, str] | None = None,
            joints: dict[str, str] | None = None) -> None:
     """Rename links and joints of ``robot`` in place (old -> new); every reference follows."""
     _rename(robot, _Renaming(links or {}, joints or {}))
 
 
-def _rename(robot: Robot, renaming: _Renaming) -> None:
+def _rename(robot: RobotModel, renaming: _Renaming) -> None:
     """Apply ``renaming`` to ``robot`` in place, every reference included."""
     for link in robot.links:
         set_name_only(link, renaming.links.get(link.name, link.name))
@@ -124,7 +124,7 @@ def _rename_sensor(sensor: Any, renaming: _Renaming) -> None:
         sensor.name = renaming.prefix + sensor.name
 
 
-def _blocks(robot: Robot) -> list[Extension]:
+def _blocks(robot: RobotModel) -> list[Extension]:
     owners: list[Any] = [*robot.links, *robot.joints]
     return [*robot.extensions, *(block for owner in owners for block in owner.extensions)]
 
@@ -172,7 +172,7 @@ def _rename_block(root: Any, renaming: _Renaming) -> None:
                 element.text = element.text.replace(text, prefix + text)
 
 
-def _definitions(robot: Robot) -> list[Material]:
+def _definitions(robot: RobotModel) -> list[Material]:
     """Return the materials ``robot`` defines: robot-level, then those visuals define."""
     found = {material.name: material for material in robot.materials}
     for link in robot.links:
@@ -183,9 +183,9 @@ def _definitions(robot: Robot) -> list[Material]:
     return list(found.values())
 
 
-def attach(base: Robot, part: Robot, at: str, origin: Origin | None = None,
+def attach(base: RobotT, part: RobotModel, at: str, origin: Origin | None = None,
            prefix: str = '', joint_name: str | None = None, joint_type: str = 'fixed',
-           **joint_options: Any) -> Robot:
+           **joint_options: Any) -> RobotT:
     """
     Join a prefixed copy of ``part`` to ``base``'s link ``at``; return ``base``.
 
@@ -224,7 +224,7 @@ def attach(base: Robot, part: Robot, at: str, origin: Origin | None = None,
     return base
 
 
-def _unknown_elements(piece: Robot) -> list[Extension]:
+def _unknown_elements(piece: RobotModel) -> list[Extension]:
     """Return the part's top-level elements the model does not hold, to keep them."""
     if piece.extras is None:
         return []
@@ -232,7 +232,7 @@ def _unknown_elements(piece: Robot) -> list[Extension]:
             if isinstance(node.tag, str) and node.tag not in _MODEL_TAGS]
 
 
-def _clashes(base: Robot, piece: Robot, joint_name: str) -> list[str]:
+def _clashes(base: RobotModel, piece: RobotModel, joint_name: str) -> list[str]:
     taken = [f'link {link.name!r}' for link in piece.links if base.has_link(link.name)]
     joints = [joint.name for joint in piece.joints]
     taken += [f'joint {name!r}' for name in joints if base.has_joint(name)]
@@ -244,7 +244,7 @@ def _clashes(base: Robot, piece: Robot, joint_name: str) -> list[str]:
     return taken
 
 
-def _merge_materials(base: Robot, piece: Robot, prefix: str) -> None:
+def _merge_materials(base: RobotModel, piece: RobotModel, prefix: str) -> None:
     """Share the part's materials that equal the base's; rename those that differ."""
     ours = {material.name: material for material in _definitions(base)}
     theirs = _definitions(piece)

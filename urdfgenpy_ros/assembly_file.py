@@ -51,9 +51,9 @@ from urdfgenpy_ros.errors import ParseError, SourceLocation, UrdfgenpyError
 from urdfgenpy_ros.geometry import Origin
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
-    Load = Callable[[Path, dict[str, str], list[Any]], Robot]
+    Load = Callable[[Path, dict[str, str], list[Any]], RobotModel]
 
 CODE = 'A001'
 ASSEMBLY_SUFFIXES = ('.assembly.yaml', '.assembly.yml')
@@ -125,7 +125,7 @@ class _File:
 
 
 def read_assembly(path: str | PathLike[str],
-                  search_paths: Iterable[str | PathLike[str]] = (), *, load: Load) -> Robot:
+                  search_paths: Iterable[str | PathLike[str]] = (), *, load: Load) -> RobotModel:
     """
     Build the robot the assembly file ``path`` describes, reading its parts with ``load``.
 
@@ -191,7 +191,7 @@ def _text(file: _File, mapping: _Mapping, key: str) -> str:
 
 
 def _load_part(file: _File, entry: _Mapping, search_paths: list[Any], load: Load
-               ) -> tuple[Robot, list[str]]:
+               ) -> tuple[RobotModel, list[str]]:
     """Return the part's robot and the files it was read from."""
     if ('file' in entry) == ('function' in entry):
         raise file.error(entry.line, 'file', "each part has either 'file:' (a .urdf, "
@@ -225,7 +225,7 @@ def _xacro_value(value: object) -> str:
     return str(value)
 
 
-def _from_function(file: _File, entry: _Mapping, target: str) -> Robot:
+def _from_function(file: _File, entry: _Mapping, target: str) -> RobotModel:
     from urdfgenpy_ros.builders import robot_from_function
     try:
         return robot_from_function(target)
@@ -242,7 +242,7 @@ def _module_file(target: str) -> list[str]:
     return [str(Path(source).resolve())] if source else []
 
 
-def _attach(file: _File, entry: _Mapping, robot: Robot, part: Robot) -> None:
+def _attach(file: _File, entry: _Mapping, robot: RobotModel, part: RobotModel) -> None:
     from urdfgenpy_ros.assembly import attach
     from urdfgenpy_ros.errors import ModelError
     if 'at' not in entry:
@@ -263,7 +263,7 @@ def _attach(file: _File, entry: _Mapping, robot: Robot, part: Robot) -> None:
         raise file.error(file.at(entry, key), key, str(error)) from None
 
 
-def _only_joint_name_taken(robot: Robot, part: Robot, prefix: str,
+def _only_joint_name_taken(robot: RobotModel, part: RobotModel, prefix: str,
                            joint_name: str | None) -> bool:
     """Return whether a given ``joint_name`` is taken while the prefixed part's names are not."""
     if joint_name is None:

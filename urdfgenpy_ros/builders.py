@@ -32,10 +32,10 @@ from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.model import robot_class
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
-def robot_from_function(target: str) -> Robot:
+def robot_from_function(target: str) -> RobotModel:
     """
     Return the robot ``package.module:function`` builds (a Robot, or URDF text).
 

@@ -32,7 +32,6 @@ from urdfgenpy_ros.preserved import Preserved
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.extensions import Extension
-    from urdfgenpy_ros.model import RobotModel
     from urdfgenpy_ros.sensors import Sensor
 
 
@@ -221,7 +220,8 @@ class Joint(LazySlots):
     sensors: list[Sensor] = field(default_factory=list)
     source: SourceLocation | None = _hidden()
     extras: Preserved | None = _hidden()
-    _robot: RobotModel | None = field(default=None, init=False, compare=False, repr=False)
+    # the RobotModel holding it (not imported for the type: model.py imports this module)
+    _robot: object | None = field(default=None, init=False, compare=False, repr=False)
 
     def __init__(self, name: str, type: JointType | str,  # noqa: A002
                  parent: str, child: str, *, origin: Origin = IDENTITY,

@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING
 from urdfgenpy_ros.joint import JointType
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 Vector = tuple[float, float, float]
 Quaternion = tuple[float, float, float, float]
@@ -66,7 +66,7 @@ def rotate(q: Quaternion, v: Vector) -> Vector:
 class JointTransforms:
     """The transform of every joint of a robot, fixed ones once, moving ones per state."""
 
-    def __init__(self, robot: Robot) -> None:
+    def __init__(self, robot: RobotModel) -> None:
         self.static: list[Transform] = []
         self._moving: list[tuple[str, str, str, Vector, Quaternion, Vector, bool]] = []
         for joint in robot.joints:
@@ -103,8 +103,8 @@ class JointTransforms:
         return result
 
 
-def link_poses(robot: Robot, positions: Mapping[str, float]) -> dict[str, tuple[Vector,
-                                                                                Quaternion]]:
+def link_poses(robot: RobotModel, positions: Mapping[str, float]
+               ) -> dict[str, tuple[Vector, Quaternion]]:
     """Return every link's pose in its root's frame (forward kinematics)."""
     transforms = JointTransforms(robot)
     by_child = {child: (parent, xyz, rotation)

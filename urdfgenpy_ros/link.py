@@ -30,7 +30,6 @@ from urdfgenpy_ros.preserved import Preserved
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.extensions import Extension
-    from urdfgenpy_ros.model import RobotModel
     from urdfgenpy_ros.sensors import Sensor
 
 
@@ -81,7 +80,8 @@ class Link(LazySlots):
     sensors: list[Sensor] = field(default_factory=list)
     source: SourceLocation | None = field(default=None, compare=False, repr=False)
     extras: Preserved | None = field(default=None, compare=False, repr=False)
-    _robot: RobotModel | None = field(default=None, init=False, compare=False, repr=False)
+    # the RobotModel holding it (not imported for the type: model.py imports this module)
+    _robot: object | None = field(default=None, init=False, compare=False, repr=False)
 
     def __init__(self, name: str, *, visuals: list[Visual] | None = None,
                  collisions: list[Collision] | None = None, inertial: Inertial | None = None,

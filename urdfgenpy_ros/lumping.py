@@ -40,7 +40,7 @@ from urdfgenpy_ros.transforms import (
     from_xyz_rpy, IDENTITY4, Matrix4, multiply, to_xyz_rpy)
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotT
 
 WORLD = 'world'
 """The link name URDF uses for the world frame; SDF reserves it."""
@@ -161,7 +161,7 @@ def move_contents(body: Link, child: Link, pose: Matrix4, at: Origin, *,
     body.extensions.extend(child.extensions)
 
 
-def lump_fixed_joints(robot: Robot) -> Robot:
+def lump_fixed_joints(robot: RobotT) -> RobotT:
     """Return a copy of ``robot`` with fixed joints' children merged into their parents."""
     merged = copy.deepcopy(robot)
     while True:

@@ -22,18 +22,18 @@ as RViz reads it (:mod:`urdfgenpy_ros.mesh_read`: a DAE's unit applied, its up a
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from os import PathLike
 from pathlib import Path
-from typing import Any, TYPE_CHECKING
+from typing import Any, TypeVar
 import warnings
 
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
 from urdfgenpy_ros.geometry import Origin
 
-if TYPE_CHECKING:
-    from urdfgenpy_ros.inertial import Inertial
+Built = TypeVar('Built')
+"""What ``cls`` builds: an ``Inertial`` (this module does not import it)."""
 
 
 class ScaleWarning(UserWarning):
@@ -127,8 +127,8 @@ def mass_properties(triangles: Any) -> tuple[float, Any, Any]:
 
 def inertial_from_mesh(filename: str | PathLike[str], density: float | None = None,
                        mass: float | None = None,
-                       scale: Sequence[float] | None = None, *, cls: type[Inertial]
-                       ) -> Inertial:
+                       scale: Sequence[float] | None = None, *, cls: Callable[..., Built]
+                       ) -> Built:
     """
     Return the ``cls`` (an Inertial) of a solid mesh of uniform ``density`` or ``mass``.
 
@@ -162,8 +162,8 @@ def inertial_from_mesh(filename: str | PathLike[str], density: float | None = No
 
 
 def inertial_from_meshlab(mass: float, volume: float, tensor: Sequence[Sequence[float]],
-                          centre: Sequence[float] | None = None, *, cls: type[Inertial]
-                          ) -> Inertial:
+                          centre: Sequence[float] | None = None, *, cls: Callable[..., Built]
+                          ) -> Built:
     """
     Return an SI inertial (a ``cls``) from MeshLab's "Compute Geometric Measures" output.
 

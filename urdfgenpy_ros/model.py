@@ -26,7 +26,7 @@ by ``copy.deepcopy`` or ``type(robot)(...)``.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator, Mapping
-from typing import Any, TYPE_CHECKING
+from typing import Any, TYPE_CHECKING, TypeVar
 
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.edits import edited
@@ -39,10 +39,6 @@ from urdfgenpy_ros.preserved import SourceDocument
 
 if TYPE_CHECKING:
     from typing_extensions import Self
-
-    from urdfgenpy_ros.formats.xacro_map import XacroMap
-
-    from urdfgenpy_ros.robot import Robot
 
 
 def _suggest(name: str, known: Any) -> str:
@@ -72,7 +68,7 @@ class RobotModel:
         self.extras: SourceDocument | None = None  # the record of the file read, if any
         self.read_warnings: list[ReadWarning] = []
         self.included_files: list[str] = []
-        self.source_map: XacroMap | None = None  # where a Xacro expansion's text came from
+        self.source_map: Any = None  # formats.xacro_map.XacroMap: where a Xacro's text came from
 
     def __repr__(self) -> str:
         """Return a one-line summary."""
@@ -374,14 +370,16 @@ class RobotModel:
         edited()
 
 
-_built: list[type[Robot]] = []
+RobotT = TypeVar('RobotT', bound=RobotModel)
+"""A robot of some class, given back as that class (``Robot`` stays ``Robot``)."""
+_built: list[type[RobotModel]] = []
 
 
-def robot_class() -> type[Robot]:
+def robot_class() -> type[RobotModel]:
     """Return the class a reader builds when not told one: ``Robot``, set by ``robot.py``."""
     return _built[-1]
 
 
-def set_robot_class(cls: type[Robot]) -> None:
+def set_robot_class(cls: type[RobotModel]) -> None:
     """Make readers not told a class build ``cls`` (``robot.py`` gives ``Robot``)."""
     _built[:] = [cls]

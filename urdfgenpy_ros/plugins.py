@@ -25,7 +25,7 @@ from urdfgenpy_ros.formats._xml import fmt
 from urdfgenpy_ros.joint import JointType
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
 def _value(value: object) -> str:
@@ -68,7 +68,7 @@ def gz_ros2_control(parameters: str) -> Extension:
                          {'parameters': parameters})
 
 
-def ros2_control(robot: Robot, name: str | None = None,
+def ros2_control(robot: RobotModel, name: str | None = None,
                  plugin: str = 'gz_ros2_control/GazeboSimSystem',
                  command: Iterable[str] = ('position',),
                  state: Iterable[str] = ('position', 'velocity')) -> Extension:

@@ -28,7 +28,7 @@ from urdfgenpy_ros.errors import PACKAGE_FOLDER, UrdfgenpyError
 from urdfgenpy_ros.package_search import package_name, search
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
 class ResourceError(UrdfgenpyError):
@@ -195,7 +195,7 @@ def uri_warning(uri: str) -> str | None:
             f'package://<package>/{relative}')
 
 
-def rebase_meshes(robot: Robot, source_folder: Path, target_folder: Path) -> None:
+def rebase_meshes(robot: RobotModel, source_folder: Path, target_folder: Path) -> None:
     """
     Make the relative mesh paths of ``robot`` right from where it is about to be written.
 

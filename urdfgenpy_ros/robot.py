@@ -19,7 +19,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from os import PathLike
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 from urdfgenpy_ros import checks
 from urdfgenpy_ros.errors import ModelError, ValidationError
@@ -86,7 +86,7 @@ class Robot(RobotModel):
         from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
         data = Path(path).read_bytes()
         weak = refuse_xacro(data, str(path))  # one line naming Robot.from_xacro (X002)
-        robot = read_urdf_bytes(data, str(path), cls)
+        robot = cast(Robot, read_urdf_bytes(data, str(path), cls))  # a cls, as told
         if weak is not None:  # only a $(...) in a mesh filename: urdfdom reads it too
             robot.read_warnings.insert(0, weak)
         return robot
@@ -97,7 +97,7 @@ class Robot(RobotModel):
         from urdfgenpy_ros.formats._xml import xml_bytes
         from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
         data = xml_bytes(xml, 'surrogateescape') if isinstance(xml, str) else xml
-        return read_urdf_bytes(data, file, cls)
+        return cast(Robot, read_urdf_bytes(data, file, cls))
 
     @classmethod
     def from_xacro(cls, path: str | PathLike[str], mappings: dict[str, str] | None = None,
@@ -111,7 +111,7 @@ class Robot(RobotModel):
         ``ROS_PACKAGE_PATH``.
         """
         from urdfgenpy_ros.formats.xacro_read import read_xacro
-        return read_xacro(path, mappings, search_paths, packages, cls)
+        return cast(Robot, read_xacro(path, mappings, search_paths, packages, cls))
 
     # ---- output --------------------------------------------------------------------
 
@@ -213,7 +213,7 @@ class Robot(RobotModel):
         """
         from urdfgenpy_ros.assembly_file import read_assembly
         from urdfgenpy_ros.formats import load
-        return read_assembly(path, search_paths, load=load)
+        return cast(Robot, read_assembly(path, search_paths, load=load))  # robot_class()
 
     # ---- reshaping -----------------------------------------------------------------
 

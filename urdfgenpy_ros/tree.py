@@ -27,7 +27,7 @@ from urdfgenpy_ros.report import counted
 if TYPE_CHECKING:
     from urdfgenpy_ros.joint import Joint
     from urdfgenpy_ros.link import Link
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 _COLOURS = {'robot': '1', 'link': '1;32', 'joint': '0', 'fixed': '90', 'revolute': '36',
             'continuous': '34', 'prismatic': '35', 'floating': '31', 'planar': '31',
@@ -51,7 +51,7 @@ def _shape(link: Link, paint: Paint) -> str:
     return ' ' + paint('shape', f'({type(visual.geometry).__name__.lower()})')
 
 
-def tree_string(robot: Robot, colour: bool = False) -> str:
+def tree_string(robot: RobotModel, colour: bool = False) -> str:
     """
     Return the tree of ``robot``: each line a joint, its type and its child link.
 
@@ -90,12 +90,12 @@ def tree_string(robot: Robot, colour: bool = False) -> str:
     return '\n'.join(lines) + '\n'
 
 
-def print_tree(robot: Robot, stream: TextIO | None = None) -> None:
+def print_tree(robot: RobotModel, stream: TextIO | None = None) -> None:
     """Print the tree, coloured only when the stream is a terminal."""
     stream = stream or sys.stdout
     stream.write(tree_string(robot, colour=stream.isatty()))
 
 
-def save_tree(robot: Robot, path: str | PathLike[str]) -> None:
+def save_tree(robot: RobotModel, path: str | PathLike[str]) -> None:
     """Write the plain tree to ``path`` as UTF-8."""
     Path(path).write_text(tree_string(robot), encoding='utf-8')

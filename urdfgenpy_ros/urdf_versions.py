@@ -29,7 +29,7 @@ from typing import Any, NamedTuple, TYPE_CHECKING
 from urdfgenpy_ros.geometry import Capsule
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 Version = tuple[int, int]
 
@@ -84,7 +84,7 @@ class Feature(NamedTuple):
     tag: str  # the tag to point at on the source line
 
 
-def features(robot: Robot) -> Iterator[Feature]:
+def features(robot: RobotModel) -> Iterator[Feature]:
     """Yield every 1.1 and 1.2 feature the robot uses, link by link, then joint by joint."""
     for link in robot.links:
         owner, path = f'link {link.name!r}', f"/robot/link[@name='{link.name}']"
@@ -114,7 +114,7 @@ def features(robot: Robot) -> Iterator[Feature]:
                                   'limit')
 
 
-def needed_version(robot: Robot) -> Version:
+def needed_version(robot: RobotModel) -> Version:
     """Return the lowest URDF version that holds everything the robot uses (one pass)."""
     needed = (1, 0)
     for joint in robot.joints:

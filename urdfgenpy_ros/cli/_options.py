@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 import click
 
@@ -65,7 +65,7 @@ def input_options(function: Callable[..., Any]) -> Callable[..., Any]:
 def read_robot(path: Path, arguments: tuple[str, ...], package_paths: tuple[Path, ...],
                warn: bool = True) -> Robot:
     """Read ``path`` with its Xacro arguments; print the reader's warnings on stderr."""
-    robot = open_description(path, parse_mappings(arguments), package_paths)
+    robot = cast(Robot, open_description(path, parse_mappings(arguments), package_paths))
     if warn:
         say_read_warnings(robot)
     return robot

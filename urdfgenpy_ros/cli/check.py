@@ -19,7 +19,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 import math
 from pathlib import Path
-from typing import Any, Sequence
+from typing import Any, cast, Sequence
 
 import click
 
@@ -282,7 +282,7 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
     """Read and review one file; with --fix, apply the review's repairs and review again."""
     report = FileReport(str(path))
     try:
-        robot = load(path, mappings, options.review.search_paths)
+        robot = cast(Robot, load(path, mappings, options.review.search_paths))
         found = _review(robot, path, options.review, report)
         expanded = robot.source is not None and (robot.source.file or '').endswith(EXPANDED)
         report.notes += [f'{path}{"" if expanded else f":{line}"}: warning: the suppression '

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 import click
 
@@ -117,7 +117,7 @@ def _transformed(robot: Robot, row: Format, run: ConvertRun,
     """Return the robot the row's transforms (each change said) and --merge-fixed make."""
     for option, value in run.transforms(row):
         assert option.transform is not None
-        robot, changes = option.transform(robot, value)
+        robot, changes = cast(tuple[Robot, list], option.transform(robot, value))
         for change in changes:
             click.echo(str(change), err=True)
     if merge is not None:

@@ -20,6 +20,7 @@ from __future__ import annotations
 from pathlib import Path
 import sys
 import threading
+from typing import cast
 
 import click
 
@@ -50,7 +51,7 @@ def view(path: Path, arguments: tuple[str, ...], port: int, host: str,
     mappings = parse_mappings(arguments)
 
     def read() -> Robot:
-        return open_description(path, mappings, package_paths)
+        return cast(Robot, open_description(path, mappings, package_paths))
 
     def watched(robot: Robot) -> list[str]:
         return sorted({str(path.resolve()), *robot.included_files})

@@ -40,14 +40,14 @@ from urdfgenpy_ros.dynamics.gravity import mass_model
 from urdfgenpy_ros.dynamics.model import ChainModel, compile_robot, fingerprint, positions
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 __all__ = ['compiled', 'fk', 'gravity_torques', 'jacobian', 'LinkPoses', 'movable_joints']
 
 _CACHE: dict[int, list] = {}  # id: [weak reference, fingerprint, edit count, model]
 
 
-def compiled(robot: Robot) -> ChainModel:
+def compiled(robot: RobotModel) -> ChainModel:
     """Return the arrays of ``robot``, compiled again only when its joints changed."""
     count = edits.count
     entry = _CACHE.get(id(robot))
@@ -68,12 +68,12 @@ def compiled(robot: Robot) -> ChainModel:
     return model
 
 
-def movable_joints(robot: Robot) -> list[str]:
+def movable_joints(robot: RobotModel) -> list[str]:
     """Return the joints ``q`` gives values for: movable, not mimic, in the robot's order."""
     return list(compiled(robot).movable)
 
 
-def fk(robot: Robot, q: Any = None, base: Any = None, strict: bool = False) -> LinkPoses:
+def fk(robot: RobotModel, q: Any = None, base: Any = None, strict: bool = False) -> LinkPoses:
     """Return every link's 4x4 pose (N x 4 x 4 for N configurations) in the root frame."""
     model = compiled(robot)
     values, single = positions(model, q, strict)
@@ -81,7 +81,7 @@ def fk(robot: Robot, q: Any = None, base: Any = None, strict: bool = False) -> L
     return LinkPoses(model.links, matrices[0] if single else matrices, model.index)
 
 
-def jacobian(robot: Robot, link: str, q: Any = None, frame: str = 'world',
+def jacobian(robot: RobotModel, link: str, q: Any = None, frame: str = 'world',
              base: Any = None, strict: bool = False) -> numpy.ndarray:
     """Return the geometric Jacobian (6 x dof, or N x 6 x dof) of ``link``."""
     model = compiled(robot)
@@ -96,7 +96,7 @@ def jacobian(robot: Robot, link: str, q: Any = None, frame: str = 'world',
     return result[0] if single else result
 
 
-def gravity_torques(robot: Robot, q: Any = None,
+def gravity_torques(robot: RobotModel, q: Any = None,
                     gravity: Sequence[float] = (0.0, 0.0, -9.81),
                     payload: Mapping[str, object] | None = None, strict: bool = False
                     ) -> numpy.ndarray:

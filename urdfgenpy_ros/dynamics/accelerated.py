@@ -38,7 +38,7 @@ from urdfgenpy_ros.dynamics.gravity import mass_model, MassModel
 from urdfgenpy_ros.dynamics.model import ChainModel, REVOLUTE
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 _MODULE: list[Any] = []  # [pinocchio or None], once looked for
 
@@ -130,13 +130,13 @@ _INERTIAL = operator.attrgetter('inertial')
 _MASS = operator.attrgetter('mass', 'origin')
 
 
-def mass_state(robot: Robot) -> tuple[list, list]:
+def mass_state(robot: RobotModel) -> tuple[list, list]:
     """Return what the masses depend on: each link's inertial, and their masses and origins."""
     inertials = list(map(_INERTIAL, robot.links))
     return inertials, list(map(_MASS, filter(None, inertials)))
 
 
-def accelerated(chain: ChainModel, robot: Robot, masses: bool) -> Accelerated | None:
+def accelerated(chain: ChainModel, robot: RobotModel, masses: bool) -> Accelerated | None:
     """
     Return pinocchio's model of ``robot`` compiled as ``chain``, or None.
 

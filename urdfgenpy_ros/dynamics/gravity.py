@@ -36,7 +36,7 @@ from urdfgenpy_ros.dynamics.model import ChainModel, REVOLUTE
 from urdfgenpy_ros.errors import ModelError
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
 @dataclass(frozen=True)
@@ -47,7 +47,7 @@ class MassModel:
     moment: numpy.ndarray
 
 
-def mass_model(robot: Robot, model: ChainModel, payload: Mapping[str, object] | None = None
+def mass_model(robot: RobotModel, model: ChainModel, payload: Mapping[str, object] | None = None
                ) -> MassModel:
     """
     Return the masses of ``robot``'s links, with ``payload`` added to its link.

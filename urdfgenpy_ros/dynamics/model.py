@@ -37,7 +37,7 @@ from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.joint import Joint, JointType
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 FIXED, REVOLUTE, PRISMATIC = 0, 1, 2
 AGREE = 1e-9  # relative: a mimic joint's given value this close to its leader's formula agrees
@@ -113,7 +113,7 @@ def _leader(joint: Joint, joints: Mapping[str, Joint]) -> tuple[str, float, floa
     return current.name, multiplier, offset
 
 
-def compile_robot(robot: Robot) -> ChainModel:
+def compile_robot(robot: RobotModel) -> ChainModel:
     """Return the arrays of ``robot`` (one root link, or a ModelError naming the roots)."""
     joints = {joint.name: joint for joint in robot.joints}
     leaders = {name: _leader(joint, joints) for name, joint in joints.items()
@@ -155,7 +155,7 @@ _JOINT_TYPE = getattr(vars(Joint)['type'], '_get', operator.attrgetter('type'))
 _NAME = operator.attrgetter('name')
 
 
-def fingerprint(robot: Robot) -> tuple:
+def fingerprint(robot: RobotModel) -> tuple:
     """Return what the compiled arrays depend on; equal fingerprints, equal arrays."""
     joints = robot.joints
     return (tuple(map(_JOINT_FIELDS, joints)), tuple(map(_JOINT_TYPE, joints)),

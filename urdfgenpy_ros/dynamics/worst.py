@@ -47,7 +47,7 @@ from urdfgenpy_ros.dynamics.rigid import along, RigidTorque
 from urdfgenpy_ros.joint import JointType
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 GRID_POINTS = 4096
 STARTS = 64
@@ -70,7 +70,7 @@ class WorstCase:
     """The values of the joints that change this joint's torque (the rest do not)."""
 
 
-def ranges(robot: Robot, model: ChainModel) -> numpy.ndarray:
+def ranges(robot: RobotModel, model: ChainModel) -> numpy.ndarray:
     """Return (dof, 2) ranges: the limits, a full turn for continuous (or unlimited) joints."""
     bounds = numpy.zeros((len(model.movable), 2))
     for number, name in enumerate(model.movable):

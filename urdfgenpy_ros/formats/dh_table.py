@@ -22,19 +22,22 @@ a header row naming the columns.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 import csv
 import io
 import math
 from os import PathLike
 from pathlib import Path
-from typing import Any, TYPE_CHECKING
+from typing import Any, TypeVar
 
 from urdfgenpy_ros.dh_row import DHConvention, DHRow
+from urdfgenpy_ros.dh_skeleton import Table
 from urdfgenpy_ros.errors import MissingDependencyError, ModelError, ParseError, SourceLocation
 from urdfgenpy_ros.geometry import Origin
 
-if TYPE_CHECKING:
-    from urdfgenpy_ros.dh import DHTable
+Built = TypeVar('Built')
+"""What ``cls`` builds: a ``dh.DHTable`` or a ``dh_skeleton.TableRows``."""
+
 
 COLUMNS = ('joint', 'a', 'alpha', 'd', 'theta_offset', 'type', 'lower', 'upper', 'effort',
            'velocity')
@@ -110,7 +113,7 @@ def _convention(value: Any, where: SourceLocation) -> DHConvention:
                          'D003') from None
 
 
-def read_table(path: str | PathLike[str], cls: type[DHTable]) -> DHTable:
+def read_table(path: str | PathLike[str], cls: Callable[..., Built]) -> Built:
     """
     Read a DH table (a ``cls``) from a .yaml/.yml or .csv file.
 
@@ -126,7 +129,7 @@ def read_table(path: str | PathLike[str], cls: type[DHTable]) -> DHTable:
                      SourceLocation(str(path)), 'D001')
 
 
-def _read_yaml(text: str, file: str, cls: type[DHTable]) -> DHTable:
+def _read_yaml(text: str, file: str, cls: Callable[..., Built]) -> Built:
     yaml = _yaml()
     try:
         data = yaml.safe_load(text)
@@ -169,7 +172,7 @@ def _yaml_row_line(lines: list[str], index: int) -> int:
     return 1
 
 
-def _read_csv(text: str, file: str, cls: type[DHTable]) -> DHTable:
+def _read_csv(text: str, file: str, cls: Callable[..., Built]) -> Built:
     settings: dict[str, str] = {}
     body = []
     for number, line in enumerate(text.splitlines(), start=1):
@@ -196,7 +199,7 @@ def _read_csv(text: str, file: str, cls: type[DHTable]) -> DHTable:
     return cls(_convention(settings.get('convention', ''), where), rows)
 
 
-def write_table(table: DHTable, path: str | PathLike[str], degrees: bool = False) -> None:
+def write_table(table: Table, path: str | PathLike[str], degrees: bool = False) -> None:
     """Write ``table`` as YAML or CSV by suffix; angles in degrees when asked."""
     def angle(value: float) -> float:
         return math.degrees(value) if degrees else value

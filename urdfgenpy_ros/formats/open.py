@@ -32,7 +32,7 @@ from urdfgenpy_ros.errors import InputError, UrdfgenpyError
 from urdfgenpy_ros.formats.table import find_format, load
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 Arguments = Sequence[str] | Mapping[str, str]
 """Xacro arguments: ``name:=value`` strings, or a mapping of them."""
@@ -56,7 +56,7 @@ def parse_args(arguments: Arguments) -> dict[str, str]:
 
 
 def open_description(source: str | PathLike[str], args: Arguments = (),
-                     package_paths: Iterable[str | PathLike[str]] = ()) -> Robot:
+                     package_paths: Iterable[str | PathLike[str]] = ()) -> RobotModel:
     """
     Return the robot ``source`` names: a file, or a ``package.module:function``.
 
@@ -84,7 +84,7 @@ def open_description(source: str | PathLike[str], args: Arguments = (),
                      'package.module:function', value=source)
 
 
-def files_read(source: str | PathLike[str], robot: Robot) -> list[str]:
+def files_read(source: str | PathLike[str], robot: RobotModel) -> list[str]:
     """Return the files ``robot``, opened from ``source``, was read from (to watch them)."""
     if not isinstance(source, PathLike) and find_format(source) is None:
         return []  # a function's robot

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 from typing import Any, TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
 @dataclass(frozen=True)
@@ -59,7 +59,7 @@ class Option:
     parse: Callable[[tuple[str, ...]], Any] | None = None
     rank: int = 100
     also: tuple[str, ...] = ()
-    transform: Callable[[Robot, Any], tuple[Robot, list[Any]]] | None = None
+    transform: Callable[[RobotModel, Any], tuple[RobotModel, list[Any]]] | None = None
 
     @property
     def name(self) -> str:

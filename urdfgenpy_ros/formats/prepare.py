@@ -28,11 +28,11 @@ from collections.abc import Mapping
 from typing import Any, TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
     from urdfgenpy_ros.validation.checklist import Review
 
 
-def tree_review(robot: Robot) -> Review:
+def tree_review(robot: RobotModel) -> Review:
     """Return the review of the robot's tree alone; a robot not one tree is refused."""
     from urdfgenpy_ros.validation.checklist import review, ReviewOptions
     found = review(robot, ReviewOptions(check_meshes=False, suppressions=False,
@@ -42,7 +42,7 @@ def tree_review(robot: Robot) -> Review:
     return found
 
 
-def prepare_sdf(robot: Robot, options: Mapping[str, Any]) -> Review:
+def prepare_sdf(robot: RobotModel, options: Mapping[str, Any]) -> Review:
     """Return what libsdformat refuses in the SDF of ``robot`` (with the writer's options)."""
     found = tree_review(robot)
     if found.refusal is not None:
@@ -72,7 +72,7 @@ def prepare_sdf(robot: Robot, options: Mapping[str, Any]) -> Review:
     return found
 
 
-def prepare_mjcf(robot: Robot, options: Mapping[str, Any]) -> Review:
+def prepare_mjcf(robot: RobotModel, options: Mapping[str, Any]) -> Review:
     """
     Return what MuJoCo refuses in the MJCF of ``robot`` (with the writer's options).
 

@@ -50,7 +50,7 @@ from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.sensors import Camera, ForceTorque, Lidar, Sensor
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 _TYPES = {JointType.REVOLUTE: 'revolute', JointType.CONTINUOUS: 'continuous',
           JointType.PRISMATIC: 'prismatic', JointType.FIXED: 'fixed'}
@@ -90,7 +90,7 @@ def _geometry(parent: Any, geometry: Geometry) -> None:
             _text(shape, 'scale', fmt_vec(geometry.scale))
 
 
-def _material(parent: Any, material: Material | None, robot: Robot) -> None:
+def _material(parent: Any, material: Material | None, robot: RobotModel) -> None:
     if material is None:
         return
     rgba = material.rgba
@@ -162,7 +162,7 @@ def _unique(name: str, taken: set[str]) -> str:
     return candidate
 
 
-def _link(model: Any, link: Link, robot: Robot, pose: tuple[Origin, str] | None) -> Any:
+def _link(model: Any, link: Link, robot: RobotModel, pose: tuple[Origin, str] | None) -> Any:
     element = etree.SubElement(model, 'link', name=link.name)
     if pose is not None:
         _pose(element, pose[0], pose[1])
@@ -191,7 +191,7 @@ def _link(model: Any, link: Link, robot: Robot, pose: tuple[Origin, str] | None)
     return element
 
 
-def _fixed_to_world(robot: Robot) -> bool:
+def _fixed_to_world(robot: RobotModel) -> bool:
     """
     Return whether the robot's root is URDF's ``world`` link, an empty frame.
 
@@ -255,7 +255,7 @@ def _frames(model: Any, frames: list[Merged], names: set[str]) -> None:
             etree.SubElement(model, 'frame', name=merged.link, attached_to=merged.joint)
 
 
-def _joint_names(robot: Robot, source: Robot) -> dict[str, str]:
+def _joint_names(robot: RobotModel, source: RobotModel) -> dict[str, str]:
     """
     Return each joint's SDF name: SDF frames share one namespace, URDF's do not.
 
@@ -268,7 +268,7 @@ def _joint_names(robot: Robot, source: Robot) -> dict[str, str]:
             for joint in robot.joints}
 
 
-def _check_ends(robot: Robot) -> None:
+def _check_ends(robot: RobotModel) -> None:
     for joint in robot.joints:
         for role in ('parent', 'child'):
             if not robot.has_link(getattr(joint, role)):
@@ -280,7 +280,7 @@ def _check_ends(robot: Robot) -> None:
                              'two prismatic joints and a revolute one)')
 
 
-def _notes(robot: Robot, merged: Robot, frames: list[Merged], version: str) -> list[str]:
+def _notes(robot: RobotModel, merged: RobotModel, frames: list[Merged], version: str) -> list[str]:
     notes = [str(loss) for loss in (*gazebo_losses(merged, [f.joint for f in frames]),
                                     *script_notes(merged))]
     notes.extend(mimic_notes(robot, version))
@@ -289,7 +289,7 @@ def _notes(robot: Robot, merged: Robot, frames: list[Merged], version: str) -> l
     return notes
 
 
-def write_sdf(robot: Robot, path: str | PathLike[str] | None = None,
+def write_sdf(robot: RobotModel, path: str | PathLike[str] | None = None,
               lump_fixed: bool = False, version: str | None = None) -> str:
     """
     Return the SDF text of ``robot``; also write it to ``path`` when given.

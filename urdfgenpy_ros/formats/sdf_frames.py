@@ -37,7 +37,7 @@ from urdfgenpy_ros.transforms import from_xyz_rpy, multiply, to_xyz_rpy
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.link import Link
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
 class Merged(NamedTuple):
@@ -54,7 +54,7 @@ def is_massless(link: Link) -> bool:
     return link.inertial is None and mass_only(link) is None
 
 
-def becomes_frame(robot: Robot, joint: Joint, lump_fixed: bool = False) -> bool:
+def becomes_frame(robot: RobotModel, joint: Joint, lump_fixed: bool = False) -> bool:
     """Return whether SDF output merges ``joint``'s child into its parent, leaving frames."""
     if not lumps(joint) or joint.sensors or any(
             block.element.find('sensor') is not None for block in joint.extensions):
@@ -68,7 +68,7 @@ def _compose(outer: Origin, inner: Origin) -> Origin:
     return Origin(xyz, rpy)
 
 
-def give_lone_masses(robot: Robot) -> None:
+def give_lone_masses(robot: RobotModel) -> None:
     """Give each link with a ``<mass>`` and no ``<inertia>`` that mass and a zero tensor."""
     for link in robot.links:
         found = mass_only(link)
@@ -76,7 +76,7 @@ def give_lone_masses(robot: Robot) -> None:
             link.inertial = Inertial(found.mass, origin=found.origin, source=found.location)
 
 
-def merge_for_sdf(robot: Robot, lump_fixed: bool = False) -> tuple[Robot, list[Merged]]:
+def merge_for_sdf(robot: RobotModel, lump_fixed: bool = False) -> tuple[RobotModel, list[Merged]]:
     """
     Return a copy of ``robot`` with the links SDF writes as frames merged, and those links.
 

@@ -38,7 +38,7 @@ from urdfgenpy_ros.floats import fmt
 if TYPE_CHECKING:
     from urdfgenpy_ros.extensions import Extension
     from urdfgenpy_ros.link import Link
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 _TRUE = ('true', 'yes', '1')
 MATERIAL_SCRIPTS = 'file://media/materials/scripts/gazebo.material'
@@ -217,7 +217,7 @@ class Loss(NamedTuple):
         return f'{self.location}: warning: {block} <{self.tag}>: {self.why}{lost}'
 
 
-def _link_losses(robot: Robot, losses: list[Loss]) -> None:
+def _link_losses(robot: RobotModel, losses: list[Loss]) -> None:
     for link in robot.links:
         for block in link.extensions:
             if block.tag != 'gazebo':
@@ -249,7 +249,7 @@ def _why_lost(link: Link, block: Extension, child: Any) -> str | None:
             "with the link's (rename them)")
 
 
-def _other_losses(robot: Robot, gone: list[str], losses: list[Loss]) -> None:
+def _other_losses(robot: RobotModel, gone: list[str], losses: list[Loss]) -> None:
     for joint in robot.joints:
         for block in joint.extensions:
             for child in children(block):
@@ -276,7 +276,7 @@ def _other_losses(robot: Robot, gone: list[str], losses: list[Loss]) -> None:
                 losses.append(Loss(_location(block, child), block.reference, child.tag, why))
 
 
-def gazebo_losses(merged: Robot, gone: list[str]) -> list[Loss]:
+def gazebo_losses(merged: RobotModel, gone: list[str]) -> list[Loss]:
     """
     Return each ``<gazebo>`` element the SDF of ``merged`` does not carry.
 
@@ -290,7 +290,7 @@ def gazebo_losses(merged: Robot, gone: list[str]) -> list[Loss]:
     return losses
 
 
-def script_notes(merged: Robot) -> list[Loss]:
+def script_notes(merged: RobotModel) -> list[Loss]:
     """Return one line per Gazebo-classic material script the SDF keeps for no renderer."""
     notes = []
     for link in merged.links:

@@ -30,7 +30,7 @@ from urdfgenpy_ros.geometry import Origin
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.link import Link
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
 class MassOnly(NamedTuple):
@@ -65,7 +65,7 @@ def mass_only(link: Link) -> MassOnly | None:
     return None
 
 
-def mass_only_notes(robot: Robot) -> list[str]:
+def mass_only_notes(robot: RobotModel) -> list[str]:
     """Return one line per link whose mass-only inertial SDF output keeps."""
     notes = []
     for link in robot.links:
@@ -87,7 +87,7 @@ def _numbers(text: str | None) -> tuple[float, float, float]:
     return values
 
 
-def default_mass_notes(robot: Robot) -> list[str]:
+def default_mass_notes(robot: RobotModel) -> list[str]:
     """
     Return one line per link SDF output writes with no ``<inertial>`` at all.
 

@@ -31,7 +31,7 @@ from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.joint import JointType
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 VERSIONS = ('1.9', '1.11')
 """The SDFormat versions SDF output writes: 1.9 (libsdformat 12), 1.11 (mimic joints)."""
@@ -47,7 +47,7 @@ class Follow(NamedTuple):
     offset: float
 
 
-def sdf_version(robot: Robot, version: str | None) -> str:
+def sdf_version(robot: RobotModel, version: str | None) -> str:
     """
     Return the SDFormat version to write: ``version``, else 1.11 with mimic joints, else 1.9.
 
@@ -61,7 +61,8 @@ def sdf_version(robot: Robot, version: str | None) -> str:
     return version
 
 
-def follows(robot: Robot, original: Robot | None = None) -> tuple[dict[str, Follow], list[str]]:
+def follows(robot: RobotModel, original: RobotModel | None = None
+            ) -> tuple[dict[str, Follow], list[str]]:
     """
     Return each follower's resolved leader in ``robot`` and one line per change made.
 
@@ -91,7 +92,7 @@ def follows(robot: Robot, original: Robot | None = None) -> tuple[dict[str, Foll
     return resolved, notes
 
 
-def _resolve(robot: Robot, name: str) -> tuple[Follow | None, list[str]]:
+def _resolve(robot: RobotModel, name: str) -> tuple[Follow | None, list[str]]:
     """Follow the chain of leaders from ``name``; None when it ends nowhere or loops."""
     multiplier, offset, chain = 1.0, 0.0, [name]
     joint = robot.get_joint(name)
@@ -109,7 +110,7 @@ def _resolve(robot: Robot, name: str) -> tuple[Follow | None, list[str]]:
     return Follow(chain[-1], multiplier, offset), chain
 
 
-def _lost(robot: Robot, original: Robot | None, name: str, chain: list[str]) -> str:
+def _lost(robot: RobotModel, original: RobotModel | None, name: str, chain: list[str]) -> str:
     leader = chain[-1]
     if leader in chain[:-1]:
         why = f"the leaders loop ({' -> '.join(map(repr, chain))})"
@@ -123,7 +124,7 @@ def _lost(robot: Robot, original: Robot | None, name: str, chain: list[str]) -> 
             '(it moves on its own)')
 
 
-def mimic_notes(robot: Robot, version: str) -> list[str]:
+def mimic_notes(robot: RobotModel, version: str) -> list[str]:
     """Return the line saying what happens to the robot's mimic joints in ``version``."""
     followers = [joint.name for joint in robot.joints if joint.mimic is not None]
     if not followers:

@@ -39,11 +39,11 @@ from urdfgenpy_ros.formats.options import keywords, Option
 from urdfgenpy_ros.formats.prepare import prepare_mjcf, prepare_sdf
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
     from urdfgenpy_ros.validation.checklist import Review
 
 PathArg = str | PathLike[str]
-Reader = Callable[[Path, Mapping[str, str], Iterable[PathArg]], 'Robot']
+Reader = Callable[[Path, Mapping[str, str], Iterable[PathArg]], 'RobotModel']
 Writer = Callable[..., str]
 Options = tuple[Option, ...] | Callable[[], tuple[Option, ...]]
 
@@ -68,7 +68,7 @@ class Format:
     writer: Writer | None
     options: Options = ()
     not_read: str = ''  # why it cannot be read, and what to do instead
-    prepare: Callable[[Robot, Mapping[str, Any]], Review] | None = None
+    prepare: Callable[[RobotModel, Mapping[str, Any]], Review] | None = None
     one_tree: bool = False
     convert: str = ''
     misplaced: str = '{flag} applies to {suffix} output only: drop it or write {suffix}'
@@ -87,7 +87,7 @@ class Format:
 
 
 def _read_urdf(path: Path, mappings: Mapping[str, str], search_paths: Iterable[PathArg]
-               ) -> Robot:
+               ) -> RobotModel:
     from urdfgenpy_ros.formats.detect import xacro_evidence_in
     from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
     data = path.read_bytes()
@@ -115,19 +115,19 @@ def _read_urdf(path: Path, mappings: Mapping[str, str], search_paths: Iterable[P
 
 
 def _read_xacro(path: Path, mappings: Mapping[str, str], search_paths: Iterable[PathArg]
-                ) -> Robot:
+                ) -> RobotModel:
     from urdfgenpy_ros.formats.xacro_read import read_xacro
     return read_xacro(path, dict(mappings), search_paths=list(search_paths))
 
 
 def _read_assembly(path: Path, mappings: Mapping[str, str],
-                   search_paths: Iterable[PathArg]) -> Robot:
+                   search_paths: Iterable[PathArg]) -> RobotModel:
     from urdfgenpy_ros.assembly_file import read_assembly
     return read_assembly(path, list(search_paths), load=load)  # parts: any format
 
 
 def _read_table(path: Path, mappings: Mapping[str, str], search_paths: Iterable[PathArg]
-                ) -> Robot:
+                ) -> RobotModel:
     from urdfgenpy_ros.assembly_file import is_assembly
     if is_assembly(path):  # a YAML file with a top-level parts:
         return _read_assembly(path, mappings, search_paths)
@@ -135,7 +135,7 @@ def _read_table(path: Path, mappings: Mapping[str, str], search_paths: Iterable[
     return DHTable.from_file(path).to_robot(path.name.split('.')[0])
 
 
-def _write_urdf(robot: Robot, path: PathArg, version: str | None = None) -> str:
+def _write_urdf(robot: RobotModel, path: PathArg, version: str | None = None) -> str:
     from urdfgenpy_ros.formats.urdf import write_urdf
     if version is not None:
         from urdfgenpy_ros.caller import warn_caller
@@ -146,18 +146,18 @@ def _write_urdf(robot: Robot, path: PathArg, version: str | None = None) -> str:
     return write_urdf(robot, path)
 
 
-def _write_xacro(robot: Robot, path: PathArg, macro: bool = False) -> str:
+def _write_xacro(robot: RobotModel, path: PathArg, macro: bool = False) -> str:
     from urdfgenpy_ros.formats import xacro
     return xacro.write_macro_xacro(robot, path) if macro else xacro.write_xacro(robot, path)
 
 
-def _write_sdf(robot: Robot, path: PathArg, lump_fixed: bool = False,
+def _write_sdf(robot: RobotModel, path: PathArg, lump_fixed: bool = False,
                version: str | None = None) -> str:
     from urdfgenpy_ros.formats.sdf import write_sdf
     return write_sdf(robot, path, lump_fixed, version)
 
 
-def write_mjcf_warning(robot: Robot, path: PathArg | None, **options: Any) -> str:
+def write_mjcf_warning(robot: RobotModel, path: PathArg | None, **options: Any) -> str:
     """
     Return the MJCF text (and write it with ``path``), warning at the caller's line.
 
@@ -276,13 +276,13 @@ def writer_for(path: PathArg) -> Format:
     return row
 
 
-def write_as(robot: Robot, name: str, path: PathArg | None, **options: Any) -> str:
+def write_as(robot: RobotModel, name: str, path: PathArg | None, **options: Any) -> str:
     """Return the text of ``robot`` in the format called ``name``; write it with ``path``."""
     row = next(row for row in FORMATS if row.name == name)
     return _write(row, robot, path, options)
 
 
-def save(robot: Robot, path: PathArg, **options: Any) -> None:
+def save(robot: RobotModel, path: PathArg, **options: Any) -> None:
     """
     Write ``robot`` to ``path`` in the format its suffix names, with the writer's options.
 
@@ -291,7 +291,7 @@ def save(robot: Robot, path: PathArg, **options: Any) -> None:
     _write(writer_for(path), robot, path, options)
 
 
-def _write(row: Format, robot: Robot, path: PathArg | None, options: Mapping[str, Any]
+def _write(row: Format, robot: RobotModel, path: PathArg | None, options: Mapping[str, Any]
            ) -> str:
     """Return ``row``'s writer's text; refuse an option it lacks in one line."""
     taken = row.keywords()
@@ -304,7 +304,7 @@ def _write(row: Format, robot: Robot, path: PathArg | None, options: Mapping[str
 
 
 def load(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
-         search_paths: Iterable[str | PathLike[str]] = ()) -> Robot:
+         search_paths: Iterable[str | PathLike[str]] = ()) -> RobotModel:
     """
     Read a robot from ``path`` in the format its suffix names.
 

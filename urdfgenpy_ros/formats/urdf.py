@@ -49,7 +49,7 @@ from urdfgenpy_ros.urdf_versions import needed_version, version_text
 from urdfgenpy_ros.value_kinds import wrong_kind
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 _DECLARATION = re.compile(r'\s*(<\?xml\b[^>]*\?>)')
 
@@ -83,7 +83,7 @@ class UrdfWriter(ElementWriter):
 
     declaration = '<?xml version="1.0"?>'
 
-    def __init__(self, robot: Robot, *, mend: bool = True) -> None:
+    def __init__(self, robot: RobotModel, *, mend: bool = True) -> None:
         document = robot.extras if isinstance(robot.extras, SourceDocument) else None
         self.mend = mend  # write a wrapped <robot> unwrapped, a malformed declaration mended
         self.document_record = document
@@ -300,7 +300,7 @@ class UrdfWriter(ElementWriter):
         return pad + self.write_object(MATERIAL, material, pad)
 
 
-def urdf_file_bytes(robot: Robot, *, mend: bool = True) -> bytes:
+def urdf_file_bytes(robot: RobotModel, *, mend: bool = True) -> bytes:
     """
     Return the bytes of the URDF file of ``robot``: in its declared encoding, with its BOM.
 
@@ -315,7 +315,7 @@ def urdf_file_bytes(robot: Robot, *, mend: bool = True) -> bytes:
     return codecs.BOM_UTF8 + data if writer.bom and utf8 else data
 
 
-def write_urdf(robot: Robot, path: str | PathLike[str] | None = None) -> str:
+def write_urdf(robot: RobotModel, path: str | PathLike[str] | None = None) -> str:
     """Return the URDF text of ``robot``; also write it to ``path`` when given."""
     writer = UrdfWriter(robot)
     text = writer.document()

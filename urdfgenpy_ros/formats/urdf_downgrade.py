@@ -38,13 +38,13 @@ from urdfgenpy_ros.urdf_versions import (
 from urdfgenpy_ros.validation.findings import Findings
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 VERSIONS = ('1.0', '1.1', '1.2')
 """The URDF versions a robot can be written as."""
 
 
-def as_version(robot: Robot, version: str) -> tuple[Robot, list[ValidationError]]:
+def as_version(robot: RobotModel, version: str) -> tuple[RobotModel, list[ValidationError]]:
     """
     Return a copy of ``robot`` that URDF ``version`` holds, and what changed (findings).
 
@@ -93,7 +93,7 @@ def _as_rpy(origin: Origin) -> Origin:
     return origin.as_rpy()
 
 
-def _without_quaternions(robot: Robot) -> None:
+def _without_quaternions(robot: RobotModel) -> None:
     for link in robot.links:
         if link.inertial is not None:
             link.inertial.origin = _as_rpy(link.inertial.origin)
@@ -105,7 +105,7 @@ def _without_quaternions(robot: Robot) -> None:
         joint.origin = _as_rpy(joint.origin)
 
 
-def _without_capsules(robot: Robot) -> None:
+def _without_capsules(robot: RobotModel) -> None:
     for link in robot.links:
         link.visuals[:] = [part for item in link.visuals for part in _split(item)]
         link.collisions[:] = [part for item in link.collisions for part in _split(item)]

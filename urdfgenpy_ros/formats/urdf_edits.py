@@ -36,7 +36,7 @@ from urdfgenpy_ros.material import Material
 from urdfgenpy_ros.preserved import SourceDocument
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
 def is_edited(item: Any) -> bool:
@@ -53,13 +53,13 @@ def block_edited(document: SourceDocument, block: Extension) -> bool:
         was != etree.tostring(element, with_tail=False)
 
 
-def owners_of_blocks(robot: Robot) -> dict[int, Link | Joint]:
+def owners_of_blocks(robot: RobotModel) -> dict[int, Link | Joint]:
     """Return the link or joint holding each block, by the block's id."""
     holders: list[Link | Joint] = [*robot.links, *robot.joints]
     return {id(block): owner for owner in holders for block in owner.extensions_if_any or ()}
 
 
-def is_as_read(robot: Robot) -> bool:
+def is_as_read(robot: RobotModel) -> bool:
     """Return whether ``robot`` holds exactly what its file said: nothing edited."""
     document = robot.extras
     if not isinstance(document, SourceDocument):

@@ -43,7 +43,7 @@ from urdfgenpy_ros.material import Material
 if TYPE_CHECKING:
     from urdfgenpy_ros.inertial import Inertial
     from urdfgenpy_ros.link import Link
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 _LEAVES = frozenset((Origin, Box, Cylinder, Sphere, Capsule, Mesh))
 _ATTRS = {tag: {attr.name: attr for attr in element.attrs} for tag, element in ELEMENTS.items()}
@@ -72,7 +72,7 @@ class ElementWriter:
 
     verbatim = True  # write unedited elements read from a file exactly as they were
 
-    def __init__(self, robot: Robot, unit: str, declared: dict[str, str],
+    def __init__(self, robot: RobotModel, unit: str, declared: dict[str, str],
                  quote: str = '"') -> None:
         self.robot = robot
         self.unit = unit

@@ -44,7 +44,7 @@ from urdfgenpy_ros.model import robot_class
 from urdfgenpy_ros.preserved import SourceDocument
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 EXTENSION_TAGS = frozenset(('gazebo', 'transmission', 'ros2_control'))
 _TYPES = ', '.join(kind.value for kind in JointType)
@@ -144,7 +144,7 @@ class _Reader:
 
     # ---- the robot ----------------------------------------------------------------
 
-    def robot(self, root: Any, cls: type[Robot]) -> Robot:
+    def robot(self, root: Any, cls: type[RobotModel]) -> RobotModel:
         """Read the ``<robot>`` element and everything in it."""
         root = self._robot_element(root)
         name = root.get('name')
@@ -197,7 +197,7 @@ class _Reader:
         return robot
 
     @staticmethod
-    def _attach(robot: Robot, block: Extension) -> None:
+    def _attach(robot: RobotModel, block: Extension) -> None:
         """Give a block to the link or joint its ``reference`` names, else to the robot."""
         reference = block.reference if block.tag == 'gazebo' else None
         if reference is not None and robot.has_link(reference):
@@ -251,7 +251,7 @@ def source_text(data: bytes) -> tuple[str, bool]:
         return data.decode('utf-8', 'replace'), bom
 
 
-def _share_materials(robot: Robot) -> list[Link]:
+def _share_materials(robot: RobotModel) -> list[Link]:
     """Point plain references (``<material name="x"/>``) at the robot-level material."""
     changed: list[Link] = []
     for link in robot.links:
@@ -273,8 +273,8 @@ def _describe(node: Any) -> str:
     return f'<{node.tag} name="{name}">' if name else f'<{node.tag}>'
 
 
-def read_urdf_bytes(data: bytes, file: str | None = None, cls: type[Robot] | None = None
-                    ) -> Robot:
+def read_urdf_bytes(data: bytes, file: str | None = None, cls: type[RobotModel] | None = None
+                    ) -> RobotModel:
     """
     Return the robot described by URDF ``data`` (``file`` names it in messages).
 

@@ -29,10 +29,10 @@ from typing import Any, TYPE_CHECKING
 from urdfgenpy_ros.formats.options import Option
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
-def _as_version(robot: Robot, version: Any) -> tuple[Robot, list[Any]]:
+def _as_version(robot: RobotModel, version: Any) -> tuple[RobotModel, list[Any]]:
     from urdfgenpy_ros.formats.urdf_downgrade import as_version
     return as_version(robot, version)
 

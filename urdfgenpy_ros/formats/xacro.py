@@ -38,7 +38,7 @@ from urdfgenpy_ros.link import Link
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.material import Material
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 XACRO_NS = 'http://www.ros.org/wiki/xacro'
 _EXPR = '\x00'  # stands for '$' in expressions we mean; every other '$' is escaped
@@ -104,7 +104,7 @@ class XacroWriter(UrdfWriter):
 
     verbatim = False  # masses become properties: every inertial is written anew
 
-    def __init__(self, robot: Robot, includes: Sequence[str] = (), materials: bool = True,
+    def __init__(self, robot: RobotModel, includes: Sequence[str] = (), materials: bool = True,
                  extensions: list[Extension] | None = None) -> None:
         super().__init__(robot)
         self.includes = list(includes)
@@ -170,7 +170,7 @@ def _uses_macro(inertial: Inertial | None) -> bool:
             and inertial.origin.extras is None and inertial.matches_solid())
 
 
-def write_xacro(robot: Robot, path: str | PathLike[str] | None = None, *,
+def write_xacro(robot: RobotModel, path: str | PathLike[str] | None = None, *,
                 includes: Sequence[str] = (), materials: bool = True,
                 extensions: list[Extension] | None = None) -> str:
     """
@@ -193,7 +193,7 @@ PREFIX_MARK = 'urdfgenpyprefixmark'
 class _MacroBody(XacroWriter):
     """The Xacro writer for a robot whose names start with PREFIX_MARK."""
 
-    def __init__(self, robot: Robot, extensions: list[Extension] | None) -> None:
+    def __init__(self, robot: RobotModel, extensions: list[Extension] | None) -> None:
         super().__init__(robot, materials=False, extensions=extensions)
         taken: set[str] = set()  # mass properties are named after the unprefixed links
         self.mass_names = {link.name: _identifier(link.name.replace(PREFIX_MARK, ''), taken)
@@ -203,7 +203,7 @@ class _MacroBody(XacroWriter):
 _NAMESPACE = re.compile(r'xmlns(?::[\w.-]+)?\s*=\s*("[^"]*"|\'[^\']*\')')
 
 
-def macro_name(robot: Robot) -> str:
+def macro_name(robot: RobotModel) -> str:
     """Return the name of the robot's Xacro macro: its name as an identifier."""
     name = re.sub(r'\W', '_', robot.name)
     return name if name and not name[0].isdigit() else f'_{name}'
@@ -214,7 +214,7 @@ def with_prefix(text: str) -> str:
     return _dollars(text).replace(PREFIX_MARK, '${prefix}')
 
 
-def macro_xacro(robot: Robot, *, includes: Sequence[str] = (), materials: bool = True,
+def macro_xacro(robot: RobotModel, *, includes: Sequence[str] = (), materials: bool = True,
                 skip: Sequence[str] = (), calls: Sequence[str] = ()) -> str:
     """
     Return ``<name>.macro.xacro``: the robot as ``<xacro:macro params="prefix parent *origin">``.
@@ -280,7 +280,7 @@ def defined_once(writer: UrdfWriter, material: Material, unit: str) -> list[str]
             _dollars(writer.write_material(material, unit * 2)), f'{unit}</xacro:unless>']
 
 
-def top_level_xacro(robot: Robot, includes: Sequence[str]) -> str:
+def top_level_xacro(robot: RobotModel, includes: Sequence[str]) -> str:
     """Return a robot file that includes ``includes`` (the macro's last) and calls it once."""
     name = macro_name(robot)
     return '\n'.join([
@@ -294,7 +294,7 @@ def top_level_xacro(robot: Robot, includes: Sequence[str]) -> str:
         '</robot>', ''])
 
 
-def write_macro_xacro(robot: Robot, path: str | PathLike[str] | None = None) -> str:
+def write_macro_xacro(robot: RobotModel, path: str | PathLike[str] | None = None) -> str:
     """
     Return the macro file's text (:func:`macro_xacro`).
 

@@ -34,7 +34,7 @@ from urdfgenpy_ros.formats.xacro_map import pretty_print, recording, XacroMap
 from urdfgenpy_ros.resources import PackageResolver
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
 class _PackageMissing(LookupError):
@@ -219,7 +219,7 @@ def _xacro_warnings(printed: str) -> list[str]:
 def read_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = None,
                search_paths: Iterable[str | PathLike[str]] = (),
                packages: Mapping[str, str | PathLike[str]] | None = None,
-               cls: type[Robot] | None = None) -> Robot:
+               cls: type[RobotModel] | None = None) -> RobotModel:
     """Expand the Xacro file ``path`` with ``mappings`` (``name: value``) and read it."""
     said: list[ReadWarning] = []
     maps: list[XacroMap] = []

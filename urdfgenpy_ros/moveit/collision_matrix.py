@@ -49,7 +49,7 @@ from urdfgenpy_ros.moveit.contacts import Pair, ShapeSet, States
 from urdfgenpy_ros.moveit.shapes import link_shapes
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 ALWAYS_ABOVE = int(sampling.ROUND * 0.95)  # MoveIt: more than 190 of 200
 CHUNK = 1000  # states per batch of forward kinematics in the "Never" step
@@ -89,7 +89,7 @@ def pair(one: str, two: str) -> Pair:
     return (one, two) if one < two else (two, one)
 
 
-def adjacent_pairs(robot: Robot, with_geometry: Iterable[str]) -> set[Pair]:
+def adjacent_pairs(robot: RobotModel, with_geometry: Iterable[str]) -> set[Pair]:
     """Return the adjacent pairs: joined, or joined through links without geometry."""
     solid = set(with_geometry)
     graph: dict[str, set[str]] = {link.name: set() for link in robot.links}
@@ -112,7 +112,7 @@ def adjacent_pairs(robot: Robot, with_geometry: Iterable[str]) -> set[Pair]:
             for other in neighbours if other in solid}
 
 
-def compute_matrix(robot: Robot, samples: int = 10000, seed: int = 0,
+def compute_matrix(robot: RobotModel, samples: int = 10000, seed: int = 0,
                    default_values: Mapping[str, float] | None = None,
                    search_paths: Any = (), rates: bool = False) -> CollisionMatrix:
     """

@@ -27,12 +27,13 @@ from __future__ import annotations
 
 from typing import Any, TYPE_CHECKING
 
+from urdfgenpy_ros.dynamics import movable_joints
 from urdfgenpy_ros.formats.mjcf.actuators import blocks, initial_values
 from urdfgenpy_ros.moveit import sampling
 from urdfgenpy_ros.moveit.srdf import group_joints, Srdf
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 KDL = 'kdl_kinematics_plugin/KDLKinematicsPlugin'
 DEFAULT_SCALING = 0.1  # the Setup Assistant's velocity and acceleration scaling
@@ -46,10 +47,10 @@ def kinematics(srdf: Srdf) -> dict[str, Any]:
             for group in srdf.groups if group.base is not None}
 
 
-def joint_limits(robot: Robot) -> dict[str, Any]:
+def joint_limits(robot: RobotModel) -> dict[str, Any]:
     """Return joint_limits.yaml: each active joint's velocity and acceleration limits."""
     limits = {}
-    for name in robot.movable_joints:
+    for name in movable_joints(robot):
         limit = robot.get_joint(name).limit
         velocity = float(limit.velocity) if limit is not None else 0.0
         acceleration = limit.acceleration if limit is not None else None
@@ -62,15 +63,15 @@ def joint_limits(robot: Robot) -> dict[str, Any]:
             'joint_limits': limits}
 
 
-def initial_positions(robot: Robot) -> dict[str, Any]:
+def initial_positions(robot: RobotModel) -> dict[str, Any]:
     """Return initial_positions.yaml: ros2_control's initial values, else MoveIt's default."""
     given = initial_values(robot)
-    default = dict(zip(robot.movable_joints, sampling.default_state(robot)))
+    default = dict(zip(movable_joints(robot), sampling.default_state(robot)))
     return {'initial_positions': {name: float(given.get(name, default[name]))
-                                  for name in robot.movable_joints}}
+                                  for name in movable_joints(robot)}}
 
 
-def command_interface(robot: Robot, joint: str) -> str:
+def command_interface(robot: RobotModel, joint: str) -> str:
     """Return the first command interface ``<ros2_control>`` declares for ``joint``."""
     for block in blocks(robot, 'ros2_control'):
         for element in block.findall('joint'):
@@ -81,7 +82,7 @@ def command_interface(robot: Robot, joint: str) -> str:
     return 'position'
 
 
-def controllers(robot: Robot, srdf: Srdf) -> list[tuple[str, str, list[str]]]:
+def controllers(robot: RobotModel, srdf: Srdf) -> list[tuple[str, str, list[str]]]:
     """Return each controller: its name, kind (``arm`` or ``gripper``) and joints."""
     found = []
     for group in srdf.groups:
@@ -92,7 +93,7 @@ def controllers(robot: Robot, srdf: Srdf) -> list[tuple[str, str, list[str]]]:
     return found
 
 
-def ros2_controllers(robot: Robot, srdf: Srdf, rate: int = 100) -> dict[str, Any]:
+def ros2_controllers(robot: RobotModel, srdf: Srdf, rate: int = 100) -> dict[str, Any]:
     """Return ros2_controllers.yaml for the controllers of :func:`controllers`."""
     manager: dict[str, Any] = {'update_rate': rate, 'joint_state_broadcaster': {
         'type': 'joint_state_broadcaster/JointStateBroadcaster'}}
@@ -111,7 +112,7 @@ def ros2_controllers(robot: Robot, srdf: Srdf, rate: int = 100) -> dict[str, Any
     return document
 
 
-def moveit_controllers(robot: Robot, srdf: Srdf) -> dict[str, Any]:
+def moveit_controllers(robot: RobotModel, srdf: Srdf) -> dict[str, Any]:
     """Return moveit_controllers.yaml: MoveIt's simple controller manager over them."""
     manager: dict[str, Any] = {'controller_names': []}
     for name, kind, joints in controllers(robot, srdf):

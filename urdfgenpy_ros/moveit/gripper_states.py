@@ -29,13 +29,15 @@ from typing import TYPE_CHECKING
 
 import numpy
 
+from urdfgenpy_ros.dynamics import fk
+
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 SAME = 1e-6  # metres: spreads closer than this cannot tell open from closed
 
 
-def finger_tips(robot: Robot, links: tuple[str, ...]) -> list[tuple[str, numpy.ndarray]]:
+def finger_tips(robot: RobotModel, links: tuple[str, ...]) -> list[tuple[str, numpy.ndarray]]:
     """Return each leaf link of ``links`` with its point (collision centre, else frame)."""
     tips = []
     for name in links:
@@ -48,15 +50,15 @@ def finger_tips(robot: Robot, links: tuple[str, ...]) -> list[tuple[str, numpy.n
     return tips
 
 
-def spread(robot: Robot, tips: list[tuple[str, numpy.ndarray]],
+def spread(robot: RobotModel, tips: list[tuple[str, numpy.ndarray]],
            values: dict[str, float]) -> float:
     """Return the sum of the distances between the tips with the joints at ``values``."""
-    poses = robot.fk(values)
+    poses = fk(robot, values)
     points = [(poses[name] @ point)[:3] for name, point in tips]
     return float(sum(numpy.linalg.norm(one - two) for one, two in combinations(points, 2)))
 
 
-def opens_at_upper(robot: Robot, name: str, links: tuple[str, ...],
+def opens_at_upper(robot: RobotModel, name: str, links: tuple[str, ...],
                    ranges: dict[str, tuple[float, float]]) -> tuple[bool, str | None]:
     """Return whether gripper ``name`` opens at its upper limits, and a note if guessed."""
     tips = finger_tips(robot, links)

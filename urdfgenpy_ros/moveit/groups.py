@@ -42,7 +42,7 @@ from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.joint import JointType
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
 @dataclass(frozen=True)
@@ -68,7 +68,7 @@ class EndEffector:
 class _Tree:
     """What the search asks of the tree: children, and the joints moving below a link."""
 
-    def __init__(self, robot: Robot) -> None:
+    def __init__(self, robot: RobotModel) -> None:
         self.robot = robot
         self.children = {link.name: list(robot.child_joints(link.name))
                          for link in robot.links}
@@ -106,7 +106,7 @@ def _free(joint: object) -> int:
     return int(getattr(joint, 'type').is_movable and getattr(joint, 'mimic') is None)
 
 
-def find_groups(robot: Robot, overrides: Mapping[str, tuple[str, str]] | None = None
+def find_groups(robot: RobotModel, overrides: Mapping[str, tuple[str, str]] | None = None
                 ) -> tuple[list[Group], list[EndEffector]]:
     """Return the planning groups and end effectors of ``robot`` (see the module doc)."""
     tree = _Tree(robot)
@@ -132,7 +132,7 @@ def find_groups(robot: Robot, overrides: Mapping[str, tuple[str, str]] | None = 
     return groups, effectors
 
 
-def start_link(robot: Robot) -> str:
+def start_link(robot: RobotModel) -> str:
     """Return the root, or the link a root called ``world`` holds by its one fixed joint."""
     root = robot.root.name
     below = list(robot.child_joints(root))
@@ -141,7 +141,7 @@ def start_link(robot: Robot) -> str:
     return root
 
 
-def _free_joints(robot: Robot, base: str, tip: str) -> set[str]:
+def _free_joints(robot: RobotModel, base: str, tip: str) -> set[str]:
     return {joint.name for joint in robot.chain(tip, base) if _free(joint)}
 
 

@@ -37,7 +37,7 @@ from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.joint import Joint, JointType
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 ROUND = 200
 """States per round of the "Always" test (MoveIt's ``SMALL_TRIAL_COUNT``)."""
@@ -57,14 +57,14 @@ def joint_bounds(joint: Joint) -> tuple[float, float]:
     return (lower, upper)
 
 
-def bounds(robot: Robot) -> numpy.ndarray:
+def bounds(robot: RobotModel) -> numpy.ndarray:
     """Return (dof, 2): the range of each of ``robot.movable_joints``."""
     names = compiled(robot).movable
     return numpy.array([joint_bounds(robot.get_joint(name)) for name in names]
                        ).reshape(len(names), 2)
 
 
-def default_state(robot: Robot, values: Mapping[str, float] | None = None) -> numpy.ndarray:
+def default_state(robot: RobotModel, values: Mapping[str, float] | None = None) -> numpy.ndarray:
     """
     Return MoveIt's default state over ``robot.movable_joints`` (0, or mid-range).
 

@@ -36,7 +36,7 @@ from urdfgenpy_ros.link import Collision
 from urdfgenpy_ros.resources import PackageResolver
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
 def import_coal() -> Any:
@@ -79,7 +79,7 @@ def _primitive(coal: Any, geometry: Any) -> tuple[Any, float]:
 class ShapeReader:
     """Build the shapes of links, each mesh file read once."""
 
-    def __init__(self, robot: Robot, search_paths: Any = ()) -> None:
+    def __init__(self, robot: RobotModel, search_paths: Any = ()) -> None:
         self.coal = import_coal()
         self.resolver = PackageResolver(search_paths)
         file = robot.source.file if robot.source is not None else None
@@ -124,7 +124,7 @@ class ShapeReader:
         return self.meshes[key]
 
 
-def link_shapes(robot: Robot, search_paths: Any = ()) -> dict[str, list[Shape]]:
+def link_shapes(robot: RobotModel, search_paths: Any = ()) -> dict[str, list[Shape]]:
     """Return the shapes of every link with collision geometry, in the robot's link order."""
     reader = ShapeReader(robot, search_paths)
     return {link.name: [reader.shape(link.name, collision) for collision in link.collisions]

@@ -30,6 +30,7 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
+from urdfgenpy_ros.dynamics import movable_joints
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.floats import fmt
 from urdfgenpy_ros.moveit import sampling
@@ -39,7 +40,7 @@ from urdfgenpy_ros.moveit.groups import (EndEffector, find_groups, Group, parse_
                                          start_link)
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 VIRTUAL_JOINTS = ('fixed', 'floating', 'planar')
 
@@ -65,17 +66,17 @@ class Srdf:
     notes: list[str] = field(default_factory=list)
 
 
-def group_joints(robot: Robot, group: Group) -> list[str]:
+def group_joints(robot: RobotModel, group: Group) -> list[str]:
     """Return the joints of ``group`` that move on their own, in the robot's order."""
     if group.base is not None and group.tip is not None:
         names = {joint.name for joint in robot.chain(group.tip, group.base)}
     else:
         links = set(group.links)
         names = {joint.name for joint in robot.joints if joint.child in links}
-    return [name for name in robot.movable_joints if name in names]
+    return [name for name in movable_joints(robot) if name in names]
 
 
-def group_states(robot: Robot, groups: list[Group], initial: Mapping[str, float],
+def group_states(robot: RobotModel, groups: list[Group], initial: Mapping[str, float],
                  notes: list[str] | None = None) -> list[GroupState]:
     """
     Return the states of the groups: ``home``, ``open`` and ``close``.
@@ -85,7 +86,7 @@ def group_states(robot: Robot, groups: list[Group], initial: Mapping[str, float]
     the finger tips lie farthest apart and nearest (:mod:`.gripper_states`); where that
     cannot be told, upper and lower, with a line in ``notes``.
     """
-    default = dict(zip(robot.movable_joints, sampling.default_state(robot)))
+    default = dict(zip(movable_joints(robot), sampling.default_state(robot)))
     states = []
     for group in groups:
         joints = group_joints(robot, group)
@@ -115,7 +116,7 @@ def state_values(states: list[GroupState], name: str) -> dict[str, float]:
     return values
 
 
-def build_srdf(robot: Robot, samples: int = 10000, seed: int = 0,
+def build_srdf(robot: RobotModel, samples: int = 10000, seed: int = 0,
                groups: Mapping[str, Any] | list[str] | None = None,
                default_state: str | Mapping[str, float] | None = None,
                virtual_joint: str | None = 'fixed', search_paths: Any = (),
@@ -156,7 +157,7 @@ def _overrides(groups: Mapping[str, Any] | list[str] | None) -> dict[str, tuple[
     return dict(parse_group(text) for text in groups)
 
 
-def write_text(robot: Robot, groups: list[Group], states: list[GroupState],
+def write_text(robot: RobotModel, groups: list[Group], states: list[GroupState],
                effectors: list[EndEffector], matrix: CollisionMatrix,
                virtual_joint: str | None) -> str:
     """Return the SRDF document."""
@@ -192,7 +193,7 @@ def write_text(robot: Robot, groups: list[Group], states: list[GroupState],
         root, encoding='unicode', pretty_print=True)
 
 
-def write_srdf(robot: Robot, path: str | PathLike[str] | None = None, **options: Any) -> Srdf:
+def write_srdf(robot: RobotModel, path: str | PathLike[str] | None = None, **options: Any) -> Srdf:
     """Return the SRDF of ``robot`` (see :func:`build_srdf`); also write it to ``path``."""
     srdf = build_srdf(robot, **options)
     if path is not None:

@@ -40,7 +40,7 @@ from urdfgenpy_ros.moveit.shapes import link_shapes
 from urdfgenpy_ros.validation.codes import severity_of
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 # (element, attribute): the kind of name it holds
 _LINKS = (('disable_collisions', 'link1'), ('disable_collisions', 'link2'),
@@ -101,7 +101,7 @@ def _is_srdf(root: Any) -> bool:
     return not urdf or bool(tags & set(_SRDF))
 
 
-def check_srdf(robot: Robot, path: str | PathLike[str], samples: int = 10000, seed: int = 0,
+def check_srdf(robot: RobotModel, path: str | PathLike[str], samples: int = 10000, seed: int = 0,
                search_paths: Any = ()) -> list[ValidationError]:
     """Return the findings of the SRDF at ``path`` against ``robot`` (see the module)."""
     root, text = read_srdf(path)
@@ -139,7 +139,7 @@ def _stale(found: _Findings, element: Any, kind: str, name: str, known: list[str
               'robot does not have', f'{hint} Or regenerate: urdfgenpy srdf --update')
 
 
-def _names(robot: Robot, root: Any, found: _Findings) -> None:
+def _names(robot: RobotModel, root: Any, found: _Findings) -> None:
     links = [link.name for link in robot.links]
     joints = [joint.name for joint in robot.joints] + [  # the SRDF's own joints too
         str(element.get('name')) for element in root.iter('virtual_joint')]
@@ -159,7 +159,7 @@ def _names(robot: Robot, root: Any, found: _Findings) -> None:
                 _stale(found, inner, 'group', str(inner.get('name')), groups)
 
 
-def _chains(robot: Robot, root: Any, found: _Findings) -> None:
+def _chains(robot: RobotModel, root: Any, found: _Findings) -> None:
     links = {link.name for link in robot.links}
     for chain in root.iter('chain'):
         base, tip = chain.get('base_link'), chain.get('tip_link')
@@ -175,7 +175,7 @@ def _chains(robot: Robot, root: Any, found: _Findings) -> None:
                       'the tree', 'give a base_link that the tip hangs from')
 
 
-def _states(robot: Robot, root: Any, found: _Findings) -> None:
+def _states(robot: RobotModel, root: Any, found: _Findings) -> None:
     joints = {joint.name: joint for joint in robot.joints}
     for state in root.iter('group_state'):
         for element in state.findall('joint'):
@@ -193,7 +193,7 @@ def _states(robot: Robot, root: Any, found: _Findings) -> None:
                           f'[{low:g}, {high:g}]', 'give a value within the limits')
 
 
-def _pairs(robot: Robot, root: Any, found: _Findings, samples: int, seed: int,
+def _pairs(robot: RobotModel, root: Any, found: _Findings, samples: int, seed: int,
            search_paths: Any) -> None:
     known = {link.name for link in robot.links}
     solid = {link.name for link in robot.links if link.collisions}
@@ -219,7 +219,7 @@ def _pairs(robot: Robot, root: Any, found: _Findings, samples: int, seed: int,
                       'remove the line, or regenerate: urdfgenpy srdf --update')
 
 
-def _counts(robot: Robot, pairs: list[Pair], samples: int, seed: int, search_paths: Any
+def _counts(robot: RobotModel, pairs: list[Pair], samples: int, seed: int, search_paths: Any
             ) -> dict[Pair, int]:
     shapes = ShapeSet(compiled(robot), link_shapes(robot, search_paths))
     generator, ranges = sampling.generator(seed), sampling.bounds(robot)

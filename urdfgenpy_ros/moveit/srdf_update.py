@@ -41,7 +41,7 @@ from urdfgenpy_ros.moveit.collision_matrix import Reason
 from urdfgenpy_ros.moveit.contacts import Pair
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 _ELEMENT = re.compile(r'<disable_collisions\b[^>]*?/>|<disable_collisions\b.*?'
                       r'</disable_collisions\s*>', re.S)
@@ -157,7 +157,7 @@ def file_state(text: str, name: str, file: str) -> dict[str, float]:
     return values
 
 
-def update_srdf(robot: Robot, existing: str | PathLike[str], samples: int = 10000,
+def update_srdf(robot: RobotModel, existing: str | PathLike[str], samples: int = 10000,
                 seed: int = 0, default_state: str | Mapping[str, float] | None = None,
                 search_paths: Any = ()) -> Update:
     """Return the SRDF at ``existing`` with the collision matrix of ``robot`` recomputed."""

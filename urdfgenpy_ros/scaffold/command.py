@@ -22,7 +22,7 @@ import copy
 import math
 from pathlib import Path
 import sys
-from typing import NoReturn, TYPE_CHECKING
+from typing import cast, NoReturn, TYPE_CHECKING
 
 from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats.open import open_description, parse_args
@@ -133,7 +133,7 @@ def _robot(source: str, given: list[str], package_paths: list[str]) -> Robot:
     if not source:
         from urdfgenpy_ros.examples import pan_tilt_unit
         return pan_tilt_unit()
-    return open_description(source, given, package_paths)
+    return cast(Robot, open_description(source, given, package_paths))
 
 
 def xacro_arguments(args: argparse.Namespace) -> list[str]:

@@ -27,13 +27,13 @@ from urdfgenpy_ros.validation.checklist import (
 from urdfgenpy_ros.validation.codes import CODES
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 __all__ = ['Check', 'CHECKS', 'CODES', 'review', 'Review', 'ReviewOptions', 'Suppressed',
            'validate', 'ValidationError']
 
 
-def validate(robot: Robot, strict: bool = False, *, check_meshes: bool = True,
+def validate(robot: RobotModel, strict: bool = False, *, check_meshes: bool = True,
              search_paths: Iterable[str | PathLike[str]] = (),
              target: str | None = DEFAULT_TARGET, statics: bool = False,
              payload: Mapping[str, object] | None = None,

@@ -51,7 +51,7 @@ from urdfgenpy_ros.validation.versions import check_versions
 from urdfgenpy_ros.validation.xacro_source import in_source
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
 @dataclass(frozen=True)
@@ -120,7 +120,7 @@ class Check:
     """One row of the declared checks: its name, its function and the options it reads."""
 
     name: str
-    run: Callable[[Robot, Findings, ReviewOptions], None]
+    run: Callable[[RobotModel, Findings, ReviewOptions], None]
     options: tuple[str, ...] = ()
     """The fields of ``ReviewOptions`` it reads (documentation and ``enabled``)."""
     enabled: Callable[[ReviewOptions], bool] = lambda options: True
@@ -151,7 +151,7 @@ class Review:
     ``refusal``, why nothing is written, when the target refuses the robot.
     """
 
-    robot: Robot
+    robot: RobotModel
     options: ReviewOptions
     findings: list[ValidationError] = field(default_factory=list)
     suppressed: list[Suppressed] = field(default_factory=list)
@@ -209,7 +209,7 @@ class Review:
 
 # ---- the checks -------------------------------------------------------------------------
 
-def _read_warnings(robot: Robot, findings: Findings, options: ReviewOptions) -> None:
+def _read_warnings(robot: RobotModel, findings: Findings, options: ReviewOptions) -> None:
     """Add the reader's warnings, as serious as CODES says."""
     for warning in robot.read_warnings:
         findings.items.append(ValidationError(warning.code, CODES[warning.code][0],
@@ -217,40 +217,40 @@ def _read_warnings(robot: Robot, findings: Findings, options: ReviewOptions) -> 
                                               warning.message, 'see the message'))
 
 
-def _base(robot: Robot) -> Path | None:
+def _base(robot: RobotModel) -> Path | None:
     """Return the folder relative mesh paths start from: the file's, when read from one."""
     source = robot.source.file if robot.source is not None else None
     return Path(source).parent if source and Path(source).is_file() else None
 
 
-def _references(robot: Robot, findings: Findings, options: ReviewOptions) -> None:
+def _references(robot: RobotModel, findings: Findings, options: ReviewOptions) -> None:
     resolver = PackageResolver(options.search_paths) if options.check_meshes else None
     check_references(robot, findings, resolver, _base(robot))
 
 
-def _statics(robot: Robot, findings: Findings, options: ReviewOptions) -> None:
+def _statics(robot: RobotModel, findings: Findings, options: ReviewOptions) -> None:
     from urdfgenpy_ros.validation.statics import check_statics
     check_statics(robot, findings, options.payload, options.statics_margin)
 
 
-def _efforts(robot: Robot, findings: Findings, options: ReviewOptions) -> None:
+def _efforts(robot: RobotModel, findings: Findings, options: ReviewOptions) -> None:
     from urdfgenpy_ros.validation.efforts import check_efforts
     check_efforts(robot, findings, options.mjcf)
 
 
-def _gazebo(robot: Robot, findings: Findings, options: ReviewOptions) -> None:
+def _gazebo(robot: RobotModel, findings: Findings, options: ReviewOptions) -> None:
     if len(robot.roots) == 1:  # S001, S002 say it otherwise; no engine loads such a robot
         sdformat_findings(robot, findings)
         gazebo_block_findings(robot, findings)
 
 
-def _mujoco(robot: Robot, findings: Findings, options: ReviewOptions) -> None:
+def _mujoco(robot: RobotModel, findings: Findings, options: ReviewOptions) -> None:
     from urdfgenpy_ros.validation.mujoco_preflight import mujoco_findings
     if len(robot.roots) == 1:
         mujoco_findings(robot, findings, list(options.search_paths), _base(robot))
 
 
-def _libsdformat(robot: Robot, findings: Findings, options: ReviewOptions) -> None:
+def _libsdformat(robot: RobotModel, findings: Findings, options: ReviewOptions) -> None:
     from urdfgenpy_ros.validation.sdf_refusals import sdformat_refusals
     findings.refused['libsdformat'] = sdformat_refusals(robot, findings)
 
@@ -275,7 +275,7 @@ CHECKS: tuple[Check, ...] = (
 """Every check, in the order a review runs them (and its findings are listed)."""
 
 
-def run_checks(robot: Robot, options: ReviewOptions
+def run_checks(robot: RobotModel, options: ReviewOptions
                ) -> tuple[list[ValidationError], dict[str, list[ValidationError]]]:
     """Return every finding of the enabled checks (at their source lines) and the refusals."""
     findings = Findings(robot)
@@ -287,7 +287,7 @@ def run_checks(robot: Robot, options: ReviewOptions
     return in_source(findings.items, robot), refused  # Xacro: the source line, or none
 
 
-def review(robot: Robot, options: ReviewOptions | None = None) -> Review:
+def review(robot: RobotModel, options: ReviewOptions | None = None) -> Review:
     """
     Review ``robot``: every finding the ``options`` ask for, silenced ones apart.
 

@@ -35,7 +35,7 @@ from urdfgenpy_ros.errors import MissingDependencyError, ParseError, SourceLocat
 from urdfgenpy_ros.validation.findings import Findings, joint_path
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
 def _number(text: str | None) -> float | None:
@@ -62,7 +62,7 @@ def _ros2_control(element: Any) -> dict[str, list[tuple[str, float]]]:
     return found
 
 
-def voices(robot: Robot) -> dict[str, list[tuple[str, float]]]:
+def voices(robot: RobotModel) -> dict[str, list[tuple[str, float]]]:
     """Return, per joint, every place that gives it a force limit, and the value."""
     found: dict[str, list[tuple[str, float]]] = {}
     for joint in robot.joints:
@@ -121,7 +121,7 @@ def mjcf_voices(path: str | PathLike[str]) -> dict[str, list[tuple[str, float]]]
     return found
 
 
-def check_efforts(robot: Robot, findings: Findings,
+def check_efforts(robot: RobotModel, findings: Findings,
                   mjcf: str | PathLike[str] | None = None) -> None:
     """Add T802 for every joint whose force limits (with ``mjcf``'s, if given) disagree."""
     found = voices(robot)

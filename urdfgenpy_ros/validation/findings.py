@@ -24,7 +24,7 @@ from urdfgenpy_ros.errors import SourceLocation, ValidationError
 from urdfgenpy_ros.validation.codes import severity_of
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
 def link_path(name: str) -> str:
@@ -40,7 +40,7 @@ def joint_path(name: str) -> str:
 class Findings:
     """The findings of one validation run, in the order they were found."""
 
-    def __init__(self, robot: Robot) -> None:
+    def __init__(self, robot: RobotModel) -> None:
         self.robot = robot
         self.items: list[ValidationError] = []
         self.refused: dict[str, list[ValidationError]] = {}

@@ -45,7 +45,7 @@ from urdfgenpy_ros.transforms import from_xyz_rpy
 from urdfgenpy_ros.validation.fix_tensor import TensorSources
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 FIXABLE = frozenset(('J102', 'J103', 'J104', 'J106', 'I202', 'I203', 'I205'))
 """The codes ``fix`` can repair (J103 and J106 only with defaults)."""
@@ -82,7 +82,7 @@ class _Context:
     sources: TensorSources
 
 
-def fix(robot: Robot, findings: list[ValidationError],
+def fix(robot: RobotModel, findings: list[ValidationError],
         limit_defaults: dict[str, float] | None = None,
         search_paths: Sequence[str | PathLike[str]] = ()) -> list[Repair]:
     """
@@ -109,7 +109,7 @@ def fix(robot: Robot, findings: list[ValidationError],
     return repairs
 
 
-def _owner(robot: Robot, finding: ValidationError) -> Link | Joint | None:
+def _owner(robot: RobotModel, finding: ValidationError) -> Link | Joint | None:
     match = _OWNER.match(finding.location.path or '')
     if match is None:
         return None
@@ -119,7 +119,7 @@ def _owner(robot: Robot, finding: ValidationError) -> Link | Joint | None:
     return robot.get_joint(name) if robot.has_joint(name) else None
 
 
-def _axis(robot: Robot, joint: Link | Joint, context: _Context) -> str | None:
+def _axis(robot: RobotModel, joint: Link | Joint, context: _Context) -> str | None:
     assert isinstance(joint, Joint)
     axis = joint.axis
     norm = math.sqrt(sum(value * value for value in axis)) if axis else 0.0
@@ -129,7 +129,7 @@ def _axis(robot: Robot, joint: Link | Joint, context: _Context) -> str | None:
     return f'axis {fmt_vec(axis)} normalised to {fmt_vec(joint.axis)}'
 
 
-def _swap(robot: Robot, joint: Link | Joint, context: _Context) -> str | None:
+def _swap(robot: RobotModel, joint: Link | Joint, context: _Context) -> str | None:
     assert isinstance(joint, Joint)
     limit = joint.limit
     if limit is None or not limit.lower > limit.upper:
@@ -138,7 +138,7 @@ def _swap(robot: Robot, joint: Link | Joint, context: _Context) -> str | None:
     return f'<limit> lower and upper swapped: [{fmt(limit.lower)}, {fmt(limit.upper)}]'
 
 
-def _add_limit(robot: Robot, joint: Link | Joint, context: _Context) -> str | None:
+def _add_limit(robot: RobotModel, joint: Link | Joint, context: _Context) -> str | None:
     assert isinstance(joint, Joint)
     defaults = context.defaults
     if joint.limit is not None or not all(name in defaults for name in LIMIT_FIELDS):
@@ -149,7 +149,7 @@ def _add_limit(robot: Robot, joint: Link | Joint, context: _Context) -> str | No
                                       for name in LIMIT_FIELDS) + '/> from the defaults given'
 
 
-def _zero_limit(robot: Robot, joint: Link | Joint, context: _Context) -> str | None:
+def _zero_limit(robot: RobotModel, joint: Link | Joint, context: _Context) -> str | None:
     assert isinstance(joint, Joint)
     limit, defaults = joint.limit, context.defaults
     if limit is None or not joint.type.is_movable:
@@ -162,7 +162,7 @@ def _zero_limit(robot: Robot, joint: Link | Joint, context: _Context) -> str | N
     return f'<limit> {" and ".join(changed)} from the defaults given' if changed else None
 
 
-def _tensor(robot: Robot, link: Link | Joint, context: _Context) -> str | None:
+def _tensor(robot: RobotModel, link: Link | Joint, context: _Context) -> str | None:
     assert isinstance(link, Link)
     inertial = link.inertial
     if inertial is None or not inertial.mass > 0.0:
@@ -209,7 +209,7 @@ def _rounded(values: tuple[float, ...]) -> tuple[float, ...]:
     return tuple(0.0 if abs(value) < floor else value for value in values)
 
 
-def _new_root(robot: Robot, link: Link | Joint, context: _Context) -> str | None:
+def _new_root(robot: RobotModel, link: Link | Joint, context: _Context) -> str | None:
     assert isinstance(link, Link)
     if len(robot.roots) != 1 or robot.roots[0] is not link:
         return None
@@ -223,7 +223,7 @@ def _new_root(robot: Robot, link: Link | Joint, context: _Context) -> str | None
             '(KDL ignores the inertia of a root link)')
 
 
-def missing_defaults(robot: Robot, findings: list[ValidationError],
+def missing_defaults(robot: RobotModel, findings: list[ValidationError],
                      limit_defaults: dict[str, float] | None = None,
                      search_paths: Sequence[str | PathLike[str]] = ()) -> list[str]:
     """
@@ -265,7 +265,7 @@ def missing_defaults(robot: Robot, findings: list[ValidationError],
     return lines + _shapeless(robot, findings, search_paths)
 
 
-def _shapeless(robot: Robot, findings: list[ValidationError],
+def _shapeless(robot: RobotModel, findings: list[ValidationError],
                search_paths: Sequence[str | PathLike[str]]) -> list[str]:
     """Return why I202/I203 findings stay: no shape, or no mesh, to take a tensor from."""
     links: dict[tuple[str, str], list[str]] = {}

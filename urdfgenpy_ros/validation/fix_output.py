@@ -34,14 +34,14 @@ from urdfgenpy_ros.validation.checklist import review, ReviewOptions
 from urdfgenpy_ros.validation.fix import fix, Repair
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 DEFAULT_RADIUS = 0.05
 """Radius (m) of the solid sphere whose tensor a link without shapes gets."""
 _TENSORS = ('I202', 'I203')
 
 
-def fix_for_output(robot: Robot, radius: float = DEFAULT_RADIUS,
+def fix_for_output(robot: RobotModel, radius: float = DEFAULT_RADIUS,
                    search_paths: Sequence[str | PathLike[str]] = (),
                    radius_option: str = '--fix-radius') -> list[str]:
     """
@@ -63,7 +63,7 @@ def fix_for_output(robot: Robot, radius: float = DEFAULT_RADIUS,
     return lines
 
 
-def _sphere(robot: Robot, finding: ValidationError, radius: float, option: str) -> str:
+def _sphere(robot: RobotModel, finding: ValidationError, radius: float, option: str) -> str:
     """Give a link without shapes the tensor of a solid sphere; return the line saying so."""
     name = finding.element.split("'", 2)[1]
     inertial = robot.get_link(name).inertial if robot.has_link(name) else None

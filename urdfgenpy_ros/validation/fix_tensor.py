@@ -37,7 +37,7 @@ from urdfgenpy_ros.mesh_inertia import ScaleWarning
 from urdfgenpy_ros.resources import PackageResolver
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 _SOLIDS = (Box, Cylinder, Sphere, Capsule)
 
@@ -52,7 +52,7 @@ class TensorSources:
         default_factory=dict)
 
     @classmethod
-    def of(cls, robot: Robot, search_paths: Sequence[str | PathLike[str]] = ()
+    def of(cls, robot: RobotModel, search_paths: Sequence[str | PathLike[str]] = ()
            ) -> TensorSources:
         """Return the sources of ``robot``, meshes found through ``search_paths``."""
         files = [*robot.included_files,

@@ -31,7 +31,7 @@ from urdfgenpy_ros.validation.preflight import (
     SdfConversion, sdformat_conversion, SDFORMAT_ZERO_MASS)
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 # MuJoCo's mjMINVAL (include/mujoco/mjtype.h): a moving body needs a mass of at least this
 # (user_model.cc, CheckBodyMassInertia), as do its moments when all six are zero.
@@ -45,7 +45,7 @@ BORDER = 64 * 2.0 ** -52  # closer to a limit than this (relative), rounding dec
 IMPLAUSIBLE = 100.0  # a tensor this many times off the geometry's is a unit slip
 
 
-def check_inertia(robot: Robot, findings: Findings) -> None:
+def check_inertia(robot: RobotModel, findings: Findings) -> None:
     """Check masses, tensors, the root's inertia and links Gazebo would drop."""
     parent_joint = {joint.child: joint for joint in robot.joints}
     roots = {link.name for link in robot.roots}
@@ -106,7 +106,7 @@ def check_inertia(robot: Robot, findings: Findings) -> None:
             _check_plausible(link, inertial, element, where, findings)
 
 
-def _check_kept_root(robot: Robot, conversion: SdfConversion, findings: Findings) -> None:
+def _check_kept_root(robot: RobotModel, conversion: SdfConversion, findings: Findings) -> None:
     """
     Add I209 for a massless root SDFormat's conversion leaves out with the whole robot.
 
@@ -139,7 +139,7 @@ def _sensor_names(link: Link) -> list[str]:
     return names
 
 
-def _subtrees(robot: Robot) -> tuple[dict[str, int], dict[str, bool]]:
+def _subtrees(robot: RobotModel) -> tuple[dict[str, int], dict[str, bool]]:
     """Return, per link, how many links hang below it and whether any joint below moves."""
     count: dict[str, int] = {}
     moving: dict[str, bool] = {}

@@ -23,10 +23,10 @@ from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.validation.findings import Findings, joint_path
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
-def check_joints(robot: Robot, findings: Findings) -> None:
+def check_joints(robot: RobotModel, findings: Findings) -> None:
     """Check every joint's axis, limit, mimic and safety controller."""
     for joint in robot.joints:
         _check_axis(joint, findings)
@@ -88,7 +88,7 @@ def _check_safety(joint: Joint, findings: Findings) -> None:
                      'keep soft limits inside the <limit> range', 'safety_controller')
 
 
-def _check_mimics(robot: Robot, findings: Findings) -> None:
+def _check_mimics(robot: RobotModel, findings: Findings) -> None:
     leaders = {joint.name: joint.mimic.joint for joint in robot.joints
                if joint.mimic is not None}
     reported: set[str] = set()

@@ -51,13 +51,13 @@ from urdfgenpy_ros.validation.codes import PREFLIGHT_HINTS
 from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 MESH_FORMATS = ('.stl', '.obj', '.msh')
 _RELATIVE = 1e-6  # MuJoCo computes in doubles; principal moments differ by rounding only
 
 
-def mujoco_findings(robot: Robot, findings: Findings, search_paths: list[Any],
+def mujoco_findings(robot: RobotModel, findings: Findings, search_paths: list[Any],
                     base: Path | None) -> None:
     """Add what MuJoCo's compile of ``robot`` changes or drops (M501-M509) to ``findings``."""
     _dropped_by_import(robot, findings)
@@ -120,7 +120,7 @@ def _quiet(said: list[str]) -> Iterator[None]:
                      for line in text.splitlines() if line.strip()]
 
 
-def _as_written(robot: Robot, findings: Findings, search_paths: list[Any],
+def _as_written(robot: RobotModel, findings: Findings, search_paths: list[Any],
                 base: Path | None, mujoco: Any) -> None:
     """
     Let MuJoCo read the user's file itself; report a refusal the rebuilt model hides (M505).
@@ -174,8 +174,8 @@ def _as_written(robot: Robot, findings: Findings, search_paths: list[Any],
 _MeshUse = tuple[str, str, Path, float]  # link, element path, file, volume factor of scale
 
 
-def _compilable(robot: Robot, findings: Findings, search_paths: list[Any],
-                base: Path | None) -> tuple[Robot, list[_MeshUse]]:
+def _compilable(robot: RobotModel, findings: Findings, search_paths: list[Any],
+                base: Path | None) -> tuple[RobotModel, list[_MeshUse]]:
     """Return a copy MuJoCo can load: absolute mesh paths, no visuals, no unreadable mesh."""
     compiled = copy.deepcopy(robot)
     resolver = PackageResolver(search_paths)
@@ -211,7 +211,7 @@ def _compilable(robot: Robot, findings: Findings, search_paths: list[Any],
     return compiled, meshes
 
 
-def _fused(robot: Robot, bodies: set[str], findings: Findings,
+def _fused(robot: RobotModel, bodies: set[str], findings: Findings,
            note: str = '') -> dict[str, str]:
     """Report links that are not bodies (M501); return link -> the body it is fused into."""
     into: dict[str, str] = {}
@@ -232,7 +232,7 @@ def _fused(robot: Robot, bodies: set[str], findings: Findings,
     return into
 
 
-def _masses(robot: Robot, model: Any, bodies: dict[str, int], into: dict[str, str],
+def _masses(robot: RobotModel, model: Any, bodies: dict[str, int], into: dict[str, str],
             findings: Findings) -> None:
     """Compare each body's mass and principal moments with the URDF's (M502)."""
     frames: dict[str, Matrix4] = {}
@@ -277,7 +277,7 @@ def _moments_differ(moments: list[float], expected: Inertial) -> bool:
     return any(abs(a - b) > _RELATIVE * scale for a, b in zip(moments, wanted))
 
 
-def _ranges(robot: Robot, model: Any, mujoco: Any, findings: Findings) -> None:
+def _ranges(robot: RobotModel, model: Any, mujoco: Any, findings: Findings) -> None:
     """Report joints whose range MuJoCo does not take as the URDF gives it (M503)."""
     for joint in robot.joints:
         if joint.type not in (JointType.REVOLUTE, JointType.PRISMATIC) or joint.limit is None:
@@ -335,7 +335,7 @@ def _inside_out(findings: Findings, name: str, where: str, path: Path, mesh: Any
                  'back faces show its inside', PREFLIGHT_HINTS['M510'], 'mesh')
 
 
-def _dropped_by_import(robot: Robot, findings: Findings) -> None:
+def _dropped_by_import(robot: RobotModel, findings: Findings) -> None:
     """
     Report what MuJoCo's URDF import drops that the MJCF export carries (M508, M509).
 
@@ -365,7 +365,7 @@ def _dropped_by_import(robot: Robot, findings: Findings) -> None:
 _INTERFACES = {'position': 'position', 'velocity': 'velocity', 'motor': 'effort'}
 
 
-def _by_rules(robot: Robot, findings: Findings) -> None:
+def _by_rules(robot: RobotModel, findings: Findings) -> None:
     """Without MuJoCo: fused bodies and empty ranges, by its rules."""
     fused = {link.name for joint, link in robot.walk()
              if joint is None or joint.type is JointType.FIXED}

@@ -44,7 +44,7 @@ from urdfgenpy_ros.validation.codes import PREFLIGHT_HINTS
 from urdfgenpy_ros.validation.findings import Findings, link_path
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 ENGINES = ('mujoco', 'gazebo')
 SDFORMAT_ZERO_MASS = 1e-6  # ignition::math::equal(mass, 0.0): its default tolerance
@@ -74,7 +74,7 @@ class SdfConversion:
         return gone
 
 
-def sdformat_conversion(robot: Robot) -> SdfConversion:
+def sdformat_conversion(robot: RobotModel) -> SdfConversion:
     """Return which links SDFormat's URDF conversion lumps and which it leaves out."""
     conversion = SdfConversion()
     mass = conversion.mass
@@ -107,7 +107,7 @@ def sdformat_conversion(robot: Robot) -> SdfConversion:
     return conversion
 
 
-def sdformat_findings(robot: Robot, findings: Findings) -> None:
+def sdformat_findings(robot: RobotModel, findings: Findings) -> None:
     """Add G601 for every lumped link and G602 for every link the conversion leaves out."""
     conversion = sdformat_conversion(robot)
     for name, (into, joint) in conversion.lumped.items():
@@ -140,7 +140,7 @@ def sdformat_findings(robot: Robot, findings: Findings) -> None:
                      PREFLIGHT_HINTS['G602'], 'link')
 
 
-def gazebo_block_findings(robot: Robot, findings: Findings) -> None:
+def gazebo_block_findings(robot: RobotModel, findings: Findings) -> None:
     """Add G603 for each ``<gazebo>`` element the conversion drops, G604 for scripts."""
     merged, frames = merge_for_sdf(robot, lump_fixed=True)  # as the conversion lumps
     for code, losses in (('G603', gazebo_losses(merged, [frame.joint for frame in frames])),
@@ -154,7 +154,7 @@ def gazebo_block_findings(robot: Robot, findings: Findings) -> None:
                          PREFLIGHT_HINTS[code], loss.tag)
 
 
-def preflight(robot: Robot, engines: Iterable[str],
+def preflight(robot: RobotModel, engines: Iterable[str],
               search_paths: Iterable[str | PathLike[str]] = ()) -> list[ValidationError]:
     """
     Return what each engine in ``engines`` (``mujoco``, ``gazebo``) would change or drop.

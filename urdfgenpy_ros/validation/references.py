@@ -28,10 +28,10 @@ from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
 from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
-def check_references(robot: Robot, findings: Findings, resolver: PackageResolver | None,
+def check_references(robot: RobotModel, findings: Findings, resolver: PackageResolver | None,
                      base: Path | None) -> None:
     """
     Check materials, meshes (when a resolver is given), sizes and non-finite numbers.
@@ -77,7 +77,7 @@ def check_references(robot: Robot, findings: Findings, resolver: PackageResolver
     _check_finite(robot, findings)
 
 
-def _inline_materials(robot: Robot) -> dict[str, str]:
+def _inline_materials(robot: RobotModel) -> dict[str, str]:
     """Return each material a visual defines inline, with the first link defining it."""
     found: dict[str, str] = {}
     for link in robot.links:
@@ -154,7 +154,7 @@ def _check_mesh(mesh: Mesh, element: str, where: str, findings: Findings,
                      'check the path and its permissions', 'mesh')
 
 
-def _check_finite(robot: Robot, findings: Findings) -> None:
+def _check_finite(robot: RobotModel, findings: Findings) -> None:
     for link in robot.links:
         parts: list[tuple[str, Any]] = []
         if link.inertial is not None:

@@ -22,10 +22,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
-def repaired_text(robot: Robot, path: Path) -> tuple[str, str]:
+def repaired_text(robot: RobotModel, path: Path) -> tuple[str, str]:
     """Return the text of ``path`` and the text of ``robot`` written over it (both decoded)."""
     from urdfgenpy_ros.formats.urdf import urdf_file_bytes
     old = path.read_bytes().decode('utf-8', 'surrogateescape')  # other bytes stay
@@ -42,7 +42,7 @@ def unified_diff(path: Path, old: str, new: str) -> str:
         f'a/{path.as_posix()}', f'b/{path.as_posix()}'))
 
 
-def read_written(robot: Robot, path: Path, text: str) -> Robot:
+def read_written(robot: RobotModel, path: Path, text: str) -> RobotModel:
     """Return the robot read back from ``text``, the file written at ``path``."""
     from urdfgenpy_ros.formats._xml import xml_bytes
     from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes

@@ -24,10 +24,10 @@ from urdfgenpy_ros.lumping import lumps, WORLD
 from urdfgenpy_ros.validation.findings import Findings, link_path
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
-def sdformat_refusals(robot: Robot, findings: Findings) -> list[ValidationError]:
+def sdformat_refusals(robot: RobotModel, findings: Findings) -> list[ValidationError]:
     """
     Return an I202/I203 finding for each link of ``robot`` libsdformat refuses.
 
@@ -54,7 +54,7 @@ def sdformat_refusals(robot: Robot, findings: Findings) -> list[ValidationError]
     return refused
 
 
-def lumped_into(robot: Robot, finding: ValidationError) -> str | None:
+def lumped_into(robot: RobotModel, finding: ValidationError) -> str | None:
     """Return the link a fixed joint would lump the finding's link into, or None."""
     name = finding.element.split("'", 2)[1]
     joint = robot.parent_joint(name) if robot.has_link(name) else None

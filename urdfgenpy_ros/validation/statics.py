@@ -43,13 +43,13 @@ from urdfgenpy_ros.joint import Joint, JointType
 from urdfgenpy_ros.validation.findings import Findings, joint_path
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 UNLOADED = 1e-9  # of the robot's weight times a metre: gravity cannot load the joint
 SAFE = 1e-9  # relative: the bound is raised by this much against rounding
 
 
-def check_statics(robot: Robot, findings: Findings,
+def check_statics(robot: RobotModel, findings: Findings,
                   payload: Mapping[str, object] | None = None, margin: float = 1.0,
                   gravity: Sequence[float] = (0.0, 0.0, -9.81)) -> None:
     """Add T801 for every joint whose effort cannot hold the robot somewhere in its range."""
@@ -83,7 +83,7 @@ def check_statics(robot: Robot, findings: Findings,
                      f'{margin:g}; or check the masses it holds up', 'limit')
 
 
-def _held(robot: Robot) -> str:
+def _held(robot: RobotModel) -> str:
     """Return what the message says of a base that is held ('' for a fixed arm's)."""
     free = [joint for joint in robot.joints
             if joint.type in (JointType.FLOATING, JointType.PLANAR)]
@@ -101,7 +101,7 @@ def _held(robot: Robot) -> str:
     return f'; the root link {root.name!r} is held still, as if bolted down'
 
 
-def _subtree(robot: Robot, joint: Joint) -> list[Joint]:
+def _subtree(robot: RobotModel, joint: Joint) -> list[Joint]:
     """Return ``joint`` and every joint below it."""
     found, waiting = [], [joint]
     while waiting:

@@ -39,7 +39,7 @@ from urdfgenpy_ros.errors import ValidationError
 from urdfgenpy_ros.validation.codes import CODES
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 _DIRECTIVE = re.compile(r'^\s*urdfgenpy\s*:\s*(ignore-file|ignore)\b(.*)$', re.DOTALL)
 _CODE = re.compile(r'[A-Z]\d{3}')
@@ -120,7 +120,7 @@ def parse_codes(text: str) -> frozenset[str]:
     return frozenset(parts)
 
 
-def read_suppressions(robot: Robot, ignored: Iterable[str] = ()) -> Suppressions:
+def read_suppressions(robot: RobotModel, ignored: Iterable[str] = ()) -> Suppressions:
     """Return the suppression comments of the file ``robot`` was read from."""
     result = Suppressions(ignored=frozenset(ignored))
     extras = robot.extras

@@ -22,12 +22,12 @@ from typing import TYPE_CHECKING
 from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 _FRAME_NAME = re.compile(r'^[A-Za-z_][A-Za-z0-9_./-]*$')
 
 
-def check_topology(robot: Robot, findings: Findings) -> None:
+def check_topology(robot: RobotModel, findings: Findings) -> None:
     """Find missing links, self-joints, links with two parents, loops and root problems."""
     parents: dict[str, list[str]] = {}
     for joint in robot.joints:
@@ -67,7 +67,7 @@ def check_topology(robot: Robot, findings: Findings) -> None:
     _check_names(robot, findings)
 
 
-def _check_loops(robot: Robot, findings: Findings) -> bool:
+def _check_loops(robot: RobotModel, findings: Findings) -> bool:
     """Report every loop of joints; return whether there was one."""
     looped = False
     parent_of = {joint.child: joint for joint in robot.joints if joint.parent != joint.child}
@@ -92,7 +92,7 @@ def _check_loops(robot: Robot, findings: Findings) -> bool:
     return looped
 
 
-def _check_names(robot: Robot, findings: Findings) -> None:
+def _check_names(robot: RobotModel, findings: Findings) -> None:
     for kind, items, path in (('link', robot.links, link_path),
                               ('joint', robot.joints, joint_path)):
         for item in items:

@@ -26,12 +26,12 @@ from urdfgenpy_ros.urdf_versions import (
 from urdfgenpy_ros.validation.findings import Findings
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 _ROBOT = '/robot'
 
 
-def check_versions(robot: Robot, findings: Findings, target: str | None = DEFAULT_TARGET
+def check_versions(robot: RobotModel, findings: Findings, target: str | None = DEFAULT_TARGET
                    ) -> None:
     """
     Check the robot's URDF version against its features and the ``target`` ROS.
@@ -67,7 +67,7 @@ def check_versions(robot: Robot, findings: Findings, target: str | None = DEFAUL
     _check_quaternions(robot, findings)
 
 
-def _fix(robot: Robot, target: str, needed: tuple[int, int]) -> str:
+def _fix(robot: RobotModel, target: str, needed: tuple[int, int]) -> str:
     if target == 'jazzy' and needed > (1, 0):
         return ('write a URDF 1.0 file for Jazzy: urdfgenpy convert IN OUT --urdf-version 1.0 '
                 '(quaternions become rpy, capsules a cylinder and two spheres)')
@@ -81,7 +81,7 @@ def _feature_fix(needs: tuple[int, int]) -> str:
             'write it the 1.0 way: urdfgenpy convert IN OUT --urdf-version 1.0')
 
 
-def _origins(robot: Robot) -> list[tuple[str, str, Origin]]:
+def _origins(robot: RobotModel) -> list[tuple[str, str, Origin]]:
     found = []
     for link in robot.links:
         path = f"/robot/link[@name='{link.name}']"
@@ -96,7 +96,7 @@ def _origins(robot: Robot) -> list[tuple[str, str, Origin]]:
     return found
 
 
-def _check_quaternions(robot: Robot, findings: Findings) -> None:
+def _check_quaternions(robot: RobotModel, findings: Findings) -> None:
     for owner, path, origin in _origins(robot):
         quat = origin.quat_xyzw
         if quat is None:

@@ -42,7 +42,7 @@ from urdfgenpy_ros.validation.xacro_mapped import mapped, mapped_error
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.formats.xacro_map import XacroMap
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 EXPANDED = ' (expanded)'
 """How a location in an expanded Xacro names its file (``arm.urdf.xacro (expanded)``)."""
@@ -53,7 +53,7 @@ _NOT_XML = ('.py', '.yaml', '.yml', '.csv')
 _EXPRESSION = re.compile(r'\$\{[^}]*\}|\$\([^)]*\)')
 
 
-def in_source(findings: list[ValidationError], robot: Robot) -> list[ValidationError]:
+def in_source(findings: list[ValidationError], robot: RobotModel) -> list[ValidationError]:
     """
     Return ``findings`` with each location in a Xacro expansion moved to the source.
 

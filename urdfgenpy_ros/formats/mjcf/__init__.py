@@ -53,7 +53,7 @@ from urdfgenpy_ros.formats.mjcf.sensors import write_sensors
 from urdfgenpy_ros.resources import PackageResolver
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 BASES = ('fixed', 'floating')
 DEFAULT_KP = 1.0  # MuJoCo's own default for a position actuator
@@ -87,7 +87,7 @@ class MjcfResult:
     advice: list[str] = field(default_factory=list)  # of the notes, what asks the user to act
 
 
-def _source_folder(robot: Robot) -> Path | None:
+def _source_folder(robot: RobotModel) -> Path | None:
     file = robot.source.file if robot.source is not None else None
     if not file:
         return None
@@ -95,7 +95,7 @@ def _source_folder(robot: Robot) -> Path | None:
     return path.parent if path.is_file() else None
 
 
-def _refuse(robot: Robot, written: Robot, fuse_fixed: bool, floating: bool) -> None:
+def _refuse(robot: RobotModel, written: RobotModel, fuse_fixed: bool, floating: bool) -> None:
     """Raise MjcfRefusedError when MuJoCo refuses a mass or tensor of ``written``."""
     from urdfgenpy_ros.validation import validate
     refused = [finding for finding in validate(written, check_meshes=False)
@@ -132,7 +132,7 @@ def _advice(refused: list[ValidationError], fuse_fixed: bool) -> str:
     return '; '.join(said)
 
 
-def _welded_mass(robot: Robot, name: str) -> float:
+def _welded_mass(robot: RobotModel, name: str) -> float:
     """Return the mass of link ``name`` and of every link welded to it below."""
     link = robot.get_link(name)
     mass = link.inertial.mass if link.inertial is not None else 0.0
@@ -140,7 +140,7 @@ def _welded_mass(robot: Robot, name: str) -> float:
                       if joint.type.value == 'fixed')
 
 
-def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
+def write_mjcf(robot: RobotModel, path: str | PathLike[str] | None = None, *,
                fuse_fixed: bool = False, base: str | None = None,
                actuators: str | None = None, kp: GainOption = None,
                kv: GainOption = None, scene: bool = False,
@@ -316,7 +316,7 @@ def _skeleton(name: str, base: str, fuse_fixed: bool, meshdir: str | None) -> An
     return document
 
 
-def _check_gains(robot: Robot, chosen: list[Any], gains: tuple[Gains, Gains]
+def _check_gains(robot: RobotModel, chosen: list[Any], gains: tuple[Gains, Gains]
                  ) -> list[str]:
     """Refuse a gain for a joint the robot lacks; return notes for gains left unused."""
     takes = {'kp': ('position',), 'kv': ('position', 'velocity')}

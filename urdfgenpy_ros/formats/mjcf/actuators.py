@@ -39,7 +39,7 @@ from urdfgenpy_ros.formats.mjcf.gains import Gains
 from urdfgenpy_ros.joint import Joint, JointType
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 KINDS = {'position': 'position', 'velocity': 'velocity', 'effort': 'motor'}
 """ros2_control command interface -> MJCF actuator."""
@@ -69,12 +69,12 @@ def _number(element: Any, name: str) -> float | None:
     return None
 
 
-def blocks(robot: Robot, tag: str) -> list[Any]:
+def blocks(robot: RobotModel, tag: str) -> list[Any]:
     """Return the elements of the robot's ``tag`` blocks, in order."""
     return [block.element for block in robot.extensions if block.tag == tag]
 
 
-def gears(robot: Robot) -> dict[str, tuple[float, Any]]:
+def gears(robot: RobotModel) -> dict[str, tuple[float, Any]]:
     """
     Return each joint's mechanical reduction and which transmission gave it.
 
@@ -116,7 +116,7 @@ def _reduction(texts: list[str | None]) -> float:
     return 1.0
 
 
-def initial_values(robot: Robot) -> dict[str, float]:
+def initial_values(robot: RobotModel) -> dict[str, float]:
     """
     Return each joint's ros2_control ``initial_value`` (its position state interface's).
 
@@ -150,7 +150,7 @@ def _range(kind: str, joint: Joint, element: Any) -> tuple[float, float] | None:
     return (-value, value) if value > 0.0 else None
 
 
-def declared_actuators(robot: Robot, kind: str | None) -> list[Actuator]:
+def declared_actuators(robot: RobotModel, kind: str | None) -> list[Actuator]:
     """
     Return the actuators: from ``<ros2_control>``, or ``kind`` on every joint when given.
 

@@ -38,7 +38,7 @@ from urdfgenpy_ros.floats import fmt
 from urdfgenpy_ros.joint import JointType
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 STABLE = 1.0
 """The largest ``h^2 w^2 + 2 h gamma`` kept: a quarter of the bound, for the coupled joints,
@@ -48,7 +48,7 @@ IMPLICIT = ('implicit', 'implicitfast')  # integrators that take a servo's dampi
 _NAMES = ('rotor_inertia', 'rotorInertia')
 
 
-def rotor_armatures(robot: Robot) -> dict[str, float]:
+def rotor_armatures(robot: RobotModel) -> dict[str, float]:
     """Return each joint's reflected rotor inertia (kg m^2), from its transmission."""
     from urdfgenpy_ros.formats.mjcf.actuators import blocks, gears
     reductions = gears(robot)
@@ -86,7 +86,7 @@ def _rotor_inertia(element: Any) -> float | None:
     return None
 
 
-def write_rotor_armatures(worldbody: Any, robot: Robot) -> list[str]:
+def write_rotor_armatures(worldbody: Any, robot: RobotModel) -> list[str]:
     """Set the reflected rotor inertia as each joint's armature; return the note."""
     armatures = rotor_armatures(robot)
     joints = {node.get('name'): node for node in worldbody.iter('joint')}
@@ -128,7 +128,7 @@ def servos(document: Any) -> list[Servo]:
     return found
 
 
-def stabilise(document: Any, robot: Robot, home: dict[str, tuple[float, ...]],
+def stabilise(document: Any, robot: RobotModel, home: dict[str, tuple[float, ...]],
               given: set[str]) -> tuple[list[str], list[str]]:
     """
     Give each servo's joint the armature its gain needs at the model's timestep.
@@ -190,7 +190,7 @@ def _short(value: float) -> str:
     return fmt(float(f'{value:.4g}'))
 
 
-def joint_inertias(robot: Robot, names: set[str], home: dict[str, tuple[float, ...]]
+def joint_inertias(robot: RobotModel, names: set[str], home: dict[str, tuple[float, ...]]
                    ) -> dict[str, float]:
     """
     Return each named joint's effective inertia at ``home``: its subtree's about the axis.
@@ -228,7 +228,7 @@ def joint_inertias(robot: Robot, names: set[str], home: dict[str, tuple[float, .
     return found
 
 
-def _world_masses(robot: Robot, poses: Any) -> dict[str, tuple[float, Any, Any]]:
+def _world_masses(robot: RobotModel, poses: Any) -> dict[str, tuple[float, Any, Any]]:
     """Return each link's mass, centre of mass and inertia tensor in the root frame."""
     import numpy
     found = {}
@@ -243,7 +243,7 @@ def _world_masses(robot: Robot, poses: Any) -> dict[str, tuple[float, Any, Any]]
     return found
 
 
-def _subtree(robot: Robot, link: str) -> list[str]:
+def _subtree(robot: RobotModel, link: str) -> list[str]:
     """Return ``link`` and every link below it."""
     found, stack = [], [link]
     while stack:

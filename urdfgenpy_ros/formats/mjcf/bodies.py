@@ -41,7 +41,7 @@ from urdfgenpy_ros.link import Link, Shape, Visual
 from urdfgenpy_ros.transforms import quaternion_matrix
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 WORLD = 'world'
 _SLIDE_AXES = ('x', 'y')
@@ -137,7 +137,7 @@ def has_size(geometry: Geometry) -> bool:
 class BodyWriter:
     """Write a robot's links as nested bodies under ``<worldbody>``."""
 
-    def __init__(self, robot: Robot, meshes: MeshAssets, base: str,
+    def __init__(self, robot: RobotModel, meshes: MeshAssets, base: str,
                  sites: dict[str, list[tuple[str, Origin]]]) -> None:
         self.robot = robot
         self.meshes = meshes

@@ -23,7 +23,7 @@ from typing import Any, TYPE_CHECKING
 from urdfgenpy_ros.floats import fmt
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 TORSION_ROLLING = '0.005 0.0001'  # MuJoCo's defaults for the other two coefficients
 
@@ -37,7 +37,7 @@ class Friction:
     element: Any
 
 
-def declared_friction(robot: Robot) -> dict[str, Friction]:
+def declared_friction(robot: RobotModel) -> dict[str, Friction]:
     """Return the friction each link's ``<gazebo reference>`` block gives, by link."""
     found: dict[str, Friction] = {}
     blocks = [*robot.extensions, *(block for link in robot.links for block in link.extensions)]

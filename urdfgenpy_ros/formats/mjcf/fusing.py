@@ -31,13 +31,13 @@ from urdfgenpy_ros.lumping import lump_fixed_joints, lumps
 from urdfgenpy_ros.transforms import from_xyz_rpy, Matrix4, multiply, to_xyz_rpy
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 
 Sites = dict[str, list[tuple[str, Origin]]]
 
 
-def fused(robot: Robot) -> tuple[Robot, Sites, dict[str, list[str]]]:
+def fused(robot: RobotModel) -> tuple[RobotModel, Sites, dict[str, list[str]]]:
     """
     Return the fused robot, the sites per body and the owner link of each collision.
 

@@ -31,13 +31,13 @@ from urdfgenpy_ros.floats import fmt_vec
 from urdfgenpy_ros.formats.mjcf.bodies import BodyTree
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 HOLDING = ('position', 'intvelocity')
 """Actuators whose control is a position: a keyframe's ctrl is the joint's value there."""
 
 
-def home_positions(tree: BodyTree, robot: Robot, initial: dict[str, float] | None = None
+def home_positions(tree: BodyTree, robot: RobotModel, initial: dict[str, float] | None = None
                    ) -> dict[str, tuple[float, ...]]:
     """
     Return each MJCF joint's home: zero clamped to its limits, or its ``initial`` value.

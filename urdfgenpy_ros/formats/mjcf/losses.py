@@ -32,7 +32,7 @@ from urdfgenpy_ros.errors import SourceLocation, ValidationError
 from urdfgenpy_ros.validation.findings import Findings
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 # tag -> (attributes carried, children carried); '*' children: judged by a handler
 CARRIED: dict[str, tuple[frozenset[str], frozenset[str]]] = {
@@ -96,7 +96,7 @@ class Carried:
 class Losses:
     """Collect the findings while walking the URDF document."""
 
-    def __init__(self, robot: Robot, file: str | None, carried: Carried) -> None:
+    def __init__(self, robot: RobotModel, file: str | None, carried: Carried) -> None:
         self.file = file
         self.carried = carried
         self.findings = Findings(robot)
@@ -134,7 +134,7 @@ def _owner(node: Any) -> str:
     return 'robot'
 
 
-def find_losses(robot: Robot, root: Any, file: str | None, carried: Carried
+def find_losses(robot: RobotModel, root: Any, file: str | None, carried: Carried
                 ) -> list[ValidationError]:
     """Return one finding per element or attribute of ``robot``'s URDF ``root`` not carried."""
     losses = Losses(robot, file, carried)

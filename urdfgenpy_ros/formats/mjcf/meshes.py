@@ -41,7 +41,7 @@ from urdfgenpy_ros.geometry import Mesh
 from urdfgenpy_ros.resources import PackageResolver
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 PACKAGE_HINT = ('source its workspace, or give the folder holding its package: '
                 '--package-path on the command line, search_paths in Python')
@@ -71,7 +71,7 @@ class MeshAssets:
     _textured: list[str] = field(default_factory=list)
     _conversions: dict[Path, Converted] = field(default_factory=dict)
 
-    def prepare(self, robot: Robot) -> None:
+    def prepare(self, robot: RobotModel) -> None:
         """Convert the robot's mesh files that need it, in parallel when there are many."""
         if self.meshdir is None:
             return

@@ -24,12 +24,12 @@ from lxml import etree
 from urdfgenpy_ros.floats import fmt, fmt_vec
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 TIMESTEP = 0.002  # MuJoCo's default
 
 
-def write_equalities(document: Any, robot: Robot) -> set[str]:
+def write_equalities(document: Any, robot: RobotModel) -> set[str]:
     """
     Write each mimic joint as a joint equality: q = offset + multiplier * q_leader.
 

@@ -40,7 +40,7 @@ from urdfgenpy_ros.geometry import Origin
 from urdfgenpy_ros.transforms import from_xyz_rpy, multiply, to_xyz_rpy
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.model import RobotModel
 
 CAMERAS = ('camera', 'depth_camera', 'depth', 'rgbd_camera', 'wideanglecamera')
 LIDARS = ('gpu_lidar', 'lidar', 'ray', 'gpu_ray')
@@ -63,7 +63,7 @@ def _sdf_element(sensor: Any) -> Any:
     return sensor_element(sensor)
 
 
-def gather(robot: Robot) -> list[Placed]:
+def gather(robot: RobotModel) -> list[Placed]:
     """Return the sensors of ``robot``'s links and joints, in the model's order."""
     found = []
     for link in robot.links:
@@ -96,7 +96,7 @@ def _number(element: Any, path: str, default: float) -> float:
         return default
 
 
-def write_sensors(document: Any, worldbody: Any, robot: Robot,
+def write_sensors(document: Any, worldbody: Any, robot: RobotModel,
                   partly: dict[str, str] | None = None) -> set[str]:
     """
     Add the robot's sensors to the bodies and a ``<sensor>`` section; return their names.
