@@ -46,7 +46,7 @@ The layers (docs/architecture.md), each importing only those below it:
    ``to_robot`` gives a ``Robot`` (the skeleton is ``dh_skeleton``'s, the files
    ``formats.dh_table``'s).
 4. **Above it** (:data:`USE_ROBOT`): the package's ``__init__``, the front ends (``cli/``,
-   ``publisher/``, ``scaffold/``, ``viewer/``), ``model_source``, ``examples``.
+   ``publisher/``, ``scaffold/``, ``viewer/``), ``examples``.
 """
 
 from __future__ import annotations
@@ -63,13 +63,13 @@ Graph = dict[str, set[str]]
 
 PACKAGE = 'urdfgenpy_ros'
 MODEL = frozenset(f'{PACKAGE}.{name}' for name in (
-    'checks', 'dh_row', 'dh_skeleton', 'errors', 'extensions', 'floats', 'geometry',
+    'checks', 'dh_row', 'dh_skeleton', 'edits', 'errors', 'extensions', 'floats', 'geometry',
     'inertial', 'joint', 'lazy_lists', 'link', 'material', 'mesh_inertia', 'mesh_read',
     'model', 'owned_names', 'preserved', 'sensors', 'transforms', 'value_kinds'))
 """The model layer: these import only each other."""
 USE_ROBOT = (PACKAGE, f'{PACKAGE}.dh', f'{PACKAGE}.cli.', f'{PACKAGE}.publisher.',
              f'{PACKAGE}.scaffold.',
-             f'{PACKAGE}.viewer.', f'{PACKAGE}.model_source', f'{PACKAGE}.examples')
+             f'{PACKAGE}.viewer.', f'{PACKAGE}.examples')
 """What may import the facade, ``urdfgenpy_ros.robot``, even for types (a module, or a
 package's prefix ending in a dot)."""
 CYCLE_LEFT = {

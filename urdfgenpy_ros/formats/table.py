@@ -131,8 +131,9 @@ def _read_table(path: Path, mappings: Mapping[str, str], search_paths: Iterable[
     from urdfgenpy_ros.assembly_file import is_assembly
     if is_assembly(path):  # a YAML file with a top-level parts:
         return _read_assembly(path, mappings, search_paths)
-    from urdfgenpy_ros.dh import DHTable
-    return DHTable.from_file(path).to_robot(path.name.split('.')[0])
+    from urdfgenpy_ros.dh_skeleton import skeleton, TableRows
+    from urdfgenpy_ros.formats.dh_table import read_table
+    return skeleton(read_table(path, TableRows), path.name.split('.')[0])
 
 
 def _write_urdf(robot: RobotModel, path: PathArg, version: str | None = None) -> str:
