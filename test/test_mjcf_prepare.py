@@ -33,6 +33,7 @@ from urdfgenpy_ros import Inertial, Joint, Link, Robot
 from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.formats import load
 from urdfgenpy_ros.formats.mjcf import MjcfRefusedError, prepare, write_mjcf
+from urdfgenpy_ros.formats.mjcf import write_prepared
 import urdfgenpy_ros.formats.urdf
 
 EVERYTHING = FIXTURES / 'mjcf' / 'everything.urdf'
@@ -65,10 +66,12 @@ def test_prepare_refuses_what_mujoco_refuses(case: str) -> None:
     assert bool(review.refused) is not accepted
     assert review.findings == review.refused.get('mujoco', [])
     if accepted:
-        assert write_mjcf(robot).text
+        assert write_prepared(robot, review).text == write_mjcf(robot).text
         return
     with pytest.raises(MjcfRefusedError) as refused:
         write_mjcf(robot)
+    with pytest.raises(MjcfRefusedError):
+        write_prepared(robot, review)
     assert [finding.code for finding in refused.value.findings] == \
         [finding.code for finding in review.refused['mujoco']]
 
@@ -121,8 +124,8 @@ def test_a_robot_as_read_is_not_written_as_urdf_to_find_its_losses(
 def test_an_edited_robot_keeps_the_losses_on_their_lines() -> None:
     require_module('mujoco')
     robot = load(EVERYTHING)
-    edited = next(link for link in robot.links if link.inertial is not None)
-    edited.inertial.mass *= 2  # the same lines, written anew from the model
+    edited = next(link.inertial for link in robot.links if link.inertial is not None)
+    edited.mass *= 2  # the same lines, written anew from the model
     result = write_mjcf(robot)
     assert {(finding.location.line, finding.code) for finding in result.findings} == \
         _marked(EVERYTHING)

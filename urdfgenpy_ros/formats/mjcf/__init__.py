@@ -20,7 +20,8 @@ MuJoCo MJCF writer: every link a body, the physics as the URDF gives it, losses 
 the MJCF cannot carry (M801-M808, in ``check``'s format), the choices it made (the
 base, the gains) as notes, and the files it wrote beside the model (meshes, scene).
 It prepares (:func:`.prepare.prepare` refuses what MuJoCo refuses), runs the stages of
-:data:`.stages.STAGES` in order over one :class:`.build.Build`, then writes the files.
+:data:`.stages.STAGES` in order over one :class:`.build.Build`, then writes the files;
+:func:`write_prepared` does the same after a ``prepare`` made by the caller.
 """
 
 from __future__ import annotations
@@ -34,18 +35,21 @@ from lxml import etree
 
 from urdfgenpy_ros.errors import ModelError, ValidationError
 from urdfgenpy_ros.formats.mjcf.build import Build, EXPANDED, MjcfOptions, start
+from urdfgenpy_ros.formats.mjcf.fusing import fused
 from urdfgenpy_ros.formats.mjcf.gains import GainOption
 from urdfgenpy_ros.formats.mjcf.meshes import MeshAssets
 from urdfgenpy_ros.formats.mjcf.prepare import (
-    BASES, MINIMUM_MASS, MjcfRefusedError, prepare, prepared, raise_refused, REFUSED, TENSORS)
+    BASES, Fused, MINIMUM_MASS, MjcfRefusedError, prepare, prepared, raise_refused, REFUSED,
+    TENSORS)
 from urdfgenpy_ros.formats.mjcf.stages import DEFAULT_KP, DEFAULT_KV, NO_ACTUATORS, STAGES
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
+    from urdfgenpy_ros.validation.checklist import Review
 
 __all__ = ['BASES', 'DEFAULT_KP', 'DEFAULT_KV', 'EXPANDED', 'MINIMUM_MASS', 'MjcfOptions',
            'MjcfRefusedError', 'MjcfResult', 'NO_ACTUATORS', 'prepare', 'REFUSED', 'STAGES',
-           'TENSORS', 'write_mjcf']
+           'TENSORS', 'write_mjcf', 'write_prepared']
 
 
 @dataclass
@@ -88,10 +92,30 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     """
     options = MjcfOptions(fuse_fixed, base, actuators, kp, kv, scene, overlay, meshdir,
                           search_paths, overwrite, strict)
-    review, fused = prepared(robot, vars(options))
+    review, written = prepared(robot, vars(options))
     raise_refused(review, fuse_fixed)
-    assert fused is not None  # a review that refuses nothing has the robot to write
-    build = start(robot, Path(path) if path is not None else None, options, fused)
+    assert written is not None  # a review that refuses nothing has the robot to write
+    return _run(robot, path, options, written)
+
+
+def write_prepared(robot: Robot, review: Review, path: str | PathLike[str] | None = None,
+                   **options: Any) -> MjcfResult:
+    """
+    Return (and with ``path``, write) the MJCF of ``robot``, which ``prepare`` reviewed.
+
+    ``review`` is what :func:`prepare` returned for ``robot`` and the same ``options``
+    (``write_mjcf``'s keywords): its refusals are raised as ``write_mjcf`` raises them.
+    """
+    settings = MjcfOptions(**options)
+    raise_refused(review, settings.fuse_fixed)
+    written = Fused(*fused(robot)) if settings.fuse_fixed else Fused(robot, {}, {})
+    return _run(robot, path, settings, written)
+
+
+def _run(robot: Robot, path: str | PathLike[str] | None, options: MjcfOptions,
+         written: Fused) -> MjcfResult:
+    """Run the stages over one build of ``robot``'s MJCF; finish it."""
+    build = start(robot, Path(path) if path is not None else None, options, written)
     for stage in STAGES:
         stage(build)
     return _finish(build)
