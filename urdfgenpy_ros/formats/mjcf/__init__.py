@@ -34,7 +34,7 @@ from typing import Any, TYPE_CHECKING
 from lxml import etree
 
 from urdfgenpy_ros.errors import ModelError, ValidationError
-from urdfgenpy_ros.formats.mjcf.build import Build, EXPANDED, MjcfOptions, start
+from urdfgenpy_ros.formats.mjcf.build import Build, EXPANDED, start, WriteOptions
 from urdfgenpy_ros.formats.mjcf.fusing import fused
 from urdfgenpy_ros.formats.mjcf.gains import GainOption
 from urdfgenpy_ros.formats.mjcf.meshes import MeshAssets
@@ -47,7 +47,7 @@ if TYPE_CHECKING:
     from urdfgenpy_ros.robot import Robot
     from urdfgenpy_ros.validation.checklist import Review
 
-__all__ = ['BASES', 'DEFAULT_KP', 'DEFAULT_KV', 'EXPANDED', 'MINIMUM_MASS', 'MjcfOptions',
+__all__ = ['BASES', 'DEFAULT_KP', 'DEFAULT_KV', 'EXPANDED', 'MINIMUM_MASS',
            'MjcfRefusedError', 'MjcfResult', 'NO_ACTUATORS', 'prepare', 'REFUSED', 'STAGES',
            'TENSORS', 'write_mjcf', 'write_prepared']
 
@@ -90,8 +90,8 @@ def write_mjcf(robot: Robot, path: str | PathLike[str] | None = None, *,
     :raises MjcfRefusedError: for a mass or tensor MuJoCo refuses, before writing.
     :raises ModelError: for a bad option or a mesh that cannot be found or read.
     """
-    options = MjcfOptions(fuse_fixed, base, actuators, kp, kv, scene, overlay, meshdir,
-                          search_paths, overwrite, strict)
+    options = WriteOptions(fuse_fixed, base, actuators, kp, kv, scene, overlay, meshdir,
+                           search_paths, overwrite, strict)
     review, written = prepared(robot, vars(options))
     raise_refused(review, fuse_fixed)
     assert written is not None  # a review that refuses nothing has the robot to write
@@ -106,13 +106,13 @@ def write_prepared(robot: Robot, review: Review, path: str | PathLike[str] | Non
     ``review`` is what :func:`prepare` returned for ``robot`` and the same ``options``
     (``write_mjcf``'s keywords): its refusals are raised as ``write_mjcf`` raises them.
     """
-    settings = MjcfOptions(**options)
+    settings = WriteOptions(**options)
     raise_refused(review, settings.fuse_fixed)
     written = Fused(*fused(robot)) if settings.fuse_fixed else Fused(robot, {}, {})
     return _run(robot, path, settings, written)
 
 
-def _run(robot: Robot, path: str | PathLike[str] | None, options: MjcfOptions,
+def _run(robot: Robot, path: str | PathLike[str] | None, options: WriteOptions,
          written: Fused) -> MjcfResult:
     """Run the stages over one build of ``robot``'s MJCF; finish it."""
     build = start(robot, Path(path) if path is not None else None, options, written)

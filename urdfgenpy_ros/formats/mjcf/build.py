@@ -45,7 +45,7 @@ EXPANDED = ' (expanded)'
 
 
 @dataclass(frozen=True)
-class MjcfOptions:
+class WriteOptions:
     """The keywords of ``write_mjcf`` (see there)."""
 
     fuse_fixed: bool = False
@@ -67,7 +67,7 @@ class Build:
 
     robot: Robot
     path: Path | None
-    options: MjcfOptions
+    options: WriteOptions
     fused: Fused
     gains: tuple[Gains, Gains]
     meshes: MeshAssets
@@ -104,7 +104,7 @@ class Build:
         return self.options.meshdir if self.path is not None else None
 
 
-def start(robot: Robot, path: Path | None, options: MjcfOptions, fused: Fused) -> Build:
+def start(robot: Robot, path: Path | None, options: WriteOptions, fused: Fused) -> Build:
     """Return the build of ``robot``'s MJCF: the skeleton and the note on its base."""
     meshdir = options.meshdir if path is not None else None
     note = _base_note(robot.root.name == WORLD, options.base)
