@@ -73,20 +73,13 @@ def prepare_sdf(robot: RobotModel, options: Mapping[str, Any]) -> Review:
 
 
 def prepare_mjcf(robot: RobotModel, options: Mapping[str, Any]) -> Review:
-    """
-    Return what MuJoCo refuses in the MJCF of ``robot`` (with the writer's options).
-
-    A thin stand-in calling what the MJCF writer refuses with today.
-    """
+    """Return what MuJoCo refuses in the MJCF of ``robot`` (with the writer's options)."""
     found = tree_review(robot)
     if found.refusal is not None:
         return found
-    from urdfgenpy_ros.formats.mjcf import _refuse, MjcfRefusedError
-    from urdfgenpy_ros.formats.mjcf.fusing import fused
-    fuse = bool(options.get('fuse_fixed'))
+    from urdfgenpy_ros.formats.mjcf.prepare import MjcfRefusedError, prepare, raise_refused
     try:
-        _refuse(robot, fused(robot)[0] if fuse else robot, fuse,
-                options.get('base') == 'floating')
+        raise_refused(prepare(robot, options), bool(options.get('fuse_fixed')))
     except MjcfRefusedError as error:
         found.lines += [str(finding) for finding in error.findings]
         found.refusal = str(error)
