@@ -48,7 +48,7 @@ from timing import median_seconds  # noqa: E402, I100
 import trimesh  # noqa: E402, I100
 
 from urdfgenpy_ros.formats import load  # noqa: E402, I100
-from urdfgenpy_ros.geometry import Mesh  # noqa: E402
+from urdfgenpy_ros.model.geometry import Mesh  # noqa: E402
 from urdfgenpy_ros.resources import PackageResolver  # noqa: E402
 
 METHODS = ('hull', 'decompose', 'primitive', 'decimate')

@@ -37,7 +37,7 @@ import statistics
 import time
 
 from urdfgenpy_ros import Box, Inertial, Joint, JointLimit, Link, Origin, Robot
-from urdfgenpy_ros.kinematics import JointTransforms, link_poses
+from urdfgenpy_ros.dynamics.kinematics import JointTransforms, link_poses
 
 
 def humanoid(links: int = 60) -> Robot:

@@ -39,7 +39,7 @@ from typing import Any, Callable
 import numpy
 
 from urdfgenpy_ros import Robot
-from urdfgenpy_ros.kinematics import link_poses
+from urdfgenpy_ros.dynamics.kinematics import link_poses
 
 TALOS = 'cmeel.prefix/share/example-robot-data/robots/talos_data/robots/talos_full_v2.urdf'
 

@@ -17,7 +17,7 @@ MkDocs hooks: the generated parts of the site, made from the code at every build
 
 A page asks for a part with an HTML comment on a line of its own:
 
-- ``<!-- generated: codes -->``: the finding codes, from ``validation/codes.py``;
+- ``<!-- generated: codes -->``: the finding codes, from ``model/codes.py``;
 - ``<!-- generated: node-parameters -->``: the node's parameters, from its declarations
   in ``publisher/node.py`` (read with ``ast``: building the site needs no ROS);
 - ``<!-- generated: commands -->``: every ``urdfgenpy`` command's ``--help``;
@@ -67,7 +67,7 @@ def _cell(text: str) -> str:
 
 def codes_table() -> str:
     """Return a table per code family, made from ``CODES`` and ``PREFLIGHT_HINTS``."""
-    from urdfgenpy_ros.validation.codes import CODES, PREFLIGHT_HINTS
+    from urdfgenpy_ros.model.codes import CODES, PREFLIGHT_HINTS
     lines: list[str] = []
     family = ''
     for code, (severity, title) in CODES.items():

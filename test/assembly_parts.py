@@ -25,8 +25,8 @@ from __future__ import annotations
 
 from urdfgenpy_ros import (Box, Collision, Cylinder, Extension, Inertial, Joint, JointLimit,
                            JointMimic, Link, Material, Origin, Robot, Visual)
+from urdfgenpy_ros.model.sensors import Camera, Imu, Lidar
 from urdfgenpy_ros.plugins import diff_drive, joint_state_publisher, ros2_control
-from urdfgenpy_ros.sensors import Camera, Imu, Lidar
 
 GREY = Material('grey', rgba=(0.5, 0.5, 0.5, 1.0))
 BLACK = Material('black', rgba=(0.0, 0.0, 0.0, 1.0))

@@ -28,8 +28,8 @@ import pytest
 from registry_robots import robot as registry_robot, search_paths
 
 from urdfgenpy_ros import Joint, Link, Material, Origin, Robot, Visual
-from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.formats import load
+from urdfgenpy_ros.model.errors import ModelError
 
 MOUNT = Origin((0.1, 0.0, 0.2), (0.0, 0.0, 0.5))
 GRIP = Origin((0.0, 0.0, 0.107), (0.0, 0.0, -0.7853981633974483))

@@ -26,8 +26,8 @@ import pytest
 
 from urdfgenpy_ros import Mesh, Origin, Robot
 from urdfgenpy_ros.cli import main
-from urdfgenpy_ros.errors import ParseError
 from urdfgenpy_ros.formats import load
+from urdfgenpy_ros.model.errors import ParseError
 from urdfgenpy_ros.scaffold.render import render_package
 from urdfgenpy_ros.scaffold.spec import PackageSpec
 

@@ -107,8 +107,8 @@ def test_a_materials_only_file_is_skipped_at_its_source_line(tmp_path: Path,
     assert 'X003 defines materials (black, orange) and no robot' in output
     assert '(expanded)' not in output and 'P002' not in output
     assert '1 file(s): 0 error(s), 0 warning(s), 0 unreadable' in output
-    from urdfgenpy_ros.errors import ParseError
     from urdfgenpy_ros.formats import load
+    from urdfgenpy_ros.model.errors import ParseError
     with pytest.raises(ParseError) as raised:
         load(path)
     assert str(raised.value).startswith(f'{path}:{line}:')

@@ -26,7 +26,7 @@ import pytest
 
 from urdfgenpy_ros import Robot
 from urdfgenpy_ros.cli import main
-from urdfgenpy_ros.validation.codes import CODES
+from urdfgenpy_ros.model.codes import CODES
 from validation_fixtures import broken, defect_line, VALID
 
 SCHEMA = FIXTURES / 'sarif' / 'sarif-schema-2.1.0.json'

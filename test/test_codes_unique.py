@@ -20,7 +20,7 @@ import ast
 from collections import Counter
 from pathlib import Path
 
-import urdfgenpy_ros.validation.codes as codes
+import urdfgenpy_ros.model.codes as codes
 
 
 def _keys(name: str) -> list[str]:

@@ -37,7 +37,7 @@ import pytest
 from urdfgenpy_ros import Robot
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.collision import CollisionRefusedError
-from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Sphere
+from urdfgenpy_ros.model.geometry import Box, Capsule, Cylinder, Mesh, Sphere
 
 trimesh = require_module('trimesh')  # skips (naming it) without trimesh
 

@@ -38,7 +38,7 @@ from registry_robots import robot_id, robots, search_paths
 from urdfgenpy_ros import Robot
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.formats import load
-from urdfgenpy_ros.geometry import Mesh
+from urdfgenpy_ros.model.geometry import Mesh
 from urdfgenpy_ros.resources import PackageResolver
 
 trimesh = require_module('trimesh')  # skips (naming it) without trimesh

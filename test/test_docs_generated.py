@@ -22,7 +22,7 @@ from types import ModuleType
 
 from helpers import REPO
 
-from urdfgenpy_ros.validation.codes import CODES, PREFLIGHT_HINTS
+from urdfgenpy_ros.model.codes import CODES, PREFLIGHT_HINTS
 
 HOW = 'run python docs/hooks.py to write the tables again, and commit them'
 

@@ -61,7 +61,7 @@ def test_every_page_is_built(site: Path) -> None:
 
 
 def test_the_code_table_lists_every_code_with_its_severity_and_title(site: Path) -> None:
-    from urdfgenpy_ros.validation.codes import CODES
+    from urdfgenpy_ros.model.codes import CODES
     rows = {}
     for row in etree.parse(str(site / 'validation' / 'index.html'),
                            etree.HTMLParser()).iter('tr'):

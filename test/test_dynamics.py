@@ -362,9 +362,9 @@ def test_every_edit_after_a_call_is_seen_by_the_next_call() -> None:
 def test_the_pinocchio_path_gives_the_numpy_paths_numbers(path: Path) -> None:
     require_module('pinocchio')
     from urdfgenpy_ros.dynamics import compiled
+    from urdfgenpy_ros.dynamics.accelerated import accelerated
     from urdfgenpy_ros.dynamics.forward import jacobian
     from urdfgenpy_ros.dynamics.gravity import gravity_torques, mass_model
-    from urdfgenpy_ros.dynamics.accelerated import accelerated
     robot = _robot(path)
     model = compiled(robot)
     assert accelerated(model, robot, masses=True) is not None  # the path is taken

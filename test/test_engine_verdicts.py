@@ -107,7 +107,7 @@ def test_links_said_to_be_dropped_are_the_ones_libsdformat_drops(
         name: str, check_sdf: Path, tmp_path: Path) -> None:
     import subprocess
     from urdfgenpy_ros import Inertial
-    from urdfgenpy_ros.lumping import lumps
+    from urdfgenpy_ros.reshape.lumping import lumps
     robot = Robot.from_urdf(PROBLEMS / name)
     if len(robot.roots) != 1 or any(note.code == 'P106' for note in robot.read_warnings):
         # No tree; or an <inertial> without <inertia>, which urdfdom drops but libsdformat

@@ -25,9 +25,9 @@ from helpers import require_module
 import pytest
 
 from urdfgenpy_ros.cli import main
-from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import find_format, format_of, FORMATS, load, open_description, save
 from urdfgenpy_ros.formats.table import readable_suffixes
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 from urdfgenpy_ros.robot import Robot
 
 

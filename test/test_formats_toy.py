@@ -28,11 +28,11 @@ import pytest
 from urdfgenpy_ros import Joint, JointLimit, Link, Robot, Severity, SourceLocation
 from urdfgenpy_ros import ValidationError
 from urdfgenpy_ros.cli import main
-from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import save
 from urdfgenpy_ros.formats.options import Option
 from urdfgenpy_ros.formats.prepare import tree_review
 from urdfgenpy_ros.formats.table import Format, registered
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 from urdfgenpy_ros.validation.checklist import Review
 
 LIMIT = ('lower', 'upper', 'effort', 'velocity')

@@ -24,8 +24,8 @@ import sys
 from helpers import REPO, require_module
 import pytest
 
-from urdfgenpy_ros.errors import PACKAGE_FOLDER, UrdfgenpyError
 from urdfgenpy_ros.formats import open_description
+from urdfgenpy_ros.model.errors import PACKAGE_FOLDER, UrdfgenpyError
 from urdfgenpy_ros.publisher import NODE_WORDS
 from urdfgenpy_ros.scaffold.command import main as init
 
@@ -105,7 +105,7 @@ def test_one_fix_as_data_each_front_end_in_its_own_words(tmp_path: Path) -> None
 
 
 def test_the_front_door_refuses_an_input_naming_it_in_each_front_ends_words() -> None:
-    from urdfgenpy_ros.errors import InputError
+    from urdfgenpy_ros.model.errors import InputError
     from urdfgenpy_ros.report import FrontEnd
     from urdfgenpy_ros.scaffold import INIT_INPUTS
     with pytest.raises(InputError) as raised:

@@ -62,10 +62,8 @@ import pytest
 Graph = dict[str, set[str]]
 
 PACKAGE = 'urdfgenpy_ros'
-MODEL = frozenset(f'{PACKAGE}.{name}' for name in (
-    'checks', 'dh_row', 'dh_skeleton', 'edits', 'errors', 'extensions', 'floats', 'geometry',
-    'inertial', 'joint', 'lazy_lists', 'link', 'material', 'mesh_inertia', 'mesh_read',
-    'model', 'owned_names', 'preserved', 'sensors', 'transforms', 'value_kinds'))
+MODEL = frozenset([f'{PACKAGE}.model', *(f'{PACKAGE}.model.{path.stem}' for path in
+                   (REPO / PACKAGE / 'model').glob('*.py') if path.stem != '__init__')])
 """The model layer: these import only each other."""
 USE_ROBOT = (PACKAGE, f'{PACKAGE}.dh', f'{PACKAGE}.cli.', f'{PACKAGE}.publisher.',
              f'{PACKAGE}.scaffold.',
@@ -73,18 +71,15 @@ USE_ROBOT = (PACKAGE, f'{PACKAGE}.dh', f'{PACKAGE}.cli.', f'{PACKAGE}.publisher.
 """What may import the facade, ``urdfgenpy_ros.robot``, even for types (a module, or a
 package's prefix ending in a dot)."""
 CYCLE_LEFT = {
-    # formats/ reads assemblies and builder functions with modules outside it, which read
-    # through formats/ (the layout puts them in formats/)
-    (f'{PACKAGE}.formats.table', f'{PACKAGE}.assembly_file'),
-    # the findings and the Xacro source map, shared with validation/ (the layout puts them
-    # below it: model/findings, model/codes, formats/xacro_source, formats/xacro_mapped)
-    (f'{PACKAGE}.formats.mjcf.losses', f'{PACKAGE}.validation.findings'),
-    (f'{PACKAGE}.formats.urdf_downgrade', f'{PACKAGE}.validation.findings'),
-    (f'{PACKAGE}.formats.xacro_read', f'{PACKAGE}.validation.xacro_source'),
-    (f'{PACKAGE}.formats.mjcf', f'{PACKAGE}.validation.xacro_source'),
-    # the MJCF writer refuses what MuJoCo refuses with validate(): validation/ reads what
-    # the writers make, so a refusal the writer runs belongs above it or below validation/
-    (f'{PACKAGE}.formats.mjcf', f'{PACKAGE}.validation'),
+    # a format's prepare is a review (validation/'s Review) of what the target refuses, and
+    # the MJCF writer refuses what MuJoCo refuses with validation's checks; validation/
+    # reads what the writers make (pre-flights, --fix's write)
+    (f'{PACKAGE}.formats.mjcf', f'{PACKAGE}.validation.checklist'),
+    (f'{PACKAGE}.formats.mjcf.prepare', f'{PACKAGE}.validation'),
+    (f'{PACKAGE}.formats.mjcf.prepare', f'{PACKAGE}.validation.checklist'),
+    (f'{PACKAGE}.formats.prepare', f'{PACKAGE}.validation.checklist'),
+    (f'{PACKAGE}.formats.prepare', f'{PACKAGE}.validation.sdf_refusals'),
+    (f'{PACKAGE}.formats.table', f'{PACKAGE}.validation.checklist'),
 }
 """The import edges that close a cycle of packages, each still to cut (and why it is there)."""
 
@@ -350,9 +345,9 @@ def test_every_reader_and_copy_builds_a_robot_of_the_class_asked(
     """The readers do not import Robot, yet what they build is one (or the subclass asked)."""
     require_module('xacro')
     from urdfgenpy_ros import Robot
-    from urdfgenpy_ros.builders import robot_from_function
     from urdfgenpy_ros.dh import DHRow, DHTable
     from urdfgenpy_ros.formats import load
+    from urdfgenpy_ros.formats.builders import robot_from_function
     from urdfgenpy_ros.formats.urdf_downgrade import as_version
     from urdfgenpy_ros.model import RobotModel
 

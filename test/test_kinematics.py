@@ -24,7 +24,7 @@ import pytest
 from registry_robots import robot as registry_robot
 
 from urdfgenpy_ros import Robot
-from urdfgenpy_ros.kinematics import JointTransforms, link_poses
+from urdfgenpy_ros.dynamics.kinematics import JointTransforms, link_poses
 
 
 def _matrix(pose):

@@ -66,13 +66,14 @@ def test_only_robot_py_touches_the_robots_own_tables() -> None:
     """
     Links, joints and materials are reached through Robot's methods everywhere else.
 
-    Robot's methods are in robot.py and in model.py, its base RobotModel.
+    Robot's methods are in robot.py and in model/__init__.py, its base RobotModel.
     """
     import ast
     private = {'_links', '_joints', '_materials'}
     found = []
     for path in sorted((REPO / 'urdfgenpy_ros').rglob('*.py')):
-        if path.name in ('robot.py', 'model.py') and path.parent.name == 'urdfgenpy_ros':
+        relative = path.relative_to(REPO / 'urdfgenpy_ros').as_posix()
+        if relative in ('robot.py', 'model/__init__.py'):
             continue
         for node in ast.walk(ast.parse(path.read_text(), str(path))):
             if isinstance(node, ast.Attribute) and node.attr in private:

@@ -33,8 +33,8 @@ import registry_robots
 from urdfgenpy_ros import Inertial, Joint, Link, Origin, Robot
 from urdfgenpy_ros.formats import load
 from urdfgenpy_ros.formats.mjcf import write_mjcf
-from urdfgenpy_ros.geometry import Mesh
-from urdfgenpy_ros.link import Collision, Visual
+from urdfgenpy_ros.model.geometry import Mesh
+from urdfgenpy_ros.model.link import Collision, Visual
 
 BAD_OBJ = """# a SolidWorks-style OBJ: faces name normal 7 of the file's 1
 v 0 0 0
@@ -88,7 +88,7 @@ def test_a_y_up_dae_is_placed_and_coloured_as_rviz_shows_it(tmp_path: Path) -> N
 
 def test_a_dae_colour_wins_over_the_urdf_material_as_in_rviz(tmp_path: Path) -> None:
     require_module('mujoco')
-    from urdfgenpy_ros.material import Material
+    from urdfgenpy_ros.model.material import Material
     mesh_judge.write_y_up_dae(tmp_path / 'part.dae')
     robot = _robot(tmp_path / 'part.dae')
     robot.get_link('part').visuals[0].material = Material('grey', (0.5, 0.5, 0.5, 1.0))

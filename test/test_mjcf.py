@@ -36,8 +36,8 @@ from urdfgenpy_ros import Box, Inertial, Joint, JointLimit, JointMimic, Link, Or
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.formats import load
 from urdfgenpy_ros.formats.mjcf import MjcfRefusedError, write_mjcf
-from urdfgenpy_ros.geometry import Mesh
-from urdfgenpy_ros.link import Visual
+from urdfgenpy_ros.model.geometry import Mesh
+from urdfgenpy_ros.model.link import Visual
 
 EVERYTHING = FIXTURES / 'mjcf' / 'everything.urdf'
 
@@ -315,8 +315,8 @@ def test_a_robot_without_inertial_on_a_moving_link_is_refused() -> None:
 def test_sensors_measure_what_gazebos_would() -> None:
     import mujoco
     import numpy
-    from urdfgenpy_ros.link import Collision
-    from urdfgenpy_ros.sensors import Camera, ForceTorque, Imu, Lidar
+    from urdfgenpy_ros.model.link import Collision
+    from urdfgenpy_ros.model.sensors import Camera, ForceTorque, Imu, Lidar
     robot = Robot('sensing').add_link(Link('base_link', inertial=Inertial.from_box(
         1.0, 0.1, 0.1, 0.1))).add_link(Link('head', inertial=Inertial.from_box(
             1.0, 0.1, 0.1, 0.1))).add_link(Link('wall', collisions=[Collision(Box(0.1, 4, 4))]))
@@ -362,8 +362,8 @@ def test_sensors_measure_what_gazebos_would() -> None:
 
 def test_check_engines_mujoco_says_what_mujocos_import_drops(tmp_path: Path) -> None:
     import mujoco
-    from urdfgenpy_ros.extensions import Extension
-    from urdfgenpy_ros.link import Collision
+    from urdfgenpy_ros.model.extensions import Extension
+    from urdfgenpy_ros.model.link import Collision
     robot = _mimic_pair()
     robot.get_link('leader_link').add_collision(Collision(Box(0.1, 0.02, 0.02)))
     robot.add_extension(Extension.ros2_control('pair', '<joint name="leader">'

@@ -32,8 +32,8 @@ import registry_robots
 
 from urdfgenpy_ros import Robot
 from urdfgenpy_ros.cli import main
-from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.formats.mjcf import MjcfResult, write_mjcf
+from urdfgenpy_ros.model.errors import ModelError
 
 # A two-joint arm: a shoulder that gravity loads, and a 5 g finger (a 1 x 1 x 4 cm box)
 # whose servo steps across its 0-0.8 rad range. ros2_control homes the shoulder at 0.6.

@@ -30,11 +30,11 @@ from helpers import FIXTURES, require_module
 import pytest
 
 from urdfgenpy_ros import Inertial, Joint, Link, Robot
-from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.formats import load
 from urdfgenpy_ros.formats.mjcf import MjcfRefusedError, prepare, write_mjcf
 from urdfgenpy_ros.formats.mjcf import write_prepared
 import urdfgenpy_ros.formats.urdf
+from urdfgenpy_ros.model.errors import ModelError
 
 EVERYTHING = FIXTURES / 'mjcf' / 'everything.urdf'
 

@@ -224,7 +224,7 @@ def test_a_bad_gain_is_refused_in_one_line(tmp_path: Path, option: tuple[str, st
 @pytest.mark.parametrize('gains', [{'kp': -1.0}, {'kv': float('nan')}])
 def test_a_bad_gain_is_refused_by_the_api(gains: dict[str, float]) -> None:
     from urdfgenpy_ros import Inertial, Joint, JointLimit, Link, Robot
-    from urdfgenpy_ros.errors import ModelError
+    from urdfgenpy_ros.model.errors import ModelError
     robot = Robot('arm').add_link(Link('base_link')).add_link(
         Link('a', inertial=Inertial.from_box(1.0, 0.1, 0.1, 0.1)))
     robot.add_joint(Joint('j1', 'revolute', 'base_link', 'a', axis=(0, 0, 1),

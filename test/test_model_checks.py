@@ -32,12 +32,12 @@ from typing import Any, Callable
 from helpers import load_yourdfpy
 import pytest
 
-from urdfgenpy_ros import (
-    Box, checks, Collision, Inertial, Joint, JointLimit, Link, Mesh, ModelError, Origin, Robot,
-    Sphere, Visual)
-from urdfgenpy_ros.errors import ModelTypeError
-from urdfgenpy_ros.extensions import Extension
-from urdfgenpy_ros.sensors import Imu
+from urdfgenpy_ros import (Box, Collision, Inertial, Joint, JointLimit, Link, Mesh, ModelError,
+                           Origin, Robot, Sphere, Visual)
+from urdfgenpy_ros.model import checks
+from urdfgenpy_ros.model.errors import ModelTypeError
+from urdfgenpy_ros.model.extensions import Extension
+from urdfgenpy_ros.model.sensors import Imu
 
 NAN, INF = float('nan'), float('inf')
 TYPES = 'revolute, continuous, prismatic, fixed, floating, planar'

@@ -152,7 +152,7 @@ def test_meshes_are_drawn(tmp_path: Path) -> None:
 
 def test_views_and_unknown_joint(ptu: RobotType) -> None:
     _require_renderer()
-    from urdfgenpy_ros.errors import UrdfgenpyError
+    from urdfgenpy_ros.model.errors import UrdfgenpyError
     from urdfgenpy_ros.viewer.render import render
     with pytest.raises(UrdfgenpyError, match="joint 'elbow': not a movable joint"):
         render(ptu, {'elbow': 1.0})

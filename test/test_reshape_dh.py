@@ -34,8 +34,8 @@ import pytest
 from urdfgenpy_ros import JointMimic, ModelError, Origin, Robot
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.dh import DHTable
-from urdfgenpy_ros.joint import Joint, JointLimit
-from urdfgenpy_ros.link import Link
+from urdfgenpy_ros.model.joint import Joint, JointLimit
+from urdfgenpy_ros.model.link import Link
 
 CONVENTIONS = ('standard', 'modified')
 

@@ -32,7 +32,7 @@ from registry_robots import robot as registry_robot
 
 from urdfgenpy_ros import ModelError, Robot
 from urdfgenpy_ros.cli import main
-from urdfgenpy_ros.lumping import lumps
+from urdfgenpy_ros.reshape.lumping import lumps
 
 ROBOTS = ['upkie.urdf', 'icub.urdf', 'so101.urdf', 'kinova_robotiq.urdf', 'panda.urdf',
           'cookie.urdf']

@@ -34,7 +34,7 @@ from test_reshape_dh import example_robot
 from urdfgenpy_ros import (
     Box, Extension, Joint, JointLimit, JointMimic, Link, ModelError, Origin, Robot, Visual)
 from urdfgenpy_ros.cli import main
-from urdfgenpy_ros.inertial import Inertial
+from urdfgenpy_ros.model.inertial import Inertial
 from urdfgenpy_ros.reshape.mirror import mirror_subtree
 
 LIMBS = {  # file, first link of the limb, renaming

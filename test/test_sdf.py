@@ -28,9 +28,9 @@ from registry_robots import absolute_meshes, robot as registry_robot
 
 from urdfgenpy_ros import Origin, Robot
 from urdfgenpy_ros.examples import pan_tilt_unit
+from urdfgenpy_ros.model.sensors import Camera, ForceTorque, Imu, Lidar
 from urdfgenpy_ros.plugins import diff_drive, gz_ros2_control, joint_state_publisher
 from urdfgenpy_ros.plugins import ros2_control
-from urdfgenpy_ros.sensors import Camera, ForceTorque, Imu, Lidar
 
 pytestmark = pytest.mark.engine  # libsdformat's checker, MuJoCo and PyBullet
 

@@ -25,7 +25,7 @@ from lxml import etree
 import pytest
 
 from urdfgenpy_ros import Robot
-from urdfgenpy_ros.errors import ModelError
+from urdfgenpy_ros.model.errors import ModelError
 
 FIXTURES = Path(__file__).parent / 'fixtures' / 'sdf'
 

@@ -32,8 +32,8 @@ from helpers import build_sdf_checker, check_urdf, require_module, urdfdom6_tool
 from helpers import xacro_expand
 import pytest
 from urdfgenpy_ros import Capsule, Inertial, Origin, Robot
-from urdfgenpy_ros.errors import ParseError, Severity
-from urdfgenpy_ros.transforms import from_xyz_rpy
+from urdfgenpy_ros.model.errors import ParseError, Severity
+from urdfgenpy_ros.model.transforms import from_xyz_rpy
 
 hypothesis = require_module('hypothesis')  # its decorators are needed at import time
 st = require_module('hypothesis.strategies')

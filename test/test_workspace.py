@@ -201,8 +201,8 @@ def test_relative_file_uris_resolve_beside_the_file_with_a_warning() -> None:
 def sensor_robot() -> Robot:
     """Return the pan-tilt unit with a camera, a lidar, an IMU and a force-torque sensor."""
     from urdfgenpy_ros.examples import pan_tilt_unit
-    from urdfgenpy_ros.geometry import Origin
-    from urdfgenpy_ros.sensors import Camera, ForceTorque, Imu, Lidar
+    from urdfgenpy_ros.model.geometry import Origin
+    from urdfgenpy_ros.model.sensors import Camera, ForceTorque, Imu, Lidar
     robot = pan_tilt_unit()
     robot.get_link('tilt_link').add_sensor(Camera('head_cam', origin=Origin(xyz=(0.05, 0, 0))))
     robot.get_link('base_plate').add_sensor(Lidar('scan', topic='laser/scan'))

@@ -21,16 +21,16 @@ Build, read, check and publish robot descriptions for ROS 2.
 
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import (
+from urdfgenpy_ros.model.errors import (
     ModelError, ParseError, Severity, SourceLocation, UrdfgenpyError, ValidationError)
-from urdfgenpy_ros.extensions import Extension
-from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Geometry, Mesh, Origin, Sphere
-from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.joint import (
+from urdfgenpy_ros.model.extensions import Extension
+from urdfgenpy_ros.model.geometry import Box, Capsule, Cylinder, Geometry, Mesh, Origin, Sphere
+from urdfgenpy_ros.model.inertial import Inertial
+from urdfgenpy_ros.model.joint import (
     Joint, JointCalibration, JointDynamics, JointLimit, JointMimic, JointType,
     SafetyController)
-from urdfgenpy_ros.link import Collision, Link, Visual
-from urdfgenpy_ros.material import Material
+from urdfgenpy_ros.model.link import Collision, Link, Visual
+from urdfgenpy_ros.model.material import Material
 from urdfgenpy_ros.robot import Robot
 
 if TYPE_CHECKING:  # imported on first use (see __getattr__): the checks are not needed to start

@@ -33,10 +33,10 @@ from dataclasses import dataclass, field, KW_ONLY
 from os import PathLike
 from typing import cast, TYPE_CHECKING
 
-from urdfgenpy_ros.dh_row import DHConvention, DHRow
-from urdfgenpy_ros.dh_skeleton import skeleton
-from urdfgenpy_ros.geometry import Origin
-from urdfgenpy_ros.transforms import (
+from urdfgenpy_ros.model.dh_row import DHConvention, DHRow
+from urdfgenpy_ros.model.dh_skeleton import skeleton
+from urdfgenpy_ros.model.geometry import Origin
+from urdfgenpy_ros.model.transforms import (
     from_xyz_rpy, Matrix4, multiply, rotation_x, rotation_z, translation)
 
 if TYPE_CHECKING:

@@ -16,11 +16,11 @@
 
 from __future__ import annotations
 
-from urdfgenpy_ros.geometry import Box, Cylinder, Origin
-from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.joint import Joint, JointLimit
-from urdfgenpy_ros.link import Collision, Link, Visual
-from urdfgenpy_ros.material import Material
+from urdfgenpy_ros.model.geometry import Box, Cylinder, Origin
+from urdfgenpy_ros.model.inertial import Inertial
+from urdfgenpy_ros.model.joint import Joint, JointLimit
+from urdfgenpy_ros.model.link import Collision, Link, Visual
+from urdfgenpy_ros.model.material import Material
 from urdfgenpy_ros.robot import Robot
 
 

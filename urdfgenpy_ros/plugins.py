@@ -20,9 +20,9 @@ from collections.abc import Iterable, Mapping
 from typing import TYPE_CHECKING
 from xml.sax.saxutils import escape, quoteattr
 
-from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._xml import fmt
-from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.model.extensions import Extension
+from urdfgenpy_ros.model.joint import JointType
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

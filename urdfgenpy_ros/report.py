@@ -20,7 +20,7 @@ the operating system refusing one of their files, a front end's usage errors suc
 click's) is something the user can fix: it is shown as one line, ``prog: file:line:
 element: message (fix)``, and the program exits with its documented status (2; the node
 1). Anything else is a bug in this package and keeps its traceback. The library says a
-fix in its own words, declared as data (:class:`~urdfgenpy_ros.errors.Fix`); each front
+fix in its own words, declared as data (:class:`~urdfgenpy_ros.model.errors.Fix`); each front
 end words it with its own option (``-p/--package-path``, the node's parameter).
 """
 
@@ -31,7 +31,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 import sys
 
-from urdfgenpy_ros.errors import Fix, FIXES, InputError, UrdfgenpyError
+from urdfgenpy_ros.model.errors import Fix, FIXES, InputError, UrdfgenpyError
 
 EXIT_KNOWN_ERROR = 2
 """Exit status of the command-line tools for a user's mistake (the node exits 1)."""

@@ -24,7 +24,7 @@ import posixpath
 from typing import TYPE_CHECKING
 from urllib.parse import unquote, urlparse
 
-from urdfgenpy_ros.errors import PACKAGE_FOLDER, UrdfgenpyError
+from urdfgenpy_ros.model.errors import PACKAGE_FOLDER, UrdfgenpyError
 from urdfgenpy_ros.package_search import package_name, search
 
 if TYPE_CHECKING:
@@ -202,8 +202,8 @@ def rebase_meshes(robot: RobotModel, source_folder: Path, target_folder: Path) -
     They were relative to ``source_folder`` (the file it was read from); they become
     relative to ``target_folder``. ``package://`` URIs and absolute paths stay.
     """
-    from urdfgenpy_ros.geometry import Mesh
-    from urdfgenpy_ros.link import Shape
+    from urdfgenpy_ros.model.geometry import Mesh
+    from urdfgenpy_ros.model.link import Shape
     if source_folder.resolve() == target_folder.resolve():
         return
     for link in robot.links:

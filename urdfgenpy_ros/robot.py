@@ -21,13 +21,13 @@ from os import PathLike
 from pathlib import Path
 from typing import Any, cast
 
-from urdfgenpy_ros import checks
-from urdfgenpy_ros.errors import ModelError, ValidationError
 from urdfgenpy_ros.formats.table import save, write_as
-from urdfgenpy_ros.geometry import Origin
-from urdfgenpy_ros.joint import Joint
-from urdfgenpy_ros.link import Link
+from urdfgenpy_ros.model import checks
 from urdfgenpy_ros.model import RobotModel, set_robot_class
+from urdfgenpy_ros.model.errors import ModelError, ValidationError
+from urdfgenpy_ros.model.geometry import Origin
+from urdfgenpy_ros.model.joint import Joint
+from urdfgenpy_ros.model.link import Link
 
 
 class Robot(RobotModel):
@@ -41,11 +41,11 @@ class Robot(RobotModel):
     ``dynamics``, ``tree``).
     """
 
-    # ---- renaming (references in blocks and mimics follow: urdfgenpy_ros.assembly) ----
+    # ---- renaming (references in blocks and mimics follow: urdfgenpy_ros.reshape.assembly) ----
 
     def rename_link(self, old: str, new: str) -> Link:
         """Rename a link and every joint end and reference that names it."""
-        from urdfgenpy_ros.assembly import rename
+        from urdfgenpy_ros.reshape.assembly import rename
         link = self.get_link(old)
         if new in self._links and new != old:
             raise ModelError(f'cannot rename link {old!r} to {new!r}: that name is taken')
@@ -54,7 +54,7 @@ class Robot(RobotModel):
 
     def rename_joint(self, old: str, new: str) -> Joint:
         """Rename a joint and every mimic and reference that names it."""
-        from urdfgenpy_ros.assembly import rename
+        from urdfgenpy_ros.reshape.assembly import rename
         joint = self.get_joint(old)
         if new in self._joints and new != old:
             raise ModelError(f'cannot rename joint {old!r} to {new!r}: that name is taken')
@@ -183,7 +183,7 @@ class Robot(RobotModel):
         names (and sensors' relative topics) get the prefix too. Robot-level materials keep
         their names unless ``materials`` is true.
         """
-        from urdfgenpy_ros.assembly import prefixed
+        from urdfgenpy_ros.reshape.assembly import prefixed
         return prefixed(self, prefix, materials=materials)
 
     def attach(self, part: Robot, at: str, origin: Origin | None = None, prefix: str = '',
@@ -198,7 +198,7 @@ class Robot(RobotModel):
         Materials that equal one of this robot's are shared; same-named ones of another
         colour are renamed with the prefix. ``part`` itself is not changed.
         """
-        from urdfgenpy_ros.assembly import attach
+        from urdfgenpy_ros.reshape.assembly import attach
         return attach(self, part, at, origin, prefix, joint_name, joint_type, **joint_options)
 
     @classmethod
@@ -211,8 +211,8 @@ class Robot(RobotModel):
 
         :raises ParseError: one line with the file, line, key and the fix.
         """
-        from urdfgenpy_ros.assembly_file import read_assembly
         from urdfgenpy_ros.formats import load
+        from urdfgenpy_ros.formats.assembly_file import read_assembly
         return cast(Robot, read_assembly(path, search_paths, load=load))  # robot_class()
 
     # ---- reshaping -----------------------------------------------------------------

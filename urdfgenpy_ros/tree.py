@@ -25,9 +25,9 @@ from typing import TextIO, TYPE_CHECKING
 from urdfgenpy_ros.report import counted
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.joint import Joint
-    from urdfgenpy_ros.link import Link
     from urdfgenpy_ros.model import RobotModel
+    from urdfgenpy_ros.model.joint import Joint
+    from urdfgenpy_ros.model.link import Link
 
 _COLOURS = {'robot': '1', 'link': '1;32', 'joint': '0', 'fixed': '90', 'revolute': '36',
             'continuous': '34', 'prismatic': '35', 'floating': '31', 'planar': '31',

@@ -22,8 +22,8 @@ from typing import Any, cast
 
 import click
 
-from urdfgenpy_ros.errors import InputError
 from urdfgenpy_ros.formats.open import open_description, parse_args
+from urdfgenpy_ros.model.errors import InputError
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.suppressions import parse_codes
 

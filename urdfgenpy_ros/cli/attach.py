@@ -24,9 +24,9 @@ import re
 import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot
-from urdfgenpy_ros.errors import ModelError, UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
-from urdfgenpy_ros.geometry import Origin
+from urdfgenpy_ros.model.errors import ModelError, UrdfgenpyError
+from urdfgenpy_ros.model.geometry import Origin
 from urdfgenpy_ros.resources import rebase_meshes
 
 

@@ -23,7 +23,6 @@ from typing import Any, cast, Sequence
 
 import click
 
-from urdfgenpy_ros.assembly_file import is_assembly
 from urdfgenpy_ros.cli._options import ignore_option, input_options
 from urdfgenpy_ros.cli._options import parse_mappings
 from urdfgenpy_ros.cli.check_reports import FileReport, json_report, junit_report
@@ -31,16 +30,17 @@ from urdfgenpy_ros.cli.check_reports import sarif_report
 from urdfgenpy_ros.cli.check_xacro import fix_xacro
 from urdfgenpy_ros.cli.inputs import description_files
 from urdfgenpy_ros.cli.words import CLI_WORDS
-from urdfgenpy_ros.errors import ModelError, Severity, ValidationError
 from urdfgenpy_ros.formats import DH_SUFFIXES, find_format, load
+from urdfgenpy_ros.formats.assembly_file import is_assembly
+from urdfgenpy_ros.formats.xacro_source import EXPANDED
+from urdfgenpy_ros.model.errors import ModelError, Severity, ValidationError
+from urdfgenpy_ros.model.urdf_versions import DEFAULT_TARGET, TARGETS
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
-from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET, TARGETS
 from urdfgenpy_ros.validation.checklist import Review, review, ReviewOptions
 from urdfgenpy_ros.validation.fix import LIMIT_FIELDS, Repair
 from urdfgenpy_ros.validation.preflight import ENGINES
 from urdfgenpy_ros.validation.rewrite import replace_file
-from urdfgenpy_ros.validation.xacro_source import EXPANDED
 
 
 @dataclass(frozen=True)

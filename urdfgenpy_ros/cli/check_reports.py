@@ -21,11 +21,11 @@ import os
 from pathlib import Path
 from urllib.parse import quote
 
-from urdfgenpy_ros.errors import Severity, ValidationError
+from urdfgenpy_ros.formats.xacro_source import EXPANDED
+from urdfgenpy_ros.model.codes import CODES, PREFLIGHT_HINTS
+from urdfgenpy_ros.model.errors import Severity, ValidationError
 from urdfgenpy_ros.validation.checklist import Suppressed
-from urdfgenpy_ros.validation.codes import CODES, PREFLIGHT_HINTS
 from urdfgenpy_ros.validation.fix import Repair
-from urdfgenpy_ros.validation.xacro_source import EXPANDED
 
 SARIF_SCHEMA = 'https://json.schemastore.org/sarif-2.1.0.json'
 _LEVEL = {Severity.ERROR: 'error', Severity.WARNING: 'warning'}

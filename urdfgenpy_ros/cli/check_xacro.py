@@ -24,15 +24,15 @@ from pathlib import Path
 import click
 
 from urdfgenpy_ros.cli.check_reports import FileReport
-from urdfgenpy_ros.errors import ParseError
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
 from urdfgenpy_ros.formats.xacro_map import XacroMap
+from urdfgenpy_ros.formats.xacro_mapped import shown
 from urdfgenpy_ros.formats.xacro_read import expand_xacro
+from urdfgenpy_ros.model.errors import ParseError
 from urdfgenpy_ros.resources import PackageResolver
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.checklist import Review
 from urdfgenpy_ros.validation.xacro_fix import apply_fix, edited, plan_fix, XacroEdit
-from urdfgenpy_ros.validation.xacro_mapped import shown
 
 
 def fix_xacro(path: Path, robot: Robot, found: Review, mappings: Mapping[str, str],

@@ -30,8 +30,8 @@ import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot
 from urdfgenpy_ros.collision.methods import METHODS, Options
-from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 from urdfgenpy_ros.resources import rebase_meshes
 from urdfgenpy_ros.robot import Robot
 

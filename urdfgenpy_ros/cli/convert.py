@@ -31,9 +31,9 @@ from urdfgenpy_ros.cli._options import input_options, read_robot, say_read_warni
 from urdfgenpy_ros.cli.convert_rows import ConvertRun, refuse_misplaced, row_options
 from urdfgenpy_ros.cli.convert_rows import write_step
 from urdfgenpy_ros.cli.words import CLI_WORDS
-from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats.prepare import tree_review
 from urdfgenpy_ros.formats.table import Format, writer_for
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.checklist import Review
 from urdfgenpy_ros.validation.fix_output import DEFAULT_RADIUS, fix_for_output

@@ -30,9 +30,9 @@ import click
 from urdfgenpy_ros.cli.check_reports import FileReport, json_report, sarif_report
 from urdfgenpy_ros.cli.collision import mjcf_collisions
 from urdfgenpy_ros.cli.convert_rows import ConvertRun
-from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats.mjcf import MjcfRefusedError, write_mjcf
 from urdfgenpy_ros.formats.table import writer_for
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 from urdfgenpy_ros.robot import Robot
 
 

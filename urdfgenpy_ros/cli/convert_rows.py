@@ -32,9 +32,9 @@ from typing import Any
 
 import click
 
-from urdfgenpy_ros.errors import ModelError, UrdfgenpyError
 from urdfgenpy_ros.formats.options import Option
 from urdfgenpy_ros.formats.table import Format, FORMATS, save
+from urdfgenpy_ros.model.errors import ModelError, UrdfgenpyError
 from urdfgenpy_ros.report import counted
 from urdfgenpy_ros.resources import rebase_meshes
 from urdfgenpy_ros.robot import Robot

@@ -23,7 +23,7 @@ import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot
 from urdfgenpy_ros.dh import DHTable
-from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 
 
 @click.command()

@@ -21,11 +21,11 @@ import warnings
 
 import click
 
-from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats.urdf import UrdfWriter
-from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.link import Link
-from urdfgenpy_ros.mesh_inertia import ScaleWarning
+from urdfgenpy_ros.model.errors import UrdfgenpyError
+from urdfgenpy_ros.model.inertial import Inertial
+from urdfgenpy_ros.model.link import Link
+from urdfgenpy_ros.model.mesh_inertia import ScaleWarning
 from urdfgenpy_ros.robot import Robot
 
 

@@ -21,7 +21,7 @@ from pathlib import Path
 
 import click
 
-from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 
 DESCRIPTION_SUFFIXES = ('.urdf', '.xacro')
 """What a folder given to ``check`` is searched for (``.urdf.xacro`` included)."""

@@ -23,8 +23,8 @@ import warnings
 import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot
-from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats import format_of
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 from urdfgenpy_ros.reshape.mirror import mirror_subtree, PLANES
 from urdfgenpy_ros.resources import rebase_meshes
 

@@ -24,7 +24,7 @@ import tempfile
 import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot
-from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 from urdfgenpy_ros.moveit.collision_matrix import Reason
 from urdfgenpy_ros.moveit.srdf import Srdf, VIRTUAL_JOINTS, write_srdf
 from urdfgenpy_ros.moveit.srdf_update import update_srdf

@@ -40,15 +40,15 @@ from urdfgenpy_ros.collision.methods import METHODS, Options
 from urdfgenpy_ros.collision.parts import Part
 from urdfgenpy_ros.collision.primitives import split_capsule
 from urdfgenpy_ros.collision.simplify import Simplified, simplify
-from urdfgenpy_ros.errors import ModelError, SourceLocation
-from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Geometry, Mesh, Origin, Sphere
-from urdfgenpy_ros.link import Collision
-from urdfgenpy_ros.transforms import to_xyz_rpy
-from urdfgenpy_ros.urdf_versions import parse_version
+from urdfgenpy_ros.model.errors import ModelError, SourceLocation
+from urdfgenpy_ros.model.geometry import Box, Capsule, Cylinder, Geometry, Mesh, Origin, Sphere
+from urdfgenpy_ros.model.link import Collision
+from urdfgenpy_ros.model.transforms import to_xyz_rpy
+from urdfgenpy_ros.model.urdf_versions import parse_version
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.inertial import Inertial
     from urdfgenpy_ros.model import RobotModel
+    from urdfgenpy_ros.model.inertial import Inertial
 
 
 @dataclass

@@ -28,7 +28,7 @@ from pathlib import Path
 
 from urdfgenpy_ros.collision.measure import Measures
 from urdfgenpy_ros.collision.methods import DEFAULT_MIN_IOU
-from urdfgenpy_ros.errors import ModelError, Severity, SourceLocation, ValidationError
+from urdfgenpy_ros.model.errors import ModelError, Severity, SourceLocation, ValidationError
 
 HINTS = {
     'K911': 'a lighter collision loses shape; pick another method if this is too much',

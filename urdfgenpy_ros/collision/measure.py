@@ -31,10 +31,10 @@ from typing import Any, TYPE_CHECKING
 
 from urdfgenpy_ros.collision.parts import Part
 from urdfgenpy_ros.collision.solids import parts_manifold, sampled, solid_manifold
-from urdfgenpy_ros.errors import ModelError
+from urdfgenpy_ros.model.errors import ModelError
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.inertial import Inertial
+    from urdfgenpy_ros.model.inertial import Inertial
 
 _FROM_COLLISION = 0.01  # a link tensor this close to the mesh's came from it
 

@@ -28,7 +28,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from urdfgenpy_ros.collision.parts import mesh_part, Part
-from urdfgenpy_ros.errors import MissingDependencyError
+from urdfgenpy_ros.model.errors import MissingDependencyError
 
 METHODS = ('hull', 'decompose', 'primitive', 'decimate', 'auto')
 LIGHTEST_FIRST = ('primitive', 'hull', 'decompose', 'decimate')

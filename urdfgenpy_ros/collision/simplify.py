@@ -32,10 +32,10 @@ from urdfgenpy_ros.collision import cache
 from urdfgenpy_ros.collision.measure import closed_solid, measure, Measures
 from urdfgenpy_ros.collision.methods import DEFAULT_MIN_IOU, LIGHTEST_FIRST, Options, RUN
 from urdfgenpy_ros.collision.parts import Part
-from urdfgenpy_ros.errors import ModelError
+from urdfgenpy_ros.model.errors import ModelError
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.inertial import Inertial
+    from urdfgenpy_ros.model.inertial import Inertial
 
 
 @dataclass(frozen=True)

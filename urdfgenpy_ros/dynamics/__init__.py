@@ -31,13 +31,13 @@ import weakref
 
 import numpy
 
-from urdfgenpy_ros import edits
 from urdfgenpy_ros.dynamics.accelerated import accelerated as _accelerated
 from urdfgenpy_ros.dynamics.forward import jacobian as _jacobian, link_matrices
 from urdfgenpy_ros.dynamics.forward import LinkPoses
 from urdfgenpy_ros.dynamics.gravity import gravity_torques as _gravity, gravity_vector
 from urdfgenpy_ros.dynamics.gravity import mass_model
 from urdfgenpy_ros.dynamics.model import ChainModel, compile_robot, fingerprint, positions
+from urdfgenpy_ros.model import edits
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -29,7 +29,7 @@ import math
 import numpy
 
 from urdfgenpy_ros.dynamics.model import ChainModel, PRISMATIC, REVOLUTE
-from urdfgenpy_ros.errors import ModelError
+from urdfgenpy_ros.model.errors import ModelError
 
 
 class _Turns:

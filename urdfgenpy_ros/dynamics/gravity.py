@@ -33,7 +33,7 @@ import numpy
 
 from urdfgenpy_ros.dynamics.forward import link_frames
 from urdfgenpy_ros.dynamics.model import ChainModel, REVOLUTE
-from urdfgenpy_ros.errors import ModelError
+from urdfgenpy_ros.model.errors import ModelError
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

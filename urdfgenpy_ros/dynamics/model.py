@@ -33,8 +33,8 @@ from typing import Any, TYPE_CHECKING
 import numpy
 
 from urdfgenpy_ros.caller import warn_caller
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.joint import Joint, JointType
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.joint import Joint, JointType
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -44,7 +44,7 @@ from urdfgenpy_ros.dynamics.forward import link_frames
 from urdfgenpy_ros.dynamics.gravity import MassModel
 from urdfgenpy_ros.dynamics.model import ChainModel, PRISMATIC, REVOLUTE
 from urdfgenpy_ros.dynamics.rigid import along, RigidTorque
-from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.model.joint import JointType
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

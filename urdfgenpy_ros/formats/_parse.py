@@ -29,7 +29,7 @@ from typing import Any
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import ParseError, ReadWarning, SourceLocation
+from urdfgenpy_ros.model.errors import ParseError, ReadWarning, SourceLocation
 
 PARSER = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
                          huge_tree=False, collect_ids=False)

@@ -25,8 +25,8 @@ from typing import Any
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.floats import fmt, fmt_vec
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.floats import fmt, fmt_vec
 
 __all__ = ['esc', 'escape_text', 'fmt', 'fmt_vec', 'fragment', 'INDENT', 'tag_end',
            'without_declared', 'write_text', 'xml_bytes']

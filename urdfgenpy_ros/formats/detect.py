@@ -34,7 +34,7 @@ from pathlib import Path
 import re
 from typing import Any, NamedTuple
 
-from urdfgenpy_ros.errors import ParseError, ReadWarning, SourceLocation
+from urdfgenpy_ros.model.errors import ParseError, ReadWarning, SourceLocation
 
 XACRO_NAMESPACES = frozenset((
     'http://www.ros.org/wiki/xacro', 'http://ros.org/wiki/xacro', 'http://wiki.ros.org/xacro',

@@ -30,10 +30,11 @@ from os import PathLike
 from pathlib import Path
 from typing import Any, TypeVar
 
-from urdfgenpy_ros.dh_row import DHConvention, DHRow
-from urdfgenpy_ros.dh_skeleton import Table
-from urdfgenpy_ros.errors import MissingDependencyError, ModelError, ParseError, SourceLocation
-from urdfgenpy_ros.geometry import Origin
+from urdfgenpy_ros.model.dh_row import DHConvention, DHRow
+from urdfgenpy_ros.model.dh_skeleton import Table
+from urdfgenpy_ros.model.errors import (MissingDependencyError, ModelError, ParseError,
+                                        SourceLocation)
+from urdfgenpy_ros.model.geometry import Origin
 
 Built = TypeVar('Built')
 """What ``cls`` builds: a ``dh.DHTable`` or a ``dh_skeleton.TableRows``."""

@@ -17,7 +17,7 @@ The one front door: a robot from what a user names, for every front end.
 
 A file in a format the table reads (Xacro with its ``name:=value`` arguments, DH tables,
 assembly files) or a ``package.module:function`` builder. Its refusals are
-:class:`~urdfgenpy_ros.errors.InputError`: the input at fault is data, which each front
+:class:`~urdfgenpy_ros.model.errors.InputError`: the input at fault is data, which each front
 end says in its own words (``--from``, the node's ``model`` parameter).
 """
 
@@ -28,8 +28,8 @@ from os import PathLike
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.errors import InputError, UrdfgenpyError
 from urdfgenpy_ros.formats.table import find_format, load
+from urdfgenpy_ros.model.errors import InputError, UrdfgenpyError
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel
@@ -75,7 +75,7 @@ def open_description(source: str | PathLike[str], args: Arguments = (),
                              '.xacro, DH table or assembly file', str(source))
         return load(path, parse_args(args), package_paths)  # refuses what no row reads
     if ':' in source and '/' not in source:
-        from urdfgenpy_ros.builders import robot_from_function
+        from urdfgenpy_ros.formats.builders import robot_from_function
         try:
             return robot_from_function(source)
         except UrdfgenpyError as error:

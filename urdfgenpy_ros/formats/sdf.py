@@ -34,20 +34,20 @@ from typing import Any, TYPE_CHECKING
 from lxml import etree
 
 from urdfgenpy_ros.caller import warn_caller
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import robot_name, write_text
 from urdfgenpy_ros.formats.sdf_frames import merge_for_sdf, Merged
 from urdfgenpy_ros.formats.sdf_gazebo import (
     apply_blocks, apply_shape_blocks, gazebo_losses, script_notes)
 from urdfgenpy_ros.formats.sdf_mimic import Follow, follows, mimic_notes, MIMIC_VERSION
 from urdfgenpy_ros.formats.sdf_mimic import sdf_version
-from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Geometry, Mesh, Origin, Sphere
-from urdfgenpy_ros.joint import Joint, JointType
-from urdfgenpy_ros.link import Link, Visual
-from urdfgenpy_ros.lumping import WORLD
-from urdfgenpy_ros.material import Material
-from urdfgenpy_ros.sensors import Camera, ForceTorque, Lidar, Sensor
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.floats import fmt, fmt_vec
+from urdfgenpy_ros.model.geometry import Box, Capsule, Cylinder, Geometry, Mesh, Origin, Sphere
+from urdfgenpy_ros.model.joint import Joint, JointType
+from urdfgenpy_ros.model.link import Link, Visual
+from urdfgenpy_ros.model.material import Material
+from urdfgenpy_ros.model.sensors import Camera, ForceTorque, Lidar, Sensor
+from urdfgenpy_ros.reshape.lumping import WORLD
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -29,15 +29,15 @@ import copy
 from typing import NamedTuple, TYPE_CHECKING
 
 from urdfgenpy_ros.formats.sdf_mass import mass_only
-from urdfgenpy_ros.geometry import Origin
-from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.joint import Joint
-from urdfgenpy_ros.lumping import lumps, move_contents
-from urdfgenpy_ros.transforms import from_xyz_rpy, multiply, to_xyz_rpy
+from urdfgenpy_ros.model.geometry import Origin
+from urdfgenpy_ros.model.inertial import Inertial
+from urdfgenpy_ros.model.joint import Joint
+from urdfgenpy_ros.model.transforms import from_xyz_rpy, multiply, to_xyz_rpy
+from urdfgenpy_ros.reshape.lumping import lumps, move_contents
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.link import Link
     from urdfgenpy_ros.model import RobotModel
+    from urdfgenpy_ros.model.link import Link
 
 
 class Merged(NamedTuple):

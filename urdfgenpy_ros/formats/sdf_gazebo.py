@@ -32,13 +32,13 @@ from typing import Any, NamedTuple, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import ModelError, SourceLocation
-from urdfgenpy_ros.floats import fmt
+from urdfgenpy_ros.model.errors import ModelError, SourceLocation
+from urdfgenpy_ros.model.floats import fmt
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.extensions import Extension
-    from urdfgenpy_ros.link import Link
     from urdfgenpy_ros.model import RobotModel
+    from urdfgenpy_ros.model.extensions import Extension
+    from urdfgenpy_ros.model.link import Link
 
 _TRUE = ('true', 'yes', '1')
 MATERIAL_SCRIPTS = 'file://media/materials/scripts/gazebo.material'

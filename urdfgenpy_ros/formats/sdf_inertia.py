@@ -25,8 +25,8 @@ from __future__ import annotations
 
 import sys
 
-from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.transforms import symmetric_eigenvalues
+from urdfgenpy_ros.model.inertial import Inertial
+from urdfgenpy_ros.model.transforms import symmetric_eigenvalues
 
 _TOLERANCE = 10.0  # gz-math's IGN_MASSMATRIX3_DEFAULT_TOLERANCE
 

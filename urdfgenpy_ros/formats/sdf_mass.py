@@ -25,12 +25,12 @@ from __future__ import annotations
 
 from typing import Any, NamedTuple, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import SourceLocation
-from urdfgenpy_ros.geometry import Origin
+from urdfgenpy_ros.model.errors import SourceLocation
+from urdfgenpy_ros.model.geometry import Origin
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.link import Link
     from urdfgenpy_ros.model import RobotModel
+    from urdfgenpy_ros.model.link import Link
 
 
 class MassOnly(NamedTuple):

@@ -27,8 +27,8 @@ from __future__ import annotations
 
 from typing import NamedTuple, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.joint import JointType
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -33,10 +33,10 @@ from os import PathLike
 from pathlib import Path
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import ModelError
 from urdfgenpy_ros.formats import writer_options
 from urdfgenpy_ros.formats.options import keywords, Option
 from urdfgenpy_ros.formats.prepare import prepare_mjcf, prepare_sdf
+from urdfgenpy_ros.model.errors import ModelError
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel
@@ -93,7 +93,7 @@ def _read_urdf(path: Path, mappings: Mapping[str, str], search_paths: Iterable[P
     data = path.read_bytes()
     evidence = xacro_evidence_in(data, str(path))
     if evidence is None:
-        from urdfgenpy_ros.errors import ParseError
+        from urdfgenpy_ros.model.errors import ParseError
         try:
             return read_urdf_bytes(data, str(path))
         except ParseError as error:  # a file of materials only, included by robots
@@ -104,7 +104,7 @@ def _read_urdf(path: Path, mappings: Mapping[str, str], search_paths: Iterable[P
         robot = read_urdf_bytes(data, str(path))
         robot.read_warnings.insert(0, weak_evidence_warning(evidence))
         return robot
-    from urdfgenpy_ros.errors import ReadWarning
+    from urdfgenpy_ros.model.errors import ReadWarning
     robot = _read_xacro(path, mappings, search_paths)
     given = ' '.join(f'{name}:={value}' for name, value in mappings.items())
     robot.read_warnings.insert(0, ReadWarning(evidence.location, 'X101', (
@@ -122,17 +122,17 @@ def _read_xacro(path: Path, mappings: Mapping[str, str], search_paths: Iterable[
 
 def _read_assembly(path: Path, mappings: Mapping[str, str],
                    search_paths: Iterable[PathArg]) -> RobotModel:
-    from urdfgenpy_ros.assembly_file import read_assembly
+    from urdfgenpy_ros.formats.assembly_file import read_assembly
     return read_assembly(path, list(search_paths), load=load)  # parts: any format
 
 
 def _read_table(path: Path, mappings: Mapping[str, str], search_paths: Iterable[PathArg]
                 ) -> RobotModel:
-    from urdfgenpy_ros.assembly_file import is_assembly
+    from urdfgenpy_ros.formats.assembly_file import is_assembly
     if is_assembly(path):  # a YAML file with a top-level parts:
         return _read_assembly(path, mappings, search_paths)
-    from urdfgenpy_ros.dh_skeleton import skeleton, TableRows
     from urdfgenpy_ros.formats.dh_table import read_table
+    from urdfgenpy_ros.model.dh_skeleton import skeleton, TableRows
     return skeleton(read_table(path, TableRows), path.name.split('.')[0])
 
 

@@ -32,8 +32,6 @@ from os import PathLike
 import re
 from typing import Any, Callable, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._xml import fragment, robot_name, write_text, xml_bytes
 from urdfgenpy_ros.formats.sdf import sensor_element
 from urdfgenpy_ros.formats.urdf_edits import block_edited, is_as_read, owners_of_blocks
@@ -41,12 +39,14 @@ from urdfgenpy_ros.formats.urdf_element import ElementWriter
 from urdfgenpy_ros.formats.urdf_fresh import write_new_robot
 from urdfgenpy_ros.formats.urdf_schema import MATERIAL, OF_CLASS
 from urdfgenpy_ros.formats.urdf_splice import in_quotes, prefixed, Splice
-from urdfgenpy_ros.joint import Joint
-from urdfgenpy_ros.link import Link
-from urdfgenpy_ros.material import Material
-from urdfgenpy_ros.preserved import SourceDocument
-from urdfgenpy_ros.urdf_versions import needed_version, version_text
-from urdfgenpy_ros.value_kinds import wrong_kind
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.extensions import Extension
+from urdfgenpy_ros.model.joint import Joint
+from urdfgenpy_ros.model.link import Link
+from urdfgenpy_ros.model.material import Material
+from urdfgenpy_ros.model.preserved import SourceDocument
+from urdfgenpy_ros.model.urdf_versions import needed_version, version_text
+from urdfgenpy_ros.model.value_kinds import wrong_kind
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

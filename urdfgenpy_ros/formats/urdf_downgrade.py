@@ -26,16 +26,16 @@ from __future__ import annotations
 import dataclasses
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import ModelError, ValidationError
 from urdfgenpy_ros.formats._xml import xml_bytes
 from urdfgenpy_ros.formats.urdf import write_urdf
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
-from urdfgenpy_ros.geometry import Capsule, Cylinder, Origin, Sphere
-from urdfgenpy_ros.link import Shape
-from urdfgenpy_ros.transforms import matrix_rpy, multiply, translation
-from urdfgenpy_ros.urdf_versions import (
+from urdfgenpy_ros.model.errors import ModelError, ValidationError
+from urdfgenpy_ros.model.findings import Findings
+from urdfgenpy_ros.model.geometry import Capsule, Cylinder, Origin, Sphere
+from urdfgenpy_ros.model.link import Shape
+from urdfgenpy_ros.model.transforms import matrix_rpy, multiply, translation
+from urdfgenpy_ros.model.urdf_versions import (
     features, needed_version, parse_version, version_text)
-from urdfgenpy_ros.validation.findings import Findings
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -28,12 +28,12 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats.urdf_schema import values
-from urdfgenpy_ros.joint import Joint
-from urdfgenpy_ros.link import Link
-from urdfgenpy_ros.material import Material
-from urdfgenpy_ros.preserved import SourceDocument
+from urdfgenpy_ros.model.extensions import Extension
+from urdfgenpy_ros.model.joint import Joint
+from urdfgenpy_ros.model.link import Link
+from urdfgenpy_ros.model.material import Material
+from urdfgenpy_ros.model.preserved import SourceDocument
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

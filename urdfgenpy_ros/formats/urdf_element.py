@@ -29,7 +29,6 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import esc, without_declared
 from urdfgenpy_ros.formats.urdf_edits import is_edited
 from urdfgenpy_ros.formats.urdf_fresh import FRESH
@@ -37,13 +36,15 @@ from urdfgenpy_ros.formats.urdf_schema import (
     Attr, Child, Element, ELEMENTS, FLOAT, INERTIAL, LENGTHS, MATERIAL, OF_CLASS, REQUIRED,
     slot_of, SLOTS, TEXT)
 from urdfgenpy_ros.formats.urdf_splice import in_quotes, prefixed, Splice
-from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Origin, quaternion_rpy, Sphere
-from urdfgenpy_ros.material import Material
+from urdfgenpy_ros.model.floats import fmt, fmt_vec
+from urdfgenpy_ros.model.geometry import (Box, Capsule, Cylinder, Mesh, Origin, quaternion_rpy,
+                                          Sphere)
+from urdfgenpy_ros.model.material import Material
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.inertial import Inertial
-    from urdfgenpy_ros.link import Link
     from urdfgenpy_ros.model import RobotModel
+    from urdfgenpy_ros.model.inertial import Inertial
+    from urdfgenpy_ros.model.link import Link
 
 _LEAVES = frozenset((Origin, Box, Cylinder, Sphere, Capsule, Mesh))
 _ATTRS = {tag: {attr.name: attr for attr in element.attrs} for tag, element in ELEMENTS.items()}

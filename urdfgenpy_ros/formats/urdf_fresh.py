@@ -31,7 +31,7 @@ from typing import Any
 from urdfgenpy_ros.formats._xml import esc
 from urdfgenpy_ros.formats.urdf_schema import (
     Element, ELEMENTS, FLOAT, LENGTHS, OF_CLASS, REQUIRED, TEXT)
-from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.model.joint import JointType
 
 Writer = Callable[[Any, Any, str], str]
 _LEAVES = ('origin',)  # one-line frozen children written in place, not by a call

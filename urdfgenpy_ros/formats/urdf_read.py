@@ -17,8 +17,8 @@
 URDF reader: the model of a file, following the declarations of :mod:`.urdf_schema`.
 
 Every element read keeps its source node and a by-value snapshot of the fields it gave
-(:class:`~urdfgenpy_ros.preserved.Preserved`), and the robot the file's text
-(:class:`~urdfgenpy_ros.preserved.SourceDocument`), so that writers can copy whatever
+(:class:`~urdfgenpy_ros.model.preserved.Preserved`), and the robot the file's text
+(:class:`~urdfgenpy_ros.model.preserved.SourceDocument`), so that writers can copy whatever
 nobody edited and keep everything the model does not hold.
 """
 
@@ -30,18 +30,18 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros import checks
-from urdfgenpy_ros.errors import ParseError, ReadWarning, SourceLocation
-from urdfgenpy_ros.extensions import Extension
 from urdfgenpy_ros.formats._parse import parse_xml, Source
 from urdfgenpy_ros.formats.urdf_readers import READERS
 from urdfgenpy_ros.formats.urdf_schema import GEOMETRY, record, unusable
-from urdfgenpy_ros.geometry import quaternion_rpy
-from urdfgenpy_ros.joint import Joint, JointType
-from urdfgenpy_ros.link import Link
-from urdfgenpy_ros.material import Material
+from urdfgenpy_ros.model import checks
 from urdfgenpy_ros.model import robot_class
-from urdfgenpy_ros.preserved import SourceDocument
+from urdfgenpy_ros.model.errors import ParseError, ReadWarning, SourceLocation
+from urdfgenpy_ros.model.extensions import Extension
+from urdfgenpy_ros.model.geometry import quaternion_rpy
+from urdfgenpy_ros.model.joint import Joint, JointType
+from urdfgenpy_ros.model.link import Link
+from urdfgenpy_ros.model.material import Material
+from urdfgenpy_ros.model.preserved import SourceDocument
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -30,13 +30,13 @@ from collections.abc import Callable
 import dataclasses
 from typing import Any
 
-from urdfgenpy_ros.errors import SourceLocation
 from urdfgenpy_ros.formats.urdf_schema import (
     Attr, DEFAULT_CHILD, Element, ELEMENTS, FLOAT, GEOMETRY, MAY_BE_UNUSABLE, OF_CLASS,
     plan, REQUIRED, TEXT, unusable, VEC3)
-from urdfgenpy_ros.joint import JointType
-from urdfgenpy_ros.lazy_lists import LazyList
-from urdfgenpy_ros.preserved import Preserved
+from urdfgenpy_ros.model.errors import SourceLocation
+from urdfgenpy_ros.model.joint import JointType
+from urdfgenpy_ros.model.lazy_lists import LazyList
+from urdfgenpy_ros.model.preserved import Preserved
 
 Reader = Callable[[Any, Any], Any]
 _SHAPE_TAGS = GEOMETRY.children[0].tags

@@ -26,12 +26,12 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any, NamedTuple
 
-from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, IDENTITY, Mesh, Origin, Sphere
-from urdfgenpy_ros.inertial import INERTIA_ATTRS, Inertial
-from urdfgenpy_ros.joint import (
+from urdfgenpy_ros.model.geometry import Box, Capsule, Cylinder, IDENTITY, Mesh, Origin, Sphere
+from urdfgenpy_ros.model.inertial import INERTIA_ATTRS, Inertial
+from urdfgenpy_ros.model.joint import (
     Joint, JointCalibration, JointDynamics, JointLimit, JointMimic, SafetyController)
-from urdfgenpy_ros.link import Collision, Link, Visual
-from urdfgenpy_ros.material import Material
+from urdfgenpy_ros.model.link import Collision, Link, Visual
+from urdfgenpy_ros.model.material import Material
 
 
 class _Required:

@@ -32,7 +32,7 @@ from lxml import etree
 from urdfgenpy_ros.formats._xml import esc, escape_text, without_declared
 from urdfgenpy_ros.formats.source_record import (
     attribute_value, attributes, children, gaps, Span, Spans, text_value, unchanged)
-from urdfgenpy_ros.preserved import SourceDocument
+from urdfgenpy_ros.model.preserved import SourceDocument
 
 _DOUBLE_QUOTED = re.compile(r'(\s[^\s=<>]+=)"([^"\']*)"')
 

@@ -15,7 +15,7 @@
 """
 Xacro writer: the URDF with masses as properties and solid inertias as macros.
 
-The macros repeat the arithmetic of :mod:`urdfgenpy_ros.inertial` operation for
+The macros repeat the arithmetic of :mod:`urdfgenpy_ros.model.inertial` operation for
 operation, so the real ``xacro`` expands them to exactly the floats ``to_urdf()`` writes.
 """
 
@@ -28,17 +28,17 @@ from pathlib import Path
 import re
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.extensions import Extension
-from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats._xml import esc, tag_end, write_text
 from urdfgenpy_ros.formats.urdf import UrdfWriter
-from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.link import Link
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.extensions import Extension
+from urdfgenpy_ros.model.floats import fmt, fmt_vec
+from urdfgenpy_ros.model.inertial import Inertial
+from urdfgenpy_ros.model.link import Link
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.material import Material
     from urdfgenpy_ros.model import RobotModel
+    from urdfgenpy_ros.model.material import Material
 
 XACRO_NS = 'http://www.ros.org/wiki/xacro'
 _EXPR = '\x00'  # stands for '$' in expressions we mean; every other '$' is escaped
@@ -229,7 +229,7 @@ def macro_xacro(robot: RobotModel, *, includes: Sequence[str] = (), materials: b
     ``$`` as written) end the macro's body: the scaffolder puts those blocks in macros of
     their own files.
     """
-    from urdfgenpy_ros.assembly import prefixed
+    from urdfgenpy_ros.reshape.assembly import prefixed
     marked = prefixed(robot, PREFIX_MARK)
     blocks = [block for block in marked.extensions if block.tag not in skip]
     writer = _MacroBody(marked, blocks)

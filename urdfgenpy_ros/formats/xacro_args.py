@@ -26,7 +26,7 @@ import difflib
 from pathlib import Path
 import re
 
-from urdfgenpy_ros.errors import ReadWarning, SourceLocation
+from urdfgenpy_ros.model.errors import ReadWarning, SourceLocation
 
 _DECLARED = re.compile(r'<[\w.-]+:arg\s[^>]*?\bname\s*=\s*["\']([^"\']+)')
 _USED = re.compile(r'\$\(\s*arg\s+([^\s)]+)')

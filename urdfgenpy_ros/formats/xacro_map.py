@@ -36,7 +36,7 @@ from xml.dom import expatbuilder, minidom, Node
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import SourceLocation
+from urdfgenpy_ros.model.errors import SourceLocation
 
 
 class Origin(NamedTuple):

@@ -26,11 +26,11 @@ import re
 import threading
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import (
-    MissingDependencyError, PACKAGE_FOLDER, ParseError, ReadWarning, SourceLocation)
 from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
 from urdfgenpy_ros.formats.xacro_args import misspelt_arguments, unknown_arguments
 from urdfgenpy_ros.formats.xacro_map import pretty_print, recording, XacroMap
+from urdfgenpy_ros.model.errors import (
+    MissingDependencyError, PACKAGE_FOLDER, ParseError, ReadWarning, SourceLocation)
 from urdfgenpy_ros.resources import PackageResolver
 
 if TYPE_CHECKING:
@@ -228,7 +228,7 @@ def read_xacro(path: str | PathLike[str], mappings: Mapping[str, str] | None = N
     try:
         robot = read_urdf_bytes(text.encode('utf-8'), f'{path} (expanded)', cls)
     except ParseError as error:
-        from urdfgenpy_ros.validation.xacro_source import error_in_source
+        from urdfgenpy_ros.formats.xacro_source import error_in_source
         raise no_robot_in(path, text) or error_in_source(
             error, text, [str(Path(path).resolve()), *included], str(path),
             maps[0]) from None

@@ -122,7 +122,7 @@ def compute_matrix(robot: RobotModel, samples: int = 10000, seed: int = 0,
     contact (every state tested for those pairs: the costly part on a humanoid).
     """
     if samples < 0:
-        from urdfgenpy_ros.errors import ModelError
+        from urdfgenpy_ros.model.errors import ModelError
         raise ModelError(f'samples must be 0 or more, got {samples}')
     model = compiled(robot)
     shapes = ShapeSet(model, link_shapes(robot, search_paths))

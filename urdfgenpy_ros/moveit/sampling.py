@@ -33,8 +33,8 @@ from typing import TYPE_CHECKING
 import numpy
 
 from urdfgenpy_ros.dynamics import compiled
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.joint import Joint, JointType
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.joint import Joint, JointType
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -30,9 +30,9 @@ from typing import Any, TYPE_CHECKING
 
 import numpy
 
-from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
-from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Sphere
-from urdfgenpy_ros.link import Collision
+from urdfgenpy_ros.model.errors import MissingDependencyError, UrdfgenpyError
+from urdfgenpy_ros.model.geometry import Box, Capsule, Cylinder, Mesh, Sphere
+from urdfgenpy_ros.model.link import Collision
 from urdfgenpy_ros.resources import PackageResolver
 
 if TYPE_CHECKING:

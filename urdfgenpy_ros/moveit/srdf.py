@@ -31,8 +31,8 @@ from typing import Any, TYPE_CHECKING
 from lxml import etree
 
 from urdfgenpy_ros.dynamics import movable_joints
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.floats import fmt
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.floats import fmt
 from urdfgenpy_ros.moveit import sampling
 from urdfgenpy_ros.moveit.collision_matrix import CollisionMatrix, compute_matrix
 from urdfgenpy_ros.moveit.gripper_states import opens_at_upper

@@ -31,13 +31,13 @@ from typing import Any, TYPE_CHECKING
 from lxml import etree
 
 from urdfgenpy_ros.dynamics import compiled
-from urdfgenpy_ros.errors import (ParseError, SourceLocation, UrdfgenpyError,
-                                  ValidationError)
+from urdfgenpy_ros.model.codes import severity_of
+from urdfgenpy_ros.model.errors import (ParseError, SourceLocation, UrdfgenpyError,
+                                        ValidationError)
 from urdfgenpy_ros.moveit import sampling
 from urdfgenpy_ros.moveit.collision_matrix import CHUNK, pair
 from urdfgenpy_ros.moveit.contacts import Pair, ShapeSet
 from urdfgenpy_ros.moveit.shapes import link_shapes
-from urdfgenpy_ros.validation.codes import severity_of
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

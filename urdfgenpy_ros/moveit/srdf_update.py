@@ -35,7 +35,7 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import ModelError, ParseError
+from urdfgenpy_ros.model.errors import ModelError, ParseError
 from urdfgenpy_ros.moveit.collision_matrix import CollisionMatrix, compute_matrix, pair
 from urdfgenpy_ros.moveit.collision_matrix import Reason
 from urdfgenpy_ros.moveit.contacts import Pair

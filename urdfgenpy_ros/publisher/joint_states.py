@@ -27,8 +27,8 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 import math
 
-from urdfgenpy_ros.errors import ModelError, UrdfgenpyError
-from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.model.errors import ModelError, UrdfgenpyError
+from urdfgenpy_ros.model.joint import JointType
 from urdfgenpy_ros.robot import Robot
 
 

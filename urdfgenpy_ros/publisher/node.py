@@ -39,8 +39,8 @@ from rclpy.parameter import Parameter
 from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
 
-from urdfgenpy_ros.errors import Severity, UrdfgenpyError
 from urdfgenpy_ros.formats.open import files_read, open_description
+from urdfgenpy_ros.model.errors import Severity, UrdfgenpyError
 from urdfgenpy_ros.publisher import NODE_WORDS
 from urdfgenpy_ros.publisher.joint_states import JointStateOptions, JointStates
 from urdfgenpy_ros.report import boundary, KNOWN_ERRORS
@@ -371,7 +371,7 @@ class _TfPublisher:
 
     def configure(self, robot: Robot) -> None:
         """Take a (new) robot: publish its fixed joints on /tf_static."""
-        from urdfgenpy_ros.kinematics import JointTransforms
+        from urdfgenpy_ros.dynamics.kinematics import JointTransforms
         self.transforms = JointTransforms(robot)
         stamp = self.node.get_clock().now().to_msg()
         self.static.publish(self.message_type(transforms=[

@@ -19,9 +19,9 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.geometry import Origin
-from urdfgenpy_ros.transforms import Matrix4, matrix_rpy, rpy_quaternion
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.geometry import Origin
+from urdfgenpy_ros.model.transforms import Matrix4, matrix_rpy, rpy_quaternion
 
 Vec = tuple[float, float, float]
 

@@ -25,11 +25,11 @@ else stay as they are, so a lossless write changes one line per joint.
 
 from __future__ import annotations
 
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.joint import JointType
+from urdfgenpy_ros.model.transforms import IDENTITY4, Matrix4, multiply
 from urdfgenpy_ros.reshape._frames import inverse, max_difference, origin_of
 from urdfgenpy_ros.reshape.dh_extract import chain_axes, dh_from_robot
-from urdfgenpy_ros.transforms import IDENTITY4, Matrix4, multiply
 
 _UNCHANGED = 1e-13  # an origin that moves less than this keeps its text
 

@@ -33,11 +33,11 @@ import math
 import random
 import warnings
 
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.joint import Joint, JointType
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.joint import Joint, JointType
+from urdfgenpy_ros.model.transforms import IDENTITY4, Matrix4, multiply
 from urdfgenpy_ros.reshape._frames import (
     add, column, cross, dot, frame, inverse, norm, origin_of, require_link, sub, unit, Vec)
-from urdfgenpy_ros.transforms import IDENTITY4, Matrix4, multiply
 
 _PARALLEL = 1e-9  # |z1 x z2| below this: the axes are parallel
 # Axes closer than this (radians) are taken as parallel: their common normal lies
@@ -225,7 +225,7 @@ def dh_from_robot(robot, base: str, tip: str, convention: str = 'standard', *, c
 
     :raises ModelError: when the chain is not serial revolute/prismatic (naming the joint).
     """
-    from urdfgenpy_ros.dh_row import DHConvention, DHRow
+    from urdfgenpy_ros.model.dh_row import DHConvention, DHRow
     style = DHConvention(convention)
     joints, axes, tip_pose = chain_axes(robot, base, tip)
     snapped = _snap_parallel(axes)
@@ -271,7 +271,7 @@ def _snap_parallel(axes: list[Axis]) -> list[tuple[str, str, float]]:
 
 def _deviation(table, joints: list[Joint]) -> tuple[float, float]:
     """Return the largest distance and angle between the table's tip and the chain's."""
-    from urdfgenpy_ros.transforms import translation
+    from urdfgenpy_ros.model.transforms import translation
     rng = random.Random(0)
     moving = [joint for joint in joints if joint.type is not JointType.FIXED]
     distance = angle = 0.0

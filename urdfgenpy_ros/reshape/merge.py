@@ -15,7 +15,7 @@
 """
 Merge fixed-joint children into their parents, for URDF output (``Robot.merge_fixed``).
 
-The lumping is the SDF writer's (:mod:`urdfgenpy_ros.lumping`, which matches SDFormat's):
+The lumping is the SDF writer's (:mod:`urdfgenpy_ros.reshape.lumping`, which matches SDFormat's):
 masses add, the centre of mass is their mean, tensors turn into the parent's frame and
 shift by the parallel axis theorem. Visuals and collisions move with their poses; moving
 joints below a merged link hang from the link it merged into. A moved visual or
@@ -31,10 +31,10 @@ from __future__ import annotations
 
 import copy
 
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.lumping import lumps, move_contents
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.transforms import IDENTITY4, Matrix4, multiply
 from urdfgenpy_ros.reshape._frames import origin_of
-from urdfgenpy_ros.transforms import IDENTITY4, Matrix4, multiply
+from urdfgenpy_ros.reshape.lumping import lumps, move_contents
 
 
 def merge_fixed(robot, keep=(), *, drop_frames: bool = False):

@@ -36,15 +36,15 @@ from os import PathLike
 from typing import Any
 import warnings
 
-from urdfgenpy_ros.assembly import _rename, _Renaming
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.floats import fmt_vec
-from urdfgenpy_ros.geometry import Mesh, Origin
-from urdfgenpy_ros.joint import Joint, JointMimic, JointType
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.floats import fmt_vec
+from urdfgenpy_ros.model.geometry import Mesh, Origin
+from urdfgenpy_ros.model.joint import Joint, JointMimic, JointType
+from urdfgenpy_ros.model.transforms import IDENTITY4, Matrix4, multiply
 from urdfgenpy_ros.reshape._frames import general_multiply, inverse, origin_of, require_link
+from urdfgenpy_ros.reshape.assembly import _rename, _Renaming
 from urdfgenpy_ros.reshape.mirror_mesh import FLIPPED_AXIS, MeshWriter
 from urdfgenpy_ros.reshape.mirror_names import limb_renamer, require_one_to_one
-from urdfgenpy_ros.transforms import IDENTITY4, Matrix4, multiply
 
 PLANES = FLIPPED_AXIS
 _TURNING = (JointType.REVOLUTE, JointType.CONTINUOUS)
@@ -172,7 +172,7 @@ def _zero_poses(robot) -> dict[str, Matrix4]:
 
 def _copy(robot, links, joints):
     """Return a robot holding deep copies of ``links`` and ``joints``."""
-    from urdfgenpy_ros import checks
+    from urdfgenpy_ros.model import checks
     piece = type(robot)(robot.name)
     for link in copy.deepcopy(links):
         piece.add_link(link)
@@ -358,5 +358,5 @@ def _robot_blocks(robot: Any, joints: dict[str, str], links: dict[str, str],
 
 
 def _rename_block_copy(element: Any, renaming: _Renaming) -> None:
-    from urdfgenpy_ros.assembly import _rename_block
+    from urdfgenpy_ros.reshape.assembly import _rename_block
     _rename_block(element, renaming)

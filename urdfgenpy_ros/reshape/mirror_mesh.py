@@ -14,7 +14,7 @@
 """
 Meshes for a mirrored limb: each file written reflected, once, beside the original.
 
-A mesh is read as RViz reads it (:mod:`urdfgenpy_ros.mesh_read`): a DAE is written back
+A mesh is read as RViz reads it (:mod:`urdfgenpy_ros.model.mesh_read`): a DAE is written back
 with its unit applied, Z up, and its materials (colours) kept; a binary STL is reflected
 byte for byte; other files through trimesh. Reflections are kept by content in the mesh
 cache (:mod:`urdfgenpy_ros.mesh_cache`). With a mesh folder, the mirrored limb names its
@@ -34,8 +34,8 @@ from pathlib import Path
 from typing import Any
 import warnings
 
-from urdfgenpy_ros.errors import MissingDependencyError, ModelError
-from urdfgenpy_ros.geometry import Mesh
+from urdfgenpy_ros.model.errors import MissingDependencyError, ModelError
+from urdfgenpy_ros.model.geometry import Mesh
 
 FLIPPED_AXIS = {'yz': 0, 'xz': 1, 'xy': 2}  # plane -> the axis its reflection flips
 _VERSION = '1'  # of the mirrored files' format: a new version is a new cache key
@@ -241,7 +241,7 @@ def _reflected_dae(path: Path, axis: int) -> bytes:
     """Return a DAE reflected, as RViz places it (unit applied), its materials kept."""
     from lxml import etree
 
-    from urdfgenpy_ros.mesh_read import dae_parts
+    from urdfgenpy_ros.model.mesh_read import dae_parts
     parts = dae_parts(path)
     source = etree.parse(str(path), etree.XMLParser(huge_tree=True, no_network=True,
                                                     resolve_entities=False)).getroot()

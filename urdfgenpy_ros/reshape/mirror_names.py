@@ -34,7 +34,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Mapping
 import re
 
-from urdfgenpy_ros.errors import ModelError
+from urdfgenpy_ros.model.errors import ModelError
 
 
 def _apart(before: str, after: str, following: str = '') -> bool:

@@ -32,7 +32,7 @@ import os
 from pathlib import Path
 import re
 
-from urdfgenpy_ros.material import Material
+from urdfgenpy_ros.model.material import Material
 from urdfgenpy_ros.resources import _package_name, PackageResolver, ResourceError
 from urdfgenpy_ros.robot import Robot
 

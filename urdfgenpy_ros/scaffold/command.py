@@ -24,8 +24,8 @@ from pathlib import Path
 import sys
 from typing import cast, NoReturn, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats.open import open_description, parse_args
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 from urdfgenpy_ros.report import exit_status, FrontEnd
 from urdfgenpy_ros.scaffold import INIT_INPUTS
 from urdfgenpy_ros.scaffold.preflight import preflight

@@ -35,8 +35,8 @@ import sys
 from typing import Any, NoReturn
 
 from lxml import etree
-from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.formats.open import open_description
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 from urdfgenpy_ros.moveit import config
 from urdfgenpy_ros.moveit.srdf import build_srdf
 from urdfgenpy_ros.report import exit_status, FrontEnd

@@ -26,7 +26,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from os import PathLike
 
-from urdfgenpy_ros.errors import UrdfgenpyError, ValidationError
+from urdfgenpy_ros.model.errors import UrdfgenpyError, ValidationError
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.checklist import review, ReviewOptions
 from urdfgenpy_ros.validation.fix_output import DEFAULT_RADIUS, fix_for_output

@@ -24,15 +24,15 @@ from pathlib import Path
 import posixpath
 import shutil
 
-from urdfgenpy_ros.assembly import prefixed
-from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
 from urdfgenpy_ros.formats._xml import fragment, INDENT
 from urdfgenpy_ros.formats.urdf import UrdfWriter
 from urdfgenpy_ros.formats.xacro import (defined_once, macro_name, macro_xacro, PREFIX_MARK,
                                          top_level_xacro, with_prefix, XACRO_NS)
-from urdfgenpy_ros.geometry import Mesh
-from urdfgenpy_ros.link import Shape
-from urdfgenpy_ros.material import Material
+from urdfgenpy_ros.model.errors import MissingDependencyError, UrdfgenpyError
+from urdfgenpy_ros.model.geometry import Mesh
+from urdfgenpy_ros.model.link import Shape
+from urdfgenpy_ros.model.material import Material
+from urdfgenpy_ros.reshape.assembly import prefixed
 from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.scaffold.assets import copy_referenced_files, with_find

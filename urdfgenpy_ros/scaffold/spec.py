@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 import re
 
-from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 
 BUILD_TYPES = ('ament_cmake', 'ament_python')
 _NAME = re.compile(r'^[a-z][a-z0-9_]*$')

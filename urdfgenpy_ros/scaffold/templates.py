@@ -29,7 +29,7 @@ from pathlib import Path
 import sys
 import sysconfig
 
-from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 
 PACKAGE = 'urdfgenpy_ros'
 _SHARED = Path('share') / PACKAGE / 'templates'

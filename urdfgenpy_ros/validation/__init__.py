@@ -20,11 +20,11 @@ from collections.abc import Iterable, Mapping
 from os import PathLike
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.errors import Severity, ValidationError
-from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET
+from urdfgenpy_ros.model.codes import CODES
+from urdfgenpy_ros.model.errors import Severity, ValidationError
+from urdfgenpy_ros.model.urdf_versions import DEFAULT_TARGET
 from urdfgenpy_ros.validation.checklist import (
     Check, CHECKS, Review, review, ReviewOptions, run_checks, Suppressed)
-from urdfgenpy_ros.validation.codes import CODES
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

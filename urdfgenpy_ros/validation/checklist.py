@@ -34,11 +34,12 @@ from pathlib import Path
 import re
 from typing import NamedTuple, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import Severity, ValidationError
+from urdfgenpy_ros.formats.xacro_source import in_source
+from urdfgenpy_ros.model.codes import CODES
+from urdfgenpy_ros.model.errors import Severity, ValidationError
+from urdfgenpy_ros.model.findings import Findings
+from urdfgenpy_ros.model.urdf_versions import DEFAULT_TARGET, TARGETS
 from urdfgenpy_ros.resources import PackageResolver
-from urdfgenpy_ros.urdf_versions import DEFAULT_TARGET, TARGETS
-from urdfgenpy_ros.validation.codes import CODES
-from urdfgenpy_ros.validation.findings import Findings
 from urdfgenpy_ros.validation.fix import fix, FIXABLE, missing_defaults, Repair
 from urdfgenpy_ros.validation.inertia import check_inertia
 from urdfgenpy_ros.validation.joints import check_joints
@@ -48,7 +49,6 @@ from urdfgenpy_ros.validation.references import check_references
 from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions, Suppressions
 from urdfgenpy_ros.validation.topology import check_topology
 from urdfgenpy_ros.validation.versions import check_versions
-from urdfgenpy_ros.validation.xacro_source import in_source
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

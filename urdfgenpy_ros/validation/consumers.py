@@ -22,7 +22,7 @@ rest, naming the engine that would refuse.
 
 from __future__ import annotations
 
-from urdfgenpy_ros.errors import ValidationError
+from urdfgenpy_ros.model.errors import ValidationError
 
 _TENSOR = ('MuJoCo refuses the model and Gazebo refuses the link (libsdformat: '
            '"invalid inertia")')

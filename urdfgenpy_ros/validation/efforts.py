@@ -31,8 +31,8 @@ from os import PathLike
 from pathlib import Path
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import MissingDependencyError, ParseError, SourceLocation
-from urdfgenpy_ros.validation.findings import Findings, joint_path
+from urdfgenpy_ros.model.errors import MissingDependencyError, ParseError, SourceLocation
+from urdfgenpy_ros.model.findings import Findings, joint_path
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

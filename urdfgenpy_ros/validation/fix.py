@@ -35,13 +35,13 @@ from os import PathLike
 import re
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.errors import SourceLocation, ValidationError
-from urdfgenpy_ros.floats import fmt, fmt_vec
-from urdfgenpy_ros.geometry import Mesh
-from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.joint import Joint, JointLimit, JointType
-from urdfgenpy_ros.link import Link
-from urdfgenpy_ros.transforms import from_xyz_rpy
+from urdfgenpy_ros.model.errors import SourceLocation, ValidationError
+from urdfgenpy_ros.model.floats import fmt, fmt_vec
+from urdfgenpy_ros.model.geometry import Mesh
+from urdfgenpy_ros.model.inertial import Inertial
+from urdfgenpy_ros.model.joint import Joint, JointLimit, JointType
+from urdfgenpy_ros.model.link import Link
+from urdfgenpy_ros.model.transforms import from_xyz_rpy
 from urdfgenpy_ros.validation.fix_tensor import TensorSources
 
 if TYPE_CHECKING:

@@ -27,9 +27,9 @@ from collections.abc import Sequence
 from os import PathLike
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.errors import Severity, ValidationError
-from urdfgenpy_ros.floats import fmt
-from urdfgenpy_ros.inertial import Inertial
+from urdfgenpy_ros.model.errors import Severity, ValidationError
+from urdfgenpy_ros.model.floats import fmt
+from urdfgenpy_ros.model.inertial import Inertial
 from urdfgenpy_ros.validation.checklist import review, ReviewOptions
 from urdfgenpy_ros.validation.fix import fix, Repair
 

@@ -29,11 +29,11 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 import warnings
 
-from urdfgenpy_ros.errors import UrdfgenpyError
-from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Sphere
-from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.link import Collision, Link, Visual
-from urdfgenpy_ros.mesh_inertia import ScaleWarning
+from urdfgenpy_ros.model.errors import UrdfgenpyError
+from urdfgenpy_ros.model.geometry import Box, Capsule, Cylinder, Mesh, Sphere
+from urdfgenpy_ros.model.inertial import Inertial
+from urdfgenpy_ros.model.link import Collision, Link, Visual
+from urdfgenpy_ros.model.mesh_inertia import ScaleWarning
 from urdfgenpy_ros.resources import PackageResolver
 
 if TYPE_CHECKING:

@@ -19,14 +19,14 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Sphere
-from urdfgenpy_ros.inertial import (
+from urdfgenpy_ros.model.findings import Findings, link_path
+from urdfgenpy_ros.model.geometry import Box, Capsule, Cylinder, Sphere
+from urdfgenpy_ros.model.inertial import (
     box_tensor, capsule_tensor, cylinder_tensor, Inertial, sphere_tensor)
-from urdfgenpy_ros.joint import JointType
-from urdfgenpy_ros.link import Link, Shape
-from urdfgenpy_ros.lumping import lumps, WORLD
-from urdfgenpy_ros.transforms import symmetric_eigenvalues
-from urdfgenpy_ros.validation.findings import Findings, link_path
+from urdfgenpy_ros.model.joint import JointType
+from urdfgenpy_ros.model.link import Link, Shape
+from urdfgenpy_ros.model.transforms import symmetric_eigenvalues
+from urdfgenpy_ros.reshape.lumping import lumps, WORLD
 from urdfgenpy_ros.validation.preflight import (
     SdfConversion, sdformat_conversion, SDFORMAT_ZERO_MASS)
 

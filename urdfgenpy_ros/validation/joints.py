@@ -19,8 +19,8 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.joint import Joint, JointType
-from urdfgenpy_ros.validation.findings import Findings, joint_path
+from urdfgenpy_ros.model.findings import Findings, joint_path
+from urdfgenpy_ros.model.joint import Joint, JointType
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -39,16 +39,16 @@ import sys
 import tempfile
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import SourceLocation, UrdfgenpyError
-from urdfgenpy_ros.geometry import Mesh
-from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.joint import JointType
-from urdfgenpy_ros.lumping import combine
+from urdfgenpy_ros.model.codes import PREFLIGHT_HINTS
+from urdfgenpy_ros.model.errors import SourceLocation, UrdfgenpyError
+from urdfgenpy_ros.model.findings import Findings, joint_path, link_path
+from urdfgenpy_ros.model.geometry import Mesh
+from urdfgenpy_ros.model.inertial import Inertial
+from urdfgenpy_ros.model.joint import JointType
+from urdfgenpy_ros.model.transforms import from_xyz_rpy, IDENTITY4, Matrix4, multiply
+from urdfgenpy_ros.model.transforms import symmetric_eigenvalues
+from urdfgenpy_ros.reshape.lumping import combine
 from urdfgenpy_ros.resources import PackageResolver
-from urdfgenpy_ros.transforms import from_xyz_rpy, IDENTITY4, Matrix4, multiply
-from urdfgenpy_ros.transforms import symmetric_eigenvalues
-from urdfgenpy_ros.validation.codes import PREFLIGHT_HINTS
-from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -34,14 +34,14 @@ from os import PathLike
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.errors import ValidationError
 from urdfgenpy_ros.formats.sdf_frames import merge_for_sdf
 from urdfgenpy_ros.formats.sdf_gazebo import gazebo_losses, script_notes
 from urdfgenpy_ros.formats.sdf_mass import mass_only
-from urdfgenpy_ros.joint import Joint
-from urdfgenpy_ros.lumping import lumps, WORLD
-from urdfgenpy_ros.validation.codes import PREFLIGHT_HINTS
-from urdfgenpy_ros.validation.findings import Findings, link_path
+from urdfgenpy_ros.model.codes import PREFLIGHT_HINTS
+from urdfgenpy_ros.model.errors import ValidationError
+from urdfgenpy_ros.model.findings import Findings, link_path
+from urdfgenpy_ros.model.joint import Joint
+from urdfgenpy_ros.reshape.lumping import lumps, WORLD
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

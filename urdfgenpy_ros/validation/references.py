@@ -21,11 +21,11 @@ import os
 from pathlib import Path, PurePosixPath, PureWindowsPath
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import PACKAGE_FOLDER
-from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Sphere
-from urdfgenpy_ros.link import Shape
+from urdfgenpy_ros.model.errors import PACKAGE_FOLDER
+from urdfgenpy_ros.model.findings import Findings, joint_path, link_path
+from urdfgenpy_ros.model.geometry import Box, Capsule, Cylinder, Mesh, Sphere
+from urdfgenpy_ros.model.link import Shape
 from urdfgenpy_ros.resources import PackageResolver, ResourceError, uri_warning
-from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

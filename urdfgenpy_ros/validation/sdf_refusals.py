@@ -18,10 +18,10 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.errors import Severity, SourceLocation, ValidationError
 from urdfgenpy_ros.formats.sdf_inertia import refusal
-from urdfgenpy_ros.lumping import lumps, WORLD
-from urdfgenpy_ros.validation.findings import Findings, link_path
+from urdfgenpy_ros.model.errors import Severity, SourceLocation, ValidationError
+from urdfgenpy_ros.model.findings import Findings, link_path
+from urdfgenpy_ros.reshape.lumping import lumps, WORLD
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -38,9 +38,9 @@ from urdfgenpy_ros.dynamics.bound import torque_bounds
 from urdfgenpy_ros.dynamics.gravity import mass_model
 from urdfgenpy_ros.dynamics.worst import is_prismatic, LONG_POSE, ranges, worst_case
 from urdfgenpy_ros.dynamics.worst import WorstCase
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.joint import Joint, JointType
-from urdfgenpy_ros.validation.findings import Findings, joint_path
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.findings import Findings, joint_path
+from urdfgenpy_ros.model.joint import Joint, JointType
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -35,8 +35,8 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import ValidationError
-from urdfgenpy_ros.validation.codes import CODES
+from urdfgenpy_ros.model.codes import CODES
+from urdfgenpy_ros.model.errors import ValidationError
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -19,7 +19,7 @@ from __future__ import annotations
 import re
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.validation.findings import Findings, joint_path, link_path
+from urdfgenpy_ros.model.findings import Findings, joint_path, link_path
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

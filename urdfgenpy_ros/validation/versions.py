@@ -19,11 +19,11 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.geometry import Origin
-from urdfgenpy_ros.urdf_versions import (
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.findings import Findings
+from urdfgenpy_ros.model.geometry import Origin
+from urdfgenpy_ros.model.urdf_versions import (
     DEFAULT_TARGET, features, needed_version, parse_version, TARGETS, version_text)
-from urdfgenpy_ros.validation.findings import Findings
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

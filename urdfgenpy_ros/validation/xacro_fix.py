@@ -32,9 +32,9 @@ from pathlib import Path
 import re
 from typing import NamedTuple, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import ValidationError
 from urdfgenpy_ros.formats.urdf import urdf_file_bytes
 from urdfgenpy_ros.formats.xacro_tags import attributes, source_text
+from urdfgenpy_ros.model.errors import ValidationError
 from urdfgenpy_ros.validation.fix import fix, Repair
 
 if TYPE_CHECKING:

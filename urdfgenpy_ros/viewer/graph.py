@@ -20,8 +20,8 @@ from __future__ import annotations
 from os import PathLike
 from pathlib import Path
 
-from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
-from urdfgenpy_ros.joint import Joint, JointType
+from urdfgenpy_ros.model.errors import MissingDependencyError, UrdfgenpyError
+from urdfgenpy_ros.model.joint import Joint, JointType
 from urdfgenpy_ros.report import counted
 from urdfgenpy_ros.robot import Robot
 

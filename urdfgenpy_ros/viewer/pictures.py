@@ -20,7 +20,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from os import PathLike
 
-from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
+from urdfgenpy_ros.model.errors import MissingDependencyError, UrdfgenpyError
 from urdfgenpy_ros.robot import Robot
 
 ROBOT_PICTURE = 'doc/robot.png'

@@ -29,7 +29,7 @@ from os import PathLike
 from pathlib import Path
 from typing import Any
 
-from urdfgenpy_ros.errors import UrdfgenpyError
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.viewer.nothing import nothing_to_draw
 from urdfgenpy_ros.viewer.scene import (

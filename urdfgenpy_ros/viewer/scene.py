@@ -18,7 +18,7 @@ A robot as triangle meshes in link frames, posed by the package's forward kinema
 
 The renderer and the web viewer share it: every visual (or collision) becomes a
 ``Part`` whose mesh is in its link's frame, with the colour URDF gives it; ``link_matrices``
-turns joint values into each link's 4x4 pose through ``urdfgenpy_ros.kinematics``.
+turns joint values into each link's 4x4 pose through ``urdfgenpy_ros.dynamics.kinematics``.
 """
 
 from __future__ import annotations
@@ -29,9 +29,9 @@ from os import PathLike
 from pathlib import Path
 from typing import Any
 
-from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
-from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Mesh, Origin, Sphere
-from urdfgenpy_ros.kinematics import link_poses
+from urdfgenpy_ros.dynamics.kinematics import link_poses
+from urdfgenpy_ros.model.errors import MissingDependencyError, UrdfgenpyError
+from urdfgenpy_ros.model.geometry import Box, Capsule, Cylinder, Mesh, Origin, Sphere
 from urdfgenpy_ros.resources import PackageResolver, ResourceError
 from urdfgenpy_ros.robot import Robot
 
@@ -135,7 +135,7 @@ class MeshCache:
                 if loaded is None:
                     loaded = trimesh.load(key, force='mesh')
                     if path.suffix.lower() == '.dae':  # as RViz: the unit applied
-                        from urdfgenpy_ros.mesh_read import dae_unit
+                        from urdfgenpy_ros.model.mesh_read import dae_unit
                         loaded.apply_scale(dae_unit(path))
             except Exception as error:  # noqa: B902 - trimesh raises many kinds
                 self.problems.append(f'{path}: cannot read the mesh ({error})')
@@ -164,7 +164,7 @@ def _coloured_dae(path: Path) -> Any | None:
     import trimesh
 
     from urdfgenpy_ros import mesh_cache
-    from urdfgenpy_ros.mesh_read import dae_parts
+    from urdfgenpy_ros.model.mesh_read import dae_parts
 
     def make() -> bytes:
         parts = dae_parts(path)

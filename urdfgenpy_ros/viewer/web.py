@@ -37,8 +37,8 @@ import threading
 import time
 from typing import Any
 
-from urdfgenpy_ros.errors import Severity, UrdfgenpyError, ValidationError
-from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.model.errors import Severity, UrdfgenpyError, ValidationError
+from urdfgenpy_ros.model.joint import JointType
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.checklist import review, ReviewOptions, Suppressed

@@ -33,7 +33,6 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import ModelError, ValidationError
 from urdfgenpy_ros.formats.mjcf.build import Build, EXPANDED, start, WriteOptions
 from urdfgenpy_ros.formats.mjcf.fusing import fused
 from urdfgenpy_ros.formats.mjcf.gains import GainOption
@@ -42,6 +41,7 @@ from urdfgenpy_ros.formats.mjcf.prepare import (
     BASES, Fused, MINIMUM_MASS, MjcfRefusedError, prepare, prepared, raise_refused, REFUSED,
     TENSORS)
 from urdfgenpy_ros.formats.mjcf.stages import DEFAULT_KP, DEFAULT_KV, NO_ACTUATORS, STAGES
+from urdfgenpy_ros.model.errors import ModelError, ValidationError
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -34,9 +34,9 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats.mjcf.gains import Gains
-from urdfgenpy_ros.joint import Joint, JointType
+from urdfgenpy_ros.model.floats import fmt, fmt_vec
+from urdfgenpy_ros.model.joint import Joint, JointType
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -34,8 +34,8 @@ from dataclasses import dataclass
 import math
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.floats import fmt
-from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.model.floats import fmt
+from urdfgenpy_ros.model.joint import JointType
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

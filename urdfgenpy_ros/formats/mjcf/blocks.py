@@ -32,7 +32,7 @@ from typing import Any
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import ModelError, ParseError, SourceLocation
+from urdfgenpy_ros.model.errors import ModelError, ParseError, SourceLocation
 
 SINGLETONS = frozenset(('compiler', 'option', 'size', 'visual', 'statistic', 'flag',
                         'global', 'quality', 'headlight', 'map', 'scale', 'rgba'))

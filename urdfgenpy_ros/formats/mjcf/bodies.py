@@ -32,13 +32,13 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats.mjcf.meshes import MeshAssets, MeshNotWritten
-from urdfgenpy_ros.geometry import Box, Capsule, Cylinder, Geometry, Mesh, Origin, Sphere
-from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.joint import Joint, JointType
-from urdfgenpy_ros.link import Link, Shape, Visual
-from urdfgenpy_ros.transforms import quaternion_matrix
+from urdfgenpy_ros.model.floats import fmt, fmt_vec
+from urdfgenpy_ros.model.geometry import Box, Capsule, Cylinder, Geometry, Mesh, Origin, Sphere
+from urdfgenpy_ros.model.inertial import Inertial
+from urdfgenpy_ros.model.joint import Joint, JointType
+from urdfgenpy_ros.model.link import Link, Shape, Visual
+from urdfgenpy_ros.model.transforms import quaternion_matrix
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

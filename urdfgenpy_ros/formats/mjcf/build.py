@@ -30,11 +30,11 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import ValidationError
 from urdfgenpy_ros.formats.mjcf.bodies import BodyTree, WORLD
 from urdfgenpy_ros.formats.mjcf.gains import GainOption, Gains
 from urdfgenpy_ros.formats.mjcf.losses import Carried
 from urdfgenpy_ros.formats.mjcf.meshes import MeshAssets
+from urdfgenpy_ros.model.errors import ValidationError
 from urdfgenpy_ros.resources import PackageResolver
 
 if TYPE_CHECKING:

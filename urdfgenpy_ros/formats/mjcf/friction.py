@@ -20,7 +20,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.floats import fmt
+from urdfgenpy_ros.model.floats import fmt
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -16,7 +16,7 @@
 """
 Fixed links fused into their parents, each kept as a ``<site>`` where it was.
 
-The merge is :func:`urdfgenpy_ros.lumping.lump_fixed_joints` (the lumping the SDF writer
+The merge is :func:`urdfgenpy_ros.reshape.lumping.lump_fixed_joints` (the lumping the SDF writer
 matches libsdformat with). Beside it, the same merges are followed by name, to say
 where each merged link sits on the body that took it and which link each collision of
 a body came from.
@@ -26,9 +26,9 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.geometry import Origin
-from urdfgenpy_ros.lumping import lump_fixed_joints, lumps
-from urdfgenpy_ros.transforms import from_xyz_rpy, Matrix4, multiply, to_xyz_rpy
+from urdfgenpy_ros.model.geometry import Origin
+from urdfgenpy_ros.model.transforms import from_xyz_rpy, Matrix4, multiply, to_xyz_rpy
+from urdfgenpy_ros.reshape.lumping import lump_fixed_joints, lumps
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -26,8 +26,8 @@ from dataclasses import dataclass, field
 import math
 from typing import Union
 
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.floats import fmt
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.floats import fmt
 
 DEFAULT = 'default'
 """The key of a gain mapping that sets every joint not named in it."""

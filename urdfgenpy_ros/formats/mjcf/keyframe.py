@@ -27,8 +27,8 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.floats import fmt_vec
 from urdfgenpy_ros.formats.mjcf.bodies import BodyTree
+from urdfgenpy_ros.model.floats import fmt_vec
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

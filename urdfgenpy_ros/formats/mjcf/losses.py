@@ -28,8 +28,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import SourceLocation, ValidationError
-from urdfgenpy_ros.validation.findings import Findings
+from urdfgenpy_ros.model.errors import SourceLocation, ValidationError
+from urdfgenpy_ros.model.findings import Findings
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -31,7 +31,7 @@ from pathlib import Path
 from typing import Any
 
 from urdfgenpy_ros import mesh_cache
-from urdfgenpy_ros.errors import MissingDependencyError, ModelError
+from urdfgenpy_ros.model.errors import MissingDependencyError, ModelError
 
 COPIED = ('.stl', '.obj')
 CONVERTED = ('.dae', '.glb', '.gltf', '.ply')
@@ -129,7 +129,7 @@ def _key(path: Path) -> str:
 
 
 def _convert(path: Path) -> Converted:
-    from urdfgenpy_ros.mesh_read import dae_parts, load_mesh
+    from urdfgenpy_ros.model.mesh_read import dae_parts, load_mesh
     if path.suffix.lower() != '.dae':
         mesh = load_mesh(path)
         return Converted(obj_text(mesh.vertices, mesh.faces))
@@ -189,7 +189,7 @@ def _mujoco_reads(mujoco: Any, suffix: str, data: bytes) -> bytes:
 def rewritten(path: Path) -> bytes:
     """Return ``path`` (an STL or OBJ MuJoCo refuses) as trimesh reads it, written as OBJ."""
     def make() -> bytes:
-        from urdfgenpy_ros.mesh_read import load_mesh
+        from urdfgenpy_ros.model.mesh_read import load_mesh
         mesh = load_mesh(path)
         mesh.merge_vertices()
         return obj_text(mesh.vertices, mesh.faces)

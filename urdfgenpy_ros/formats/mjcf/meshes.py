@@ -32,12 +32,12 @@ import re
 from typing import Any, TYPE_CHECKING
 from urllib.parse import urlparse
 
-from urdfgenpy_ros.errors import ModelError, UrdfgenpyError
-from urdfgenpy_ros.floats import fmt_vec
 from urdfgenpy_ros.formats.mjcf.mesh_convert import (convert_many, CONVERTED, Converted,
                                                      converted, COPIED, mujoco_refusal,
                                                      needs_conversion, readable, Rgba)
-from urdfgenpy_ros.geometry import Mesh
+from urdfgenpy_ros.model.errors import ModelError, UrdfgenpyError
+from urdfgenpy_ros.model.floats import fmt_vec
+from urdfgenpy_ros.model.geometry import Mesh
 from urdfgenpy_ros.resources import PackageResolver
 
 if TYPE_CHECKING:

@@ -21,7 +21,7 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.floats import fmt, fmt_vec
+from urdfgenpy_ros.model.floats import fmt, fmt_vec
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

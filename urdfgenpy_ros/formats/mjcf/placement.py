@@ -31,7 +31,7 @@ from typing import Any
 
 from lxml import etree
 
-from urdfgenpy_ros.floats import fmt_vec
+from urdfgenpy_ros.model.floats import fmt_vec
 
 INTEGRATOR = 'implicitfast'
 

@@ -28,12 +28,12 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any, NamedTuple, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import ModelError, Severity, SourceLocation, UrdfgenpyError
-from urdfgenpy_ros.errors import ValidationError
 from urdfgenpy_ros.formats.mjcf.actuators import ACTUATOR_TYPES
 from urdfgenpy_ros.formats.mjcf.bodies import WORLD
 from urdfgenpy_ros.formats.mjcf.fusing import fused
 from urdfgenpy_ros.formats.mjcf.gains import Gains
+from urdfgenpy_ros.model.errors import ModelError, Severity, SourceLocation, UrdfgenpyError
+from urdfgenpy_ros.model.errors import ValidationError
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.formats.mjcf.fusing import Sites

@@ -34,10 +34,10 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats.mjcf.bodies import quat
-from urdfgenpy_ros.geometry import Origin
-from urdfgenpy_ros.transforms import from_xyz_rpy, multiply, to_xyz_rpy
+from urdfgenpy_ros.model.floats import fmt, fmt_vec
+from urdfgenpy_ros.model.geometry import Origin
+from urdfgenpy_ros.model.transforms import from_xyz_rpy, multiply, to_xyz_rpy
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -29,7 +29,7 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.preserved import SourceDocument
+from urdfgenpy_ros.model.preserved import SourceDocument
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -30,8 +30,6 @@ from typing import Any, Callable
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import Severity, ValidationError
-from urdfgenpy_ros.floats import fmt, fmt_vec
 from urdfgenpy_ros.formats.mjcf.actuators import declared_actuators, gears
 from urdfgenpy_ros.formats.mjcf.actuators import initial_values, write_actuators
 from urdfgenpy_ros.formats.mjcf.armature import stabilise, write_rotor_armatures
@@ -48,6 +46,8 @@ from urdfgenpy_ros.formats.mjcf.losses import Carried, find_losses
 from urdfgenpy_ros.formats.mjcf.mimic import write_equalities
 from urdfgenpy_ros.formats.mjcf.sensors import write_sensors
 from urdfgenpy_ros.formats.mjcf.source import mujoco_block, urdf_root
+from urdfgenpy_ros.model.errors import Severity, ValidationError
+from urdfgenpy_ros.model.floats import fmt, fmt_vec
 
 DEFAULT_KP = 1.0  # MuJoCo's own default for a position actuator
 DEFAULT_KV = 1.0  # and for a velocity actuator
@@ -175,7 +175,7 @@ def exclude_contacts(build: Build) -> None:
 
 def find_build_losses(build: Build) -> None:
     """Find what the MJCF cannot carry, at its source lines (errors with ``strict``)."""
-    from urdfgenpy_ros.validation.xacro_source import in_source
+    from urdfgenpy_ros.formats.xacro_source import in_source
     robot = build.robot
     file = robot.source.file if robot.source is not None else None
     findings = in_source(find_losses(robot, urdf_root(robot), file, build.carried), robot)

@@ -25,7 +25,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from urdfgenpy_ros.edits import edited
+from urdfgenpy_ros.model.edits import edited
 
 _SLOTS: dict[type, Any] = {}
 

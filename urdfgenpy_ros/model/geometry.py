@@ -20,11 +20,11 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field, KW_ONLY
 import math
 
-from urdfgenpy_ros import checks
-from urdfgenpy_ros.checks import Vec3
-from urdfgenpy_ros.errors import FrozenValueError, ModelError, SourceLocation
-from urdfgenpy_ros.preserved import Preserved
-from urdfgenpy_ros.transforms import (
+from urdfgenpy_ros.model import checks
+from urdfgenpy_ros.model.checks import Vec3
+from urdfgenpy_ros.model.errors import FrozenValueError, ModelError, SourceLocation
+from urdfgenpy_ros.model.preserved import Preserved
+from urdfgenpy_ros.model.transforms import (
     from_xyz_rpy, Matrix4, matrix_rpy, quaternion_matrix, rpy_quaternion)
 
 _ZERO: Vec3 = (0.0, 0.0, 0.0)

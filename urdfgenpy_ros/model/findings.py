@@ -20,8 +20,8 @@ from pathlib import Path
 import re
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import SourceLocation, ValidationError
-from urdfgenpy_ros.validation.codes import severity_of
+from urdfgenpy_ros.model.codes import severity_of
+from urdfgenpy_ros.model.errors import SourceLocation, ValidationError
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -29,8 +29,8 @@ from pathlib import Path
 import re
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.errors import ParseError, SourceLocation, ValidationError
 from urdfgenpy_ros.formats.xacro_tags import Attribute, attributes, is_expression, names_read
+from urdfgenpy_ros.model.errors import ParseError, SourceLocation, ValidationError
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.formats.xacro_map import Origin, XacroMap

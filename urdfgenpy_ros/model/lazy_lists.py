@@ -28,8 +28,8 @@ from __future__ import annotations
 from typing import Any, TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.extensions import Extension
-    from urdfgenpy_ros.sensors import Sensor
+    from urdfgenpy_ros.model.extensions import Extension
+    from urdfgenpy_ros.model.sensors import Sensor
 
     class LazySlots:
         """What lazy_lists and own_names give a link or joint, as type checkers see it."""

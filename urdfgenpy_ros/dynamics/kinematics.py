@@ -27,7 +27,7 @@ from collections.abc import Mapping
 import math
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.joint import JointType
+from urdfgenpy_ros.model.joint import JointType
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -27,14 +27,14 @@ from dataclasses import dataclass, field, KW_ONLY
 import math
 from typing import Protocol, TYPE_CHECKING
 
-from urdfgenpy_ros.dh_row import DHConvention, DHRow
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.geometry import Box, Cylinder, Geometry, Origin, Sphere
-from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.joint import Joint, JointLimit
-from urdfgenpy_ros.link import Collision, Link, Visual
 from urdfgenpy_ros.model import robot_class
-from urdfgenpy_ros.transforms import (
+from urdfgenpy_ros.model.dh_row import DHConvention, DHRow
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.geometry import Box, Cylinder, Geometry, Origin, Sphere
+from urdfgenpy_ros.model.inertial import Inertial
+from urdfgenpy_ros.model.joint import Joint, JointLimit
+from urdfgenpy_ros.model.link import Collision, Link, Visual
+from urdfgenpy_ros.model.transforms import (
     from_xyz_rpy, IDENTITY4, Matrix4, multiply, rotation_x, rotation_z, to_xyz_rpy,
     translation)
 

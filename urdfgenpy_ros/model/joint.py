@@ -21,18 +21,18 @@ from dataclasses import dataclass, field, KW_ONLY
 from enum import Enum
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros import checks
-from urdfgenpy_ros.checks import Vec3
-from urdfgenpy_ros.edits import counted, edited
-from urdfgenpy_ros.errors import ModelError, SourceLocation
-from urdfgenpy_ros.geometry import IDENTITY, Origin
-from urdfgenpy_ros.lazy_lists import lazy_lists, LazySlots
-from urdfgenpy_ros.owned_names import own_names
-from urdfgenpy_ros.preserved import Preserved
+from urdfgenpy_ros.model import checks
+from urdfgenpy_ros.model.checks import Vec3
+from urdfgenpy_ros.model.edits import counted, edited
+from urdfgenpy_ros.model.errors import ModelError, SourceLocation
+from urdfgenpy_ros.model.geometry import IDENTITY, Origin
+from urdfgenpy_ros.model.lazy_lists import lazy_lists, LazySlots
+from urdfgenpy_ros.model.owned_names import own_names
+from urdfgenpy_ros.model.preserved import Preserved
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.extensions import Extension
-    from urdfgenpy_ros.sensors import Sensor
+    from urdfgenpy_ros.model.extensions import Extension
+    from urdfgenpy_ros.model.sensors import Sensor
 
 
 class JointType(str, Enum):
@@ -286,7 +286,7 @@ class Joint(LazySlots):
         def type_slot(self, value: JointType) -> None:
             """Set the type's slot itself."""
 
-        # the slots of the fields a set of counts as an edit (urdfgenpy_ros.edits), set
+        # the slots of the fields a set of counts as an edit (urdfgenpy_ros.model.edits), set
         # as they are by the constructor: a new joint belongs to no robot yet
         parent_slot: str = ''
         child_slot: str = ''

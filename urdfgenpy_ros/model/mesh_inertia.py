@@ -17,7 +17,7 @@ Inertia of closed meshes, and of MeshLab's "Compute Geometric Measures" figures.
 
 The volume integrals are Eberly's (Polyhedral Mass Properties, 2002): exact for a closed,
 consistently wound triangle mesh. trimesh (optional extra ``mesh``) only reads the file,
-as RViz reads it (:mod:`urdfgenpy_ros.mesh_read`: a DAE's unit applied, its up axis not).
+as RViz reads it (:mod:`urdfgenpy_ros.model.mesh_read`: a DAE's unit applied, its up axis not).
 """
 
 from __future__ import annotations
@@ -28,9 +28,9 @@ from pathlib import Path
 from typing import Any, TypeVar
 import warnings
 
-from urdfgenpy_ros import checks
-from urdfgenpy_ros.errors import MissingDependencyError, UrdfgenpyError
-from urdfgenpy_ros.geometry import Origin
+from urdfgenpy_ros.model import checks
+from urdfgenpy_ros.model.errors import MissingDependencyError, UrdfgenpyError
+from urdfgenpy_ros.model.geometry import Origin
 
 Built = TypeVar('Built')
 """What ``cls`` builds: an ``Inertial`` (this module does not import it)."""
@@ -56,8 +56,8 @@ def _numpy() -> Any:
 
 def load_triangles(path: str | PathLike[str]) -> Any:
     """Return the mesh's triangles as an (n, 3, 3) array, placed as RViz places them."""
-    from urdfgenpy_ros.errors import ModelError
-    from urdfgenpy_ros.mesh_read import load_mesh
+    from urdfgenpy_ros.model.errors import ModelError
+    from urdfgenpy_ros.model.mesh_read import load_mesh
     try:
         import trimesh  # noqa: F401 (the extra it needs, named in its own words)
     except ImportError:

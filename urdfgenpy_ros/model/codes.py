@@ -20,7 +20,7 @@ P and X codes are the readers' (errors raise ParseError; warnings come with the 
 
 from __future__ import annotations
 
-from urdfgenpy_ros.errors import Severity
+from urdfgenpy_ros.model.errors import Severity
 
 E, W = Severity.ERROR, Severity.WARNING
 

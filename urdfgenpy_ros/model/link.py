@@ -19,18 +19,18 @@ from __future__ import annotations
 from dataclasses import dataclass, field, KW_ONLY
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros import checks
-from urdfgenpy_ros.errors import ModelTypeError, SourceLocation
-from urdfgenpy_ros.geometry import Geometry, IDENTITY, Origin
-from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.lazy_lists import lazy_lists, LazySlots
-from urdfgenpy_ros.material import Material
-from urdfgenpy_ros.owned_names import own_names
-from urdfgenpy_ros.preserved import Preserved
+from urdfgenpy_ros.model import checks
+from urdfgenpy_ros.model.errors import ModelTypeError, SourceLocation
+from urdfgenpy_ros.model.geometry import Geometry, IDENTITY, Origin
+from urdfgenpy_ros.model.inertial import Inertial
+from urdfgenpy_ros.model.lazy_lists import lazy_lists, LazySlots
+from urdfgenpy_ros.model.material import Material
+from urdfgenpy_ros.model.owned_names import own_names
+from urdfgenpy_ros.model.preserved import Preserved
 
 if TYPE_CHECKING:
-    from urdfgenpy_ros.extensions import Extension
-    from urdfgenpy_ros.sensors import Sensor
+    from urdfgenpy_ros.model.extensions import Extension
+    from urdfgenpy_ros.model.sensors import Sensor
 
 
 @dataclass(slots=True)

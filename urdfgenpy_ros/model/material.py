@@ -20,9 +20,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field, KW_ONLY
 import math
 
-from urdfgenpy_ros import checks
-from urdfgenpy_ros.errors import ModelError, SourceLocation
-from urdfgenpy_ros.preserved import Preserved
+from urdfgenpy_ros.model import checks
+from urdfgenpy_ros.model.errors import ModelError, SourceLocation
+from urdfgenpy_ros.model.preserved import Preserved
 
 Rgba = tuple[float, float, float, float]
 

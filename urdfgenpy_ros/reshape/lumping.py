@@ -29,14 +29,14 @@ from typing import TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.extensions import Extension
-from urdfgenpy_ros.floats import fmt_vec
-from urdfgenpy_ros.geometry import Origin
-from urdfgenpy_ros.inertial import Inertial
-from urdfgenpy_ros.joint import Joint, JointType
-from urdfgenpy_ros.link import Link, Shape
-from urdfgenpy_ros.transforms import (
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.extensions import Extension
+from urdfgenpy_ros.model.floats import fmt_vec
+from urdfgenpy_ros.model.geometry import Origin
+from urdfgenpy_ros.model.inertial import Inertial
+from urdfgenpy_ros.model.joint import Joint, JointType
+from urdfgenpy_ros.model.link import Link, Shape
+from urdfgenpy_ros.model.transforms import (
     from_xyz_rpy, IDENTITY4, Matrix4, multiply, to_xyz_rpy)
 
 if TYPE_CHECKING:

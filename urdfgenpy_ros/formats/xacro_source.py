@@ -37,8 +37,8 @@ from typing import NamedTuple, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.errors import ParseError, SourceLocation, ValidationError
-from urdfgenpy_ros.validation.xacro_mapped import mapped, mapped_error
+from urdfgenpy_ros.formats.xacro_mapped import mapped, mapped_error
+from urdfgenpy_ros.model.errors import ParseError, SourceLocation, ValidationError
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.formats.xacro_map import XacroMap

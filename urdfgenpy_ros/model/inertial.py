@@ -20,11 +20,11 @@ from collections.abc import Callable
 from dataclasses import dataclass, field, KW_ONLY
 import math
 
-from urdfgenpy_ros import checks
-from urdfgenpy_ros.errors import ModelError, ModelTypeError, SourceLocation
-from urdfgenpy_ros.geometry import (
+from urdfgenpy_ros.model import checks
+from urdfgenpy_ros.model.errors import ModelError, ModelTypeError, SourceLocation
+from urdfgenpy_ros.model.geometry import (
     _positive, Box, Capsule, Cylinder, Geometry, IDENTITY, Mesh, Origin, Sphere)
-from urdfgenpy_ros.preserved import Preserved
+from urdfgenpy_ros.model.preserved import Preserved
 
 INERTIA_ATTRS = ('ixx', 'ixy', 'ixz', 'iyy', 'iyz', 'izz')
 
@@ -199,14 +199,14 @@ class Inertial:
 
         Needs the ``mesh`` extra (trimesh). The origin is the centre of mass.
         """
-        from urdfgenpy_ros.mesh_inertia import inertial_from_mesh
+        from urdfgenpy_ros.model.mesh_inertia import inertial_from_mesh
         return inertial_from_mesh(filename, density, mass, scale, cls=cls)
 
     @classmethod
     def from_meshlab(cls, mass: float, volume: float, tensor: list[list[float]],
                      centre: tuple[float, float, float] | None = None) -> Inertial:
         """Return an SI inertial from MeshLab's geometric measures (mm, density 1)."""
-        from urdfgenpy_ros.mesh_inertia import inertial_from_meshlab
+        from urdfgenpy_ros.model.mesh_inertia import inertial_from_meshlab
         return inertial_from_meshlab(mass, volume, tensor, centre, cls=cls)
 
 

@@ -47,8 +47,8 @@ from pathlib import Path
 import re
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import ParseError, SourceLocation, UrdfgenpyError
-from urdfgenpy_ros.geometry import Origin
+from urdfgenpy_ros.model.errors import ParseError, SourceLocation, UrdfgenpyError
+from urdfgenpy_ros.model.geometry import Origin
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel
@@ -89,7 +89,7 @@ def _loader() -> Any:
     try:
         import yaml
     except ImportError:
-        from urdfgenpy_ros.errors import MissingDependencyError
+        from urdfgenpy_ros.model.errors import MissingDependencyError
         raise MissingDependencyError('yaml', 'dh', 'Reading an assembly file') from None
 
     class Loader(yaml.SafeLoader):
@@ -226,7 +226,7 @@ def _xacro_value(value: object) -> str:
 
 
 def _from_function(file: _File, entry: _Mapping, target: str) -> RobotModel:
-    from urdfgenpy_ros.builders import robot_from_function
+    from urdfgenpy_ros.formats.builders import robot_from_function
     try:
         return robot_from_function(target)
     except UrdfgenpyError as error:
@@ -243,8 +243,8 @@ def _module_file(target: str) -> list[str]:
 
 
 def _attach(file: _File, entry: _Mapping, robot: RobotModel, part: RobotModel) -> None:
-    from urdfgenpy_ros.assembly import attach
-    from urdfgenpy_ros.errors import ModelError
+    from urdfgenpy_ros.model.errors import ModelError
+    from urdfgenpy_ros.reshape.assembly import attach
     if 'at' not in entry:
         raise file.error(entry.line, 'at', 'every part after the first needs the link it '
                          f'attaches to (at: {robot.root.name})')

@@ -25,7 +25,7 @@ from dataclasses import dataclass, KW_ONLY
 from enum import Enum
 import math
 
-from urdfgenpy_ros.errors import ModelError
+from urdfgenpy_ros.model.errors import ModelError
 
 
 JOINT_TYPES = ('revolute', 'continuous', 'prismatic')

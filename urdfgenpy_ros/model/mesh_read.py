@@ -30,7 +30,7 @@ from os import PathLike
 from pathlib import Path
 from typing import Any
 
-from urdfgenpy_ros.errors import MissingDependencyError, ModelError
+from urdfgenpy_ros.model.errors import MissingDependencyError, ModelError
 
 
 @dataclass

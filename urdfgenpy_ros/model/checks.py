@@ -25,7 +25,7 @@ from collections.abc import Sequence
 from contextvars import ContextVar
 import math
 
-from urdfgenpy_ros.errors import ModelError
+from urdfgenpy_ros.model.errors import ModelError
 
 _ENABLED: ContextVar[bool] = ContextVar('urdfgenpy_checks', default=True)
 

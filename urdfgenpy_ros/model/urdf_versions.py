@@ -26,7 +26,7 @@ from collections.abc import Iterator
 import re
 from typing import Any, NamedTuple, TYPE_CHECKING
 
-from urdfgenpy_ros.geometry import Capsule
+from urdfgenpy_ros.model.geometry import Capsule
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -28,14 +28,14 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator, Mapping
 from typing import Any, TYPE_CHECKING, TypeVar
 
-from urdfgenpy_ros import checks
-from urdfgenpy_ros.edits import edited
-from urdfgenpy_ros.errors import ModelError, ModelTypeError, ReadWarning, SourceLocation
-from urdfgenpy_ros.extensions import Extension
-from urdfgenpy_ros.joint import Joint
-from urdfgenpy_ros.link import Link
-from urdfgenpy_ros.material import Material
-from urdfgenpy_ros.preserved import SourceDocument
+from urdfgenpy_ros.model import checks
+from urdfgenpy_ros.model.edits import edited
+from urdfgenpy_ros.model.errors import ModelError, ModelTypeError, ReadWarning, SourceLocation
+from urdfgenpy_ros.model.extensions import Extension
+from urdfgenpy_ros.model.joint import Joint
+from urdfgenpy_ros.model.link import Link
+from urdfgenpy_ros.model.material import Material
+from urdfgenpy_ros.model.preserved import SourceDocument
 
 if TYPE_CHECKING:
     from typing_extensions import Self

@@ -28,8 +28,8 @@ import os
 import sys
 from typing import TYPE_CHECKING
 
-from urdfgenpy_ros.errors import UrdfgenpyError
 from urdfgenpy_ros.model import robot_class
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel

@@ -28,12 +28,12 @@ import copy
 from dataclasses import dataclass, field
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.errors import ModelError
-from urdfgenpy_ros.extensions import Extension
-from urdfgenpy_ros.geometry import Origin
-from urdfgenpy_ros.joint import Joint, JointMimic
-from urdfgenpy_ros.material import Material
-from urdfgenpy_ros.owned_names import set_name_only
+from urdfgenpy_ros.model.errors import ModelError
+from urdfgenpy_ros.model.extensions import Extension
+from urdfgenpy_ros.model.geometry import Origin
+from urdfgenpy_ros.model.joint import Joint, JointMimic
+from urdfgenpy_ros.model.material import Material
+from urdfgenpy_ros.model.owned_names import set_name_only
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel, RobotT
