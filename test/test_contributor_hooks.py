@@ -30,7 +30,7 @@ import sys
 from helpers import REPO, require_module, require_tool
 import pytest
 
-HEADER = (REPO / 'urdfgenpy_ros' / 'errors.py').read_text().split('\n\n')[0] + '\n\n'
+HEADER = (REPO / 'urdfgenpy_ros' / 'model' / 'errors.py').read_text().split('\n\n')[0] + '\n\n'
 CLEAN = HEADER + '"""A clean module."""\n\n\ndef double(value: int) -> int:\n' \
     '    """Return twice ``value``."""\n    return 2 * value\n'
 BROKEN = '"""no header, a summary in lower case"""\nimport os\n\n\n' \

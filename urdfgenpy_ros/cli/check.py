@@ -27,11 +27,9 @@ from urdfgenpy_ros.cli._options import ignore_option, input_options
 from urdfgenpy_ros.cli._options import parse_mappings
 from urdfgenpy_ros.cli.check_reports import FileReport, json_report, junit_report
 from urdfgenpy_ros.cli.check_reports import sarif_report
-from urdfgenpy_ros.cli.check_xacro import fix_xacro
 from urdfgenpy_ros.cli.inputs import description_files
 from urdfgenpy_ros.cli.words import CLI_WORDS
 from urdfgenpy_ros.formats import DH_SUFFIXES, find_format, load
-from urdfgenpy_ros.formats.assembly_file import is_assembly
 from urdfgenpy_ros.formats.xacro_source import EXPANDED
 from urdfgenpy_ros.model.errors import ModelError, Severity, ValidationError
 from urdfgenpy_ros.model.urdf_versions import DEFAULT_TARGET, TARGETS
@@ -294,6 +292,7 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
         if not options.fix:
             return report
         if robot.source_map is not None:  # Xacro: its values are edited where written
+            from urdfgenpy_ros.cli.check_xacro import fix_xacro
             if fix_xacro(path, robot, found, mappings, options.review.search_paths,
                          options.dry_run, report, replace_file):
                 _render(report, review(load(path, mappings, options.review.search_paths),
@@ -344,6 +343,7 @@ def _repairable(count: int, listed: int) -> str:
 def _not_rewritable(path: Path, robot: Robot, count: str) -> str | None:
     """Return why ``path`` is not a file --fix can write back (None when it is plain URDF)."""
     if path.suffix.lower() in DH_SUFFIXES:
+        from urdfgenpy_ros.formats.assembly_file import is_assembly
         if is_assembly(path):
             return (f'{path}: not fixed: it is an assembly file, which only names its parts: '
                     f"{count} are in the parts' files: run "
