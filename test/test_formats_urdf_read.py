@@ -214,3 +214,14 @@ def test_unedited_elements_keep_their_text_and_edited_ones_are_written_anew() ->
     end = next(i for i in range(start, len(edited)) if edited[i].strip() == '</link>')
     assert set(changed) <= set(edited[start:end + 1])  # the link is written anew, nothing else
     assert Robot.from_urdf_string('\n'.join(edited)).get_link('link1').inertial.mass == 2.5
+
+
+def test_top_level_elements_the_model_does_not_hold_are_kept_as_read() -> None:
+    # lxml, reading the file on its own, judges which <mujoco> blocks the robot's source has
+    path = FIXTURES / 'mjcf' / 'everything.urdf'
+    expected = [etree.tostring(node) for node in etree.parse(str(path)).getroot()
+                if node.tag == 'mujoco']
+    document = Robot.from_urdf(path).extras
+    assert expected
+    assert [etree.tostring(node) for node in document.elements('mujoco')] == expected
+    assert document.elements('gazebo') == []  # blocks are the model's Extension objects

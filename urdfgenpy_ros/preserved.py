@@ -64,6 +64,16 @@ class SourceDocument(Preserved):
         self.mended = mended
         self.blocks = blocks if blocks is not None else {}
 
+    def elements(self, tag: str) -> list[Any]:
+        """
+        Return the robot's top-level ``<tag>`` elements the model does not hold, as read.
+
+        Such an element (``<mujoco>``, a vendor's block) is kept as written and copied by
+        the writers; exporters that understand it read it here, in document order.
+        """
+        return [item for item in self.order
+                if getattr(item, 'tag', None) == tag and not hasattr(item, 'element')]
+
     @property
     def outside(self) -> tuple[list[Any], list[Any]]:
         """Return the comments and processing instructions before and after the root."""
