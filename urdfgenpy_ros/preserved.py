@@ -17,7 +17,26 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, NamedTuple
+
+
+class Directive(NamedTuple):
+    """
+    A comment of the file that speaks to urdfgenpy (``<!-- urdfgenpy: ignore I205 -->``).
+
+    ``line`` and ``text`` are the comment's; ``leading`` says it stands before the first
+    element (above ``<robot>``, or first inside it). ``path`` is the element path (as
+    findings give it) of the element the comment stands directly before, other comments
+    between, and ``first`` .. ``last`` the lines that element spans; ``path`` is '' when
+    no element follows.
+    """
+
+    line: int
+    text: str
+    leading: bool
+    path: str = ''
+    first: int = 0
+    last: int = 0
 
 
 class Preserved:
@@ -49,20 +68,23 @@ class SourceDocument(Preserved):
     was one); ``order`` the robot's items in document order (links, joints, materials,
     :class:`~urdfgenpy_ros.extensions.Extension` blocks, and other nodes as they are);
     ``blocks`` lxml's text of each block's element when read, by element, to tell an
-    edited block; ``mended`` whether the reader mended the XML declaration (P102).
+    edited block; ``mended`` whether the reader mended the XML declaration (P102);
+    ``directives`` the comments that speak to urdfgenpy, in document order (:class:`Directive`).
     Writers find each node's span in ``text`` (:mod:`urdfgenpy_ros.formats.source_record`).
     """
 
-    __slots__ = ('order', 'text', 'bom', 'mended', 'blocks')
+    __slots__ = ('order', 'text', 'bom', 'mended', 'blocks', 'directives')
 
     def __init__(self, node: Any, order: list[Any], text: str, *, bom: bool = False,
-                 mended: bool = False, blocks: dict[Any, bytes] | None = None) -> None:
+                 mended: bool = False, blocks: dict[Any, bytes] | None = None,
+                 directives: list[Directive] | None = None) -> None:
         super().__init__(node)
         self.order = order
         self.text = text
         self.bom = bom
         self.mended = mended
         self.blocks = blocks if blocks is not None else {}
+        self.directives = directives if directives is not None else []
 
     def elements(self, tag: str) -> list[Any]:
         """
