@@ -225,3 +225,27 @@ def test_top_level_elements_the_model_does_not_hold_are_kept_as_read() -> None:
     assert expected
     assert [etree.tostring(node) for node in document.elements('mujoco')] == expected
     assert document.elements('gazebo') == []  # blocks are the model's Extension objects
+
+
+def _lxml_view(node: etree._Element) -> tuple:
+    return (node.tag, dict(node.attrib), node.sourceline,
+            tuple(_lxml_view(child) for child in node if isinstance(child.tag, str)))
+
+
+def _data_view(element: object) -> tuple:
+    tag, attrib, line, children = element  # type: ignore[misc]
+    return (tag, attrib, line, tuple(_data_view(child) for child in children))
+
+
+def test_source_elements_are_the_file_as_read_as_data() -> None:
+    # lxml, parsing the file on its own, judges tags, attributes, lines and child elements
+    path = FIXTURES / 'problems' / 'inertial_without_inertia.urdf'
+    root = etree.parse(str(path)).getroot()
+    robot = Robot.from_urdf(path)
+    assert _data_view(robot.extras.file_element()) == _lxml_view(root)
+    for link in robot.links:
+        node = next(item for item in root.iterchildren('link') if item.get('name') == link.name)
+        assert _data_view(link.extras.element()) == _lxml_view(node)
+    whole = robot.extras.file_element()
+    assert [item.line for item in whole.each('inertial')] == [
+        node.sourceline for node in root.iter('inertial')]

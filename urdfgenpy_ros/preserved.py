@@ -17,6 +17,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from typing import Any, NamedTuple
 
 
@@ -39,6 +40,37 @@ class Directive(NamedTuple):
     last: int = 0
 
 
+class SourceElement(NamedTuple):
+    """
+    An element of the file as read, as data: its tag, attributes, line and child elements.
+
+    What the model does not hold (an ``<inertial>`` urdfdom drops, a ``<compiler>`` inside
+    a ``<mujoco>`` block) is read through these, never through the parser's tree.
+    """
+
+    tag: str
+    attrib: dict[str, str]
+    line: int
+    children: tuple[SourceElement, ...]
+
+    def find(self, tag: str) -> SourceElement | None:
+        """Return the first child element named ``tag``, or None."""
+        return next((child for child in self.children if child.tag == tag), None)
+
+    def each(self, tag: str) -> Iterator[SourceElement]:
+        """Yield this element and every element inside it named ``tag``, in document order."""
+        if self.tag == tag:
+            yield self
+        for child in self.children:
+            yield from child.each(tag)
+
+
+def source_element(node: Any) -> SourceElement:
+    """Return the element ``node`` of the file as read, as :class:`SourceElement` data."""
+    return SourceElement(node.tag, dict(node.attrib), node.sourceline or 0, tuple(
+        [source_element(child) for child in node if isinstance(child.tag, str)]))
+
+
 class Preserved:
     """
     The source element of a model element and a by-value snapshot of what it read.
@@ -54,6 +86,10 @@ class Preserved:
     def __init__(self, node: Any, snapshot: tuple | None = None) -> None:
         self.node = node
         self.snapshot = snapshot
+
+    def element(self) -> SourceElement:
+        """Return the source element, as read, as data (what the model may not hold)."""
+        return source_element(self.node)
 
     def __repr__(self) -> str:
         """Return the source tag and line."""
@@ -95,6 +131,10 @@ class SourceDocument(Preserved):
         """
         return [item for item in self.order
                 if getattr(item, 'tag', None) == tag and not hasattr(item, 'element')]
+
+    def file_element(self) -> SourceElement:
+        """Return the file's top element as read (``<robot>``, or what wraps it), as data."""
+        return source_element(self.node.getroottree().getroot())
 
     @property
     def outside(self) -> tuple[list[Any], list[Any]]:
