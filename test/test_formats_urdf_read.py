@@ -16,6 +16,7 @@
 
 from __future__ import annotations
 
+import copy
 from pathlib import Path
 import re
 
@@ -225,6 +226,11 @@ def test_top_level_elements_the_model_does_not_hold_are_kept_as_read() -> None:
     assert expected
     assert [etree.tostring(node) for node in document.elements('mujoco')] == expected
     assert document.elements('gazebo') == []  # blocks are the model's Extension objects
+    assert document.elements('link') == []
+    copied = copy.deepcopy(Robot.from_urdf(path))  # its tree and its items are separate copies
+    nodes = copied.extras.elements('mujoco')
+    assert [etree.tostring(node) for node in nodes] == expected
+    assert all(node.getparent() is copied.extras.node for node in nodes)  # what writers copy
 
 
 def _lxml_view(node: etree._Element) -> tuple:

@@ -129,8 +129,9 @@ class SourceDocument(Preserved):
         Such an element (``<mujoco>``, a vendor's block) is kept as written and copied by
         the writers; exporters that understand it read it here, in document order.
         """
-        return [item for item in self.order
-                if getattr(item, 'tag', None) == tag and not hasattr(item, 'element')]
+        return [node for item, node in zip(self.order, self.node)  # the nodes writers copy
+                if node.tag == tag and not hasattr(item, 'extras')  # no link, joint, material
+                and not hasattr(item, 'element')]  # nor a block (Extension)
 
     def file_element(self) -> SourceElement:
         """Return the file's top element as read (``<robot>``, or what wraps it), as data."""
