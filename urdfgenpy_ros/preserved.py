@@ -129,9 +129,13 @@ class SourceDocument(Preserved):
         Such an element (``<mujoco>``, a vendor's block) is kept as written and copied by
         the writers; exporters that understand it read it here, in document order.
         """
+        return [node for node in self.unknown_elements() if node.tag == tag]
+
+    def unknown_elements(self) -> list[Any]:
+        """Return every top-level element the model does not hold, as read, in document order."""
         return [node for item, node in zip(self.order, self.node)  # the nodes writers copy
-                if node.tag == tag and not hasattr(item, 'extras')  # no link, joint, material
-                and not hasattr(item, 'element')]  # nor a block (Extension)
+                if isinstance(node.tag, str) and not hasattr(item, 'extras')  # no link, joint,
+                and not hasattr(item, 'element')]  # material, nor a block (Extension)
 
     def file_element(self) -> SourceElement:
         """Return the file's top element as read (``<robot>``, or what wraps it), as data."""
