@@ -155,3 +155,20 @@ def test_a_code_that_does_not_exist_is_said_not_silently_ignored(tmp_path: Path)
     assert refused.exit_code == 2 and 'I250 is not a finding code' in refused.output
     lower = CliRunner().invoke(main, ['check', '--ignore', 'c401', str(path)])
     assert lower.exit_code == 0 and '1 suppressed' in lower.output
+
+
+def test_the_reader_keeps_the_comments_that_speak_to_it_as_data() -> None:
+    text = ('<?xml version="1.0"?>\n<!-- urdfgenpy: ignore-file I205 -->\n'
+            + TWO_AXES.replace('  <joint name="shoulder"', IGNORE_SHOULDER).split('\n', 1)[1]
+            + '\n<!-- a plain comment -->')
+    document = Robot.from_urdf_string(text).extras
+    # lxml, reading the same text on its own, judges lines, texts and the element that follows
+    root = etree.fromstring(text.encode())
+    comments = [node for node in [*root.itersiblings(preceding=True), *root.iter(etree.Comment)]
+                if 'urdfgenpy' in (node.text or '')]
+    assert [(item.line, item.text) for item in document.directives] == [
+        (node.sourceline, node.text) for node in comments]
+    assert [item.leading for item in document.directives] == [True, False]
+    shoulder = comments[1].getnext()
+    assert document.directives[1][3:] == ("/robot/joint[@name='shoulder']", shoulder.sourceline,
+                                          max(node.sourceline for node in shoulder.iter()))

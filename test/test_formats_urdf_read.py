@@ -16,6 +16,7 @@
 
 from __future__ import annotations
 
+import copy
 from pathlib import Path
 import re
 
@@ -214,3 +215,43 @@ def test_unedited_elements_keep_their_text_and_edited_ones_are_written_anew() ->
     end = next(i for i in range(start, len(edited)) if edited[i].strip() == '</link>')
     assert set(changed) <= set(edited[start:end + 1])  # the link is written anew, nothing else
     assert Robot.from_urdf_string('\n'.join(edited)).get_link('link1').inertial.mass == 2.5
+
+
+def test_top_level_elements_the_model_does_not_hold_are_kept_as_read() -> None:
+    # lxml, reading the file on its own, judges which <mujoco> blocks the robot's source has
+    path = FIXTURES / 'mjcf' / 'everything.urdf'
+    expected = [etree.tostring(node) for node in etree.parse(str(path)).getroot()
+                if node.tag == 'mujoco']
+    document = Robot.from_urdf(path).extras
+    assert expected
+    assert [etree.tostring(node) for node in document.elements('mujoco')] == expected
+    assert document.elements('gazebo') == []  # blocks are the model's Extension objects
+    assert document.elements('link') == []
+    copied = copy.deepcopy(Robot.from_urdf(path))  # its tree and its items are separate copies
+    nodes = copied.extras.elements('mujoco')
+    assert [etree.tostring(node) for node in nodes] == expected
+    assert all(node.getparent() is copied.extras.node for node in nodes)  # what writers copy
+
+
+def _lxml_view(node: etree._Element) -> tuple:
+    return (node.tag, dict(node.attrib), node.sourceline,
+            tuple(_lxml_view(child) for child in node if isinstance(child.tag, str)))
+
+
+def _data_view(element: object) -> tuple:
+    tag, attrib, line, children = element  # type: ignore[misc]
+    return (tag, attrib, line, tuple(_data_view(child) for child in children))
+
+
+def test_source_elements_are_the_file_as_read_as_data() -> None:
+    # lxml, parsing the file on its own, judges tags, attributes, lines and child elements
+    path = FIXTURES / 'problems' / 'inertial_without_inertia.urdf'
+    root = etree.parse(str(path)).getroot()
+    robot = Robot.from_urdf(path)
+    assert _data_view(robot.extras.file_element()) == _lxml_view(root)
+    for link in robot.links:
+        node = next(item for item in root.iterchildren('link') if item.get('name') == link.name)
+        assert _data_view(link.extras.element()) == _lxml_view(node)
+    whole = robot.extras.file_element()
+    assert [item.line for item in whole.each('inertial')] == [
+        node.sourceline for node in root.iter('inertial')]

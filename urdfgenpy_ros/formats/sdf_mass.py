@@ -23,7 +23,7 @@ what that conversion does.
 
 from __future__ import annotations
 
-from typing import Any, NamedTuple, TYPE_CHECKING
+from typing import NamedTuple, TYPE_CHECKING
 
 from urdfgenpy_ros.model.errors import SourceLocation
 from urdfgenpy_ros.model.geometry import Origin
@@ -46,22 +46,23 @@ def mass_only(link: Link) -> MassOnly | None:
     extras = link.extras
     if link.inertial is not None or extras is None:
         return None
-    node: Any = extras.node
-    for child in node.iterchildren('inertial'):
-        if next(child.iterchildren('inertia'), None) is not None:
+    for child in extras.element().children:
+        if child.tag != 'inertial':
+            continue
+        if child.find('inertia') is not None:
             return None
-        mass = next(child.iterchildren('mass'), None)
+        mass = child.find('mass')
         try:
-            value = float(mass.get('value')) if mass is not None else None
-            origin = next(child.iterchildren('origin'), None)
+            value = float(mass.attrib['value']) if mass is not None else None
+            origin = child.find('origin')
             pose = Origin() if origin is None else Origin(
-                xyz=_numbers(origin.get('xyz')), rpy=_numbers(origin.get('rpy')))
-        except (TypeError, ValueError):
+                xyz=_numbers(origin.attrib.get('xyz')), rpy=_numbers(origin.attrib.get('rpy')))
+        except (KeyError, TypeError, ValueError):
             return None
         if value is None or not value > 0.0:
             return None
         file = link.source.file if link.source is not None else None
-        return MassOnly(value, pose, SourceLocation(file, child.sourceline, 1))
+        return MassOnly(value, pose, SourceLocation(file, child.line, 1))
     return None
 
 

@@ -31,6 +31,7 @@ from typing import Any, TYPE_CHECKING
 from lxml import etree
 
 from urdfgenpy_ros.formats._parse import parse_xml, Source
+from urdfgenpy_ros.formats.urdf_comments import read_directives
 from urdfgenpy_ros.formats.urdf_readers import READERS
 from urdfgenpy_ros.formats.urdf_schema import GEOMETRY, record, unusable
 from urdfgenpy_ros.model import checks
@@ -193,7 +194,7 @@ class _Reader:
             root, order, text, bom=bom,
             mended=any(warning.code == 'P102' for warning in self.warnings),
             blocks={block.element: etree.tostring(block.element, with_tail=False)
-                    for block in blocks})
+                    for block in blocks}, directives=read_directives(root, text))
         return robot
 
     @staticmethod

@@ -228,8 +228,7 @@ def _unknown_elements(piece: RobotModel) -> list[Extension]:
     """Return the part's top-level elements the model does not hold, to keep them."""
     if piece.extras is None:
         return []
-    return [Extension(copy.deepcopy(node)) for node in piece.extras.node
-            if isinstance(node.tag, str) and node.tag not in _MODEL_TAGS]
+    return [Extension(copy.deepcopy(node)) for node in piece.extras.unknown_elements()]
 
 
 def _clashes(base: RobotModel, piece: RobotModel, joint_name: str) -> list[str]:

@@ -132,8 +132,6 @@ def _as_written(robot: RobotModel, findings: Findings, search_paths: list[Any],
     in a folder of its own (see _quiet). Skipped when the robot is not that file's (Xacro,
     or edited since it was read).
     """
-    from lxml import etree
-
     from urdfgenpy_ros.formats.urdf_edits import is_as_read
     source = robot.source.file if robot.source is not None else None
     document = robot.extras
@@ -144,10 +142,10 @@ def _as_written(robot: RobotModel, findings: Findings, search_paths: list[Any],
     path = Path(source).resolve()
     resolver = PackageResolver(search_paths)
     assets: dict[str, bytes] = {}
-    uses_meshdir = False
-    for node in document.node.getroottree().iter(etree.Element):  # the file as read
-        uses_meshdir |= node.tag == 'compiler' and node.get('meshdir') is not None
-        uri = node.get('filename', '') if node.tag == 'mesh' else ''
+    whole = document.file_element()  # the file as read
+    uses_meshdir = any(node.attrib.get('meshdir') is not None for node in whole.each('compiler'))
+    for node in whole.each('mesh'):
+        uri = node.attrib.get('filename', '')
         if '://' in uri:
             try:
                 assets[uri] = resolver.resolve(uri, base).read_bytes()

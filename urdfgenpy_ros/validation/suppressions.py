@@ -31,9 +31,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 import re
-from typing import Any, TYPE_CHECKING
-
-from lxml import etree
+from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.model.codes import CODES
 from urdfgenpy_ros.model.errors import ValidationError
@@ -44,8 +42,6 @@ if TYPE_CHECKING:
 _DIRECTIVE = re.compile(r'^\s*urdfgenpy\s*:\s*(ignore-file|ignore)\b(.*)$', re.DOTALL)
 _CODE = re.compile(r'[A-Z]\d{3}')
 _CODE_LIKE = re.compile(r'[A-Za-z][0-9A-Za-z]{3}')  # I205, and typos such as I2O5 or i205
-_NAMED = ('link', 'joint', 'material')
-_NUMBERED = ('visual', 'collision')
 
 
 @dataclass(frozen=True)
@@ -123,76 +119,33 @@ def parse_codes(text: str) -> frozenset[str]:
 def read_suppressions(robot: RobotModel, ignored: Iterable[str] = ()) -> Suppressions:
     """Return the suppression comments of the file ``robot`` was read from."""
     result = Suppressions(ignored=frozenset(ignored))
-    extras = robot.extras
-    if extras is None:
+    document = robot.extras
+    if document is None:
         return result
-    root = extras.node
     file_codes: set[str] = set()
-    leading = list(extras.outside[0])
-    for child in root:
-        if isinstance(child.tag, str):
-            break
-        leading.append(child)
-    for node in leading:
-        found = _directive(node)
-        if found is not None and found[0] == 'ignore-file':
-            file_codes |= found[1]
-    for node in [*extras.outside[0], *root.iter(etree.Comment)]:
-        found = _directive(node)
+    for comment in document.directives:
+        found = _directive(comment.text)
         if found is None:
             continue
-        result.unknown += [(node.sourceline or 0, word) for word in _unknown(node)]
-        if found[0] != 'ignore':
-            continue
-        target = _next_element(node)
-        if target is not None:
-            result.scopes.append(Scope(_path(target, root), target.sourceline or 0,
-                                       _last_line(target), found[1]))
+        if found[0] == 'ignore-file' and comment.leading:
+            file_codes |= found[1]
+        result.unknown += [(comment.line, word) for word in _unknown(comment.text)]
+        if found[0] == 'ignore' and comment.path:
+            result.scopes.append(Scope(comment.path, comment.first, comment.last, found[1]))
     result.file_codes = frozenset(file_codes)
     return result
 
 
-def _directive(node: Any) -> tuple[str, frozenset[str]] | None:
-    if not isinstance(node, etree._Comment):
-        return None
-    match = _DIRECTIVE.match(node.text or '')
+def _directive(text: str) -> tuple[str, frozenset[str]] | None:
+    match = _DIRECTIVE.match(text)
     if match is None:
         return None
     return match.group(1), frozenset(_CODE.findall(match.group(2)))
 
 
-def _unknown(node: Any) -> list[str]:
+def _unknown(text: str) -> list[str]:
     """Return the words of a directive that look like finding codes but are none."""
-    match = _DIRECTIVE.match(node.text or '')
+    match = _DIRECTIVE.match(text)
     words = re.split(r'[\s,]+', match.group(2).strip()) if match else []
     return [word for word in words if _CODE_LIKE.fullmatch(word) and word not in CODES
             and sum(char.isdigit() for char in word) >= 2]
-
-
-def _next_element(node: Any) -> Any:
-    """Return the element a comment stands directly before (skipping other comments)."""
-    sibling = node.getnext()
-    while sibling is not None and not isinstance(sibling.tag, str):
-        sibling = sibling.getnext()
-    return sibling
-
-
-def _last_line(node: Any) -> int:
-    return max((item.sourceline or 0) for item in node.iter())
-
-
-def _path(node: Any, root: Any) -> str:
-    """Return the element path the validator uses (``/robot/link[@name='arm']/inertial``)."""
-    steps = []
-    while node is not None and node is not root:
-        tag = etree.QName(node).localname
-        parent = node.getparent()
-        if tag in _NAMED and parent is root:
-            steps.append(f"{tag}[@name='{node.get('name', '')}']")
-        elif tag in _NUMBERED:
-            same = [item for item in parent if isinstance(item.tag, str) and item.tag == tag]
-            steps.append(f'{tag}[{same.index(node) + 1}]')
-        else:
-            steps.append(tag)
-        node = parent
-    return '/robot' + ''.join(f'/{step}' for step in reversed(steps))
