@@ -260,32 +260,9 @@ def _climb(torque: _Torque, model: ChainModel, seeds: numpy.ndarray, best: numpy
         before = best[active].copy()
         for moved in columns:
             low, high = bounds[moved]
-            climbing = seeds[active]
-            if moved in single or moved in linear:
-                tries = numpy.array([[low, high]]).repeat(len(active), axis=0)
-            else:
-                tries = numpy.linspace(low, high, SAMPLES)[None, :].repeat(len(active), axis=0)
-            link = rigid.link_of(moved) if rigid is not None else None
-            current = climbing[:, moved, None]
-            if rigid is None:
-                if moved in turning:
-                    tries = numpy.concatenate(
-                        [tries, _turning_points(torque, climbing, moved, low, high)], axis=1)
-                trial = numpy.repeat(climbing, tries.shape[1], axis=0)
-                trial[:, moved] = tries.ravel()
-                values = numpy.abs(torque(trial)).reshape(len(active), -1)
-            elif link is None:  # a column that moves several links: each moved in turn
-                if moved in turning:
-                    probes = rigid.sweep(z[active], d[active], moved, PROBES[None, :] - current)
-                    tries = numpy.concatenate([tries, _extremes(probes, low, high)], axis=1)
-                values = numpy.abs(rigid.sweep(z[active], d[active], moved, tries - current))
-            else:
-                factor = float(rigid.multiplier[link])
-                shape = rigid.coefficients(z[active], d[active], link)
-                if moved in turning:
-                    probes = along(shape, factor * (PROBES[None, :] - current))
-                    tries = numpy.concatenate([tries, _extremes(probes, low, high)], axis=1)
-                values = numpy.abs(along(shape, factor * (tries - current)))
+            tries, values = _try_column(torque, rigid, seeds[active], z[active], d[active],
+                                        moved, (low, high), moved in turning,
+                                        moved in single or moved in linear)
             pick = values.argmax(axis=1)
             top = values[numpy.arange(len(active)), pick]
             better = top > best[active]
@@ -299,6 +276,38 @@ def _climb(torque: _Torque, model: ChainModel, seeds: numpy.ndarray, best: numpy
         if not len(active):
             break
     return seeds, best
+
+
+def _try_column(torque: _Torque, rigid: RigidTorque | None, climbing: numpy.ndarray,
+                z: numpy.ndarray, d: numpy.ndarray, moved: int, bounds: tuple[float, float],
+                turning: bool, ends_only: bool) -> tuple[numpy.ndarray, numpy.ndarray]:
+    """Return the values column ``moved`` tries from each climbing seed, and ``|torque|`` there."""
+    low, high = bounds
+    count = len(climbing)
+    if ends_only:
+        tries = numpy.array([[low, high]]).repeat(count, axis=0)
+    else:
+        tries = numpy.linspace(low, high, SAMPLES)[None, :].repeat(count, axis=0)
+    link = rigid.link_of(moved) if rigid is not None else None
+    current = climbing[:, moved, None]
+    if rigid is None:
+        if turning:
+            tries = numpy.concatenate(
+                [tries, _turning_points(torque, climbing, moved, low, high)], axis=1)
+        trial = numpy.repeat(climbing, tries.shape[1], axis=0)
+        trial[:, moved] = tries.ravel()
+        return tries, numpy.abs(torque(trial)).reshape(count, -1)
+    if link is None:  # a column that moves several links: each moved in turn
+        if turning:
+            probes = rigid.sweep(z, d, moved, PROBES[None, :] - current)
+            tries = numpy.concatenate([tries, _extremes(probes, low, high)], axis=1)
+        return tries, numpy.abs(rigid.sweep(z, d, moved, tries - current))
+    factor = float(rigid.multiplier[link])
+    shape = rigid.coefficients(z, d, link)
+    if turning:
+        probes = along(shape, factor * (PROBES[None, :] - current))
+        tries = numpy.concatenate([tries, _extremes(probes, low, high)], axis=1)
+    return tries, numpy.abs(along(shape, factor * (tries - current)))
 
 
 def _wrapped(values: numpy.ndarray, bounds: numpy.ndarray) -> numpy.ndarray:

@@ -29,7 +29,7 @@ which (positions, and so limits, kept or negated). Mimic multipliers and offsets
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 import copy
 from dataclasses import dataclass, replace
 from os import PathLike
@@ -109,6 +109,37 @@ def mirror_subtree(robot, root: str, plane: str = 'xz', frame: str | None = None
     links = robot.subtree(root)
     joints = [top, *(joint for joint in robot.joints
                      if joint.parent in {link.name for link in links})]
+    renamed, link_names, joint_names = _new_names(robot, root, links, joints, rename)
+    flip = _flip(PLANES[plane])
+    poses = _zero_poses(robot)
+    at = poses[at_frame or robot.root.name]
+    reflection = general_multiply(at, flip, inverse(at))  # S in the root's frame
+    parent = poses[top.parent]
+    first = general_multiply(inverse(parent), reflection, parent, top.origin.matrix(), flip)
+    piece = _copy(robot, links, joints)
+    meshes = MeshWriter(robot, plane, mesh_folder, search_paths)
+    signs = _mirror_piece(piece, top.name, first, flip, meshes, renamed)
+    blocks = _robot_blocks(robot, joint_names, link_names, renamed)
+    _rename_texts(piece, renamed)
+    _rename(piece, _Renaming(link_names, joint_names))
+    _rename_sensors(piece, renamed)
+    meshes.commit()  # the last step that can fail: all mirrored files, or none
+    for link in piece.links:
+        robot.add_link(link)
+    for joint in piece.joints:
+        robot.add_joint(joint)
+    robot.extensions.extend(blocks)
+    return [MirroredJoint(joint_names[name], name, sign) for name, sign in signs.items()
+            if sign]
+
+
+def _new_names(robot, root: str, links: list, joints: list, rename: dict[str, str]
+               ) -> tuple[Callable[[str], str], dict[str, str], dict[str, str]]:
+    """
+    Return the renamer and the copy's link and joint names, old to new.
+
+    :raises ModelError: for names the copy would share, or take from the robot (all listed).
+    """
     shapes = {shape.name for link in links for shape in (*link.visuals, *link.collisions)
               if shape.name}
     renamed = limb_renamer(rename, [*(item.name for item in (*links, *joints)), *shapes],
@@ -124,17 +155,15 @@ def mirror_subtree(robot, root: str, plane: str = 'xz', frame: str | None = None
         shown = ', '.join(taken[:6]) + (f' and {len(taken) - 6} more' if len(taken) > 6 else '')
         raise ModelError(f'mirror: the copy of {root!r} would take names in use: {shown} '
                          f'(pass rename= that changes them; it was {rename!r})')
-    flip = _flip(PLANES[plane])
-    poses = _zero_poses(robot)
-    at = poses[at_frame or robot.root.name]
-    reflection = general_multiply(at, flip, inverse(at))  # S in the root's frame
-    parent = poses[top.parent]
-    first = general_multiply(inverse(parent), reflection, parent, top.origin.matrix(), flip)
-    piece = _copy(robot, links, joints)
-    meshes = MeshWriter(robot, plane, mesh_folder, search_paths)
+    return renamed, link_names, joint_names
+
+
+def _mirror_piece(piece, top: str, first: Matrix4, flip: Matrix4, meshes: MeshWriter,
+                  renamed: Callable[[str], str]) -> dict[str, int]:
+    """Mirror the copied joints, sensors, blocks and links in place; return each joint's sign."""
     signs: dict[str, int] = {}
     for joint in piece.joints:
-        joint.origin = (origin_of(first, joint.origin) if joint.name == top.name
+        joint.origin = (origin_of(first, joint.origin) if joint.name == top
                         else _conjugate(joint.origin, flip))
         signs[joint.name] = _mirror_motion(joint, flip)
     for joint in piece.joints:
@@ -148,18 +177,7 @@ def mirror_subtree(robot, root: str, plane: str = 'xz', frame: str | None = None
         _mirror_link(link, flip, meshes)
         for shape in (*link.visuals, *link.collisions):
             shape.name = renamed(shape.name) if shape.name else shape.name
-    blocks = _robot_blocks(robot, joint_names, link_names, renamed)
-    _rename_texts(piece, renamed)
-    _rename(piece, _Renaming(link_names, joint_names))
-    _rename_sensors(piece, renamed)
-    meshes.commit()  # the last step that can fail: all mirrored files, or none
-    for link in piece.links:
-        robot.add_link(link)
-    for joint in piece.joints:
-        robot.add_joint(joint)
-    robot.extensions.extend(blocks)
-    return [MirroredJoint(joint_names[name], name, sign) for name, sign in signs.items()
-            if sign]
+    return signs
 
 
 def _zero_poses(robot) -> dict[str, Matrix4]:

@@ -23,6 +23,7 @@ import os
 from pathlib import Path
 import posixpath
 import shutil
+from typing import Any
 
 from urdfgenpy_ros.formats._xml import fragment, INDENT
 from urdfgenpy_ros.formats.urdf import UrdfWriter
@@ -180,7 +181,7 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
     with their values (and the declared defaults of the others), which it says.
     """
     try:
-        import jinja2
+        import jinja2  # noqa: F401 (refused before any work, not at the templates)
     except ImportError:
         raise MissingDependencyError('jinja2', 'scaffold', 'urdfgenpy init') from None
     from urdfgenpy_ros.viewer.pictures import package_pictures
@@ -200,18 +201,29 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
                   for path, data in urdf_files.items()})
     warnings += _borrowed_notes(files, borrowed)
     depends += [package for package, _ in borrowed.values()]
+    context = _context(spec, robot, source, files, xacro_file, includes, baked,
+                       sorted(pictures), sorted({*LAUNCH_DEPENDS, *spec.dependencies, *depends}))
+    files.update(_rendered(root, spec, context))
+    files.setdefault('meshes/.gitkeep', b'')
+    return files, warnings
+
+
+def _context(spec: PackageSpec, robot: Robot, source: str, files: dict[str, bytes],
+             xacro_file: str, includes: Any, baked: list[tuple[str, str, bool]],
+             pictures: list[str], depends: list[str]) -> dict[str, Any]:
+    """Return what the templates are rendered with."""
     sensors = sensors_of(robot)  # built, or read back from <gazebo> blocks
-    context = {
+    return {
         'name': spec.name, 'robot_name': robot.name, 'root_link': robot.root.name,
         'macro_name': macro_name(robot),
         'build_type': spec.build_type, 'maintainer_name': spec.maintainer_name,
         'maintainer_email': spec.maintainer_email, 'license': spec.license,
         'description': spec.description or f'Robot description of {robot.name}',
         'source': _shown(source), 'xacro_file': xacro_file,
-        'pictures': sorted(pictures),
+        'pictures': pictures,
         'includes': includes, 'mesh_count': sum(p.startswith('meshes/') for p in files),
         'year': datetime.date.today().year,
-        'exec_depends': sorted({*LAUNCH_DEPENDS, *spec.dependencies, *depends}),
+        'exec_depends': depends,
         'baked_arguments': baked,
         'sensor_displays': [{'plugin': _DISPLAYS[sensor.kind], 'name': sensor.name,
                              'topic': sensor.topic if sensor.topic.startswith('/')
@@ -222,17 +234,22 @@ def render_package(spec: PackageSpec, robot: Robot, source: str = 'the built-in 
                            'gz_type': _BRIDGE_TYPES[sensor.kind][1]}
                           for sensor in sensors if sensor.kind in _BRIDGE_TYPES],
     }
+
+
+def _rendered(root: Path, spec: PackageSpec, context: dict[str, Any]) -> dict[str, bytes]:
+    """Return the files the templates of the package's build type make."""
+    import jinja2
     environment = jinja2.Environment(loader=jinja2.FileSystemLoader(str(root)),
                                      undefined=jinja2.StrictUndefined,
                                      keep_trailing_newline=True, autoescape=False)
+    files = {}
     for folder in ('common', spec.build_type):
         for path in sorted((root / folder).rglob('*.jinja')):
             relative = path.relative_to(root / folder).as_posix()[:-len('.jinja')]
             relative = relative.replace('__name__', spec.name)
             template = environment.get_template(path.relative_to(root).as_posix())
             files[relative] = template.render(context).encode()
-    files.setdefault('meshes/.gitkeep', b'')
-    return files, warnings
+    return files
 
 
 def _baked_note(baked: list[tuple[str, str, bool]]) -> list[str]:
