@@ -406,7 +406,7 @@ def _open(model: str, xacro_args: list[str], package_paths: list[str]
     if not model:
         from urdfgenpy_ros.examples import pan_tilt_unit
         return pan_tilt_unit(), []
-    robot = cast(Robot, open_description(model, xacro_args, package_paths))
+    robot = cast('Robot', open_description(model, xacro_args, package_paths))
     return robot, files_read(model, robot)
 
 

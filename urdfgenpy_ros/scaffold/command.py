@@ -133,7 +133,7 @@ def _robot(source: str, given: list[str], package_paths: list[str]) -> Robot:
     if not source:
         from urdfgenpy_ros.examples import pan_tilt_unit
         return pan_tilt_unit()
-    return cast(Robot, open_description(source, given, package_paths))
+    return cast('Robot', open_description(source, given, package_paths))
 
 
 def xacro_arguments(args: argparse.Namespace) -> list[str]:
