@@ -38,6 +38,7 @@ from urdfgenpy_ros.scaffold.verb import ScaffoldVerb
 
 INJECT = """
 import sys
+import urdfgenpy_ros.formats.inertia_check as inertia_check
 import urdfgenpy_ros.validation.checklist as checklist
 
 
@@ -45,7 +46,7 @@ def injected(*arguments):
     raise {kind}('injected bug')
 
 
-checklist.check_inertia = injected
+checklist.check_inertia = inertia_check.check_inertia = injected  # the review's, a target's
 """
 RUN_CLI = ('import sys\nfrom urdfgenpy_ros.cli import main\n'
            'main(sys.argv[1:], prog_name="urdfgenpy")\n')

@@ -32,9 +32,10 @@ from registry_robots import absolute_meshes, robot_id, robots, search_paths
 from urdfgenpy_ros import ParseError, Robot
 from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.formats import load
+from urdfgenpy_ros.formats.sdf_conversion import sdformat_conversion
 from urdfgenpy_ros.model.findings import Findings
 from urdfgenpy_ros.validation.mujoco_preflight import _by_rules
-from urdfgenpy_ros.validation.preflight import preflight, sdformat_conversion
+from urdfgenpy_ros.validation.preflight import preflight
 
 PREFLIGHT = FIXTURES / 'preflight'
 

@@ -33,7 +33,7 @@ from urdfgenpy_ros.formats.options import Option
 from urdfgenpy_ros.formats.prepare import tree_review
 from urdfgenpy_ros.formats.table import Format, registered
 from urdfgenpy_ros.model.errors import UrdfgenpyError
-from urdfgenpy_ros.validation.checklist import Review
+from urdfgenpy_ros.model.review import ReviewRecord
 
 LIMIT = ('lower', 'upper', 'effort', 'velocity')
 
@@ -58,7 +58,7 @@ def _write(robot: Robot, path: Any, indent: int | None = None) -> str:
     return text
 
 
-def _prepare(robot: Robot, options: Any) -> Review:
+def _prepare(robot: Robot, options: Any) -> ReviewRecord:
     found = tree_review(robot)  # long names are frowned on: check lists them, convert says
     found.findings += [ValidationError(
         'Y901', Severity.WARNING, f'link {link.name!r}', link.source or SourceLocation(),

@@ -70,17 +70,7 @@ USE_ROBOT = (PACKAGE, f'{PACKAGE}.dh', f'{PACKAGE}.cli.', f'{PACKAGE}.publisher.
              f'{PACKAGE}.viewer.', f'{PACKAGE}.examples')
 """What may import the facade, ``urdfgenpy_ros.robot``, even for types (a module, or a
 package's prefix ending in a dot)."""
-CYCLE_LEFT = {
-    # a format's prepare is a review (validation/'s Review) of what the target refuses, and
-    # the MJCF writer refuses what MuJoCo refuses with validation's checks; validation/
-    # reads what the writers make (pre-flights, --fix's write)
-    (f'{PACKAGE}.formats.mjcf', f'{PACKAGE}.validation.checklist'),
-    (f'{PACKAGE}.formats.mjcf.prepare', f'{PACKAGE}.validation'),
-    (f'{PACKAGE}.formats.mjcf.prepare', f'{PACKAGE}.validation.checklist'),
-    (f'{PACKAGE}.formats.prepare', f'{PACKAGE}.validation.checklist'),
-    (f'{PACKAGE}.formats.prepare', f'{PACKAGE}.validation.sdf_refusals'),
-    (f'{PACKAGE}.formats.table', f'{PACKAGE}.validation.checklist'),
-}
+CYCLE_LEFT: set[tuple[str, str]] = set()
 """The import edges that close a cycle of packages, each still to cut (and why it is there)."""
 
 

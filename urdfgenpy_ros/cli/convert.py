@@ -34,8 +34,8 @@ from urdfgenpy_ros.cli.words import CLI_WORDS
 from urdfgenpy_ros.formats.prepare import tree_review
 from urdfgenpy_ros.formats.table import Format, writer_for
 from urdfgenpy_ros.model.errors import UrdfgenpyError
+from urdfgenpy_ros.model.review import ReviewRecord
 from urdfgenpy_ros.robot import Robot
-from urdfgenpy_ros.validation.checklist import Review
 from urdfgenpy_ros.validation.fix_output import DEFAULT_RADIUS, fix_for_output
 
 
@@ -125,7 +125,7 @@ def _transformed(robot: Robot, row: Format, run: ConvertRun,
     return robot
 
 
-def _say(found: Review, refusal: Callable[[str], str]) -> None:
+def _say(found: ReviewRecord, refusal: Callable[[str], str]) -> None:
     """Print the review's lines on stderr; refuse in one line when it refuses."""
     for line in found.lines:
         click.echo(line, err=True)

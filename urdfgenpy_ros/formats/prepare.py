@@ -16,10 +16,13 @@
 """
 What a target format refuses, found before anything is written: the rows' ``prepare``.
 
-Each returns a :class:`~urdfgenpy_ros.validation.checklist.Review` whose ``lines`` a
-front end says before writing and whose ``refusal``, when set, is why nothing is written.
+Each returns a :class:`~urdfgenpy_ros.model.review.ReviewRecord` whose ``lines`` a front
+end says before writing and whose ``refusal``, when set, is why nothing is written.
 SDF and MJCF need one tree; SDF also what libsdformat refuses (an inertia) and says the
-masses it keeps or leaves out; MJCF what MuJoCo refuses (a mass, a tensor).
+masses it keeps or leaves out; MJCF what MuJoCo refuses (a mass, a tensor). The checks
+are the review's own (``topology``, ``inertia``, ``libsdformat``), run here without it:
+nothing is silenced, neither by ``--ignore`` nor by a suppression comment, as a target
+refuses what it refuses whatever the file says.
 """
 
 from __future__ import annotations
@@ -27,33 +30,33 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any, TYPE_CHECKING
 
+from urdfgenpy_ros.formats.checked import checked
+from urdfgenpy_ros.model.topology import check_topology
+
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel
-    from urdfgenpy_ros.validation.checklist import Review
+    from urdfgenpy_ros.model.review import ReviewRecord
 
 
-def tree_review(robot: RobotModel) -> Review:
+def tree_review(robot: RobotModel) -> ReviewRecord:
     """Return the review of the robot's tree alone; a robot not one tree is refused."""
-    from urdfgenpy_ros.validation.checklist import review, ReviewOptions
-    found = review(robot, ReviewOptions(check_meshes=False, suppressions=False,
-                                        checks=('topology',)))
+    found = checked(robot, check_topology)
     if found.errors:
         found.refusal = f'{found.errors[0]}'
     return found
 
 
-def prepare_sdf(robot: RobotModel, options: Mapping[str, Any]) -> Review:
+def prepare_sdf(robot: RobotModel, options: Mapping[str, Any]) -> ReviewRecord:
     """Return what libsdformat refuses in the SDF of ``robot`` (with the writer's options)."""
     found = tree_review(robot)
     if found.refusal is not None:
         return found
+    from urdfgenpy_ros.formats.inertia_check import check_inertia
     from urdfgenpy_ros.formats.sdf_frames import merge_for_sdf
     from urdfgenpy_ros.formats.sdf_mass import default_mass_notes, mass_only_notes
-    from urdfgenpy_ros.validation.checklist import review, ReviewOptions
-    from urdfgenpy_ros.validation.sdf_refusals import lumped_into
+    from urdfgenpy_ros.formats.sdf_refusals import check_libsdformat, lumped_into
     merged = merge_for_sdf(robot, bool(options.get('lump_fixed')))[0]  # the links it has
-    found = review(merged, ReviewOptions(check_meshes=False, write_sdf=True,
-                                         suppressions=False, checks=('inertia', 'libsdformat')))
+    found = checked(merged, check_inertia, check_libsdformat)
     refused = [(finding, lumped_into(merged, finding))
                for finding in found.refused['libsdformat']]
     for finding, parent in refused:
@@ -72,7 +75,7 @@ def prepare_sdf(robot: RobotModel, options: Mapping[str, Any]) -> Review:
     return found
 
 
-def prepare_mjcf(robot: RobotModel, options: Mapping[str, Any]) -> Review:
+def prepare_mjcf(robot: RobotModel, options: Mapping[str, Any]) -> ReviewRecord:
     """Return what MuJoCo refuses in the MJCF of ``robot`` (with the writer's options)."""
     found = tree_review(robot)
     if found.refusal is not None:

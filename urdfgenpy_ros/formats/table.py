@@ -40,7 +40,7 @@ from urdfgenpy_ros.model.errors import ModelError
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel
-    from urdfgenpy_ros.validation.checklist import Review
+    from urdfgenpy_ros.model.review import ReviewRecord
 
 PathArg = str | PathLike[str]
 Reader = Callable[[Path, Mapping[str, str], Iterable[PathArg]], 'RobotModel']
@@ -54,7 +54,7 @@ class Format:
     One format: its name, suffixes, reader, writer, the writer's options and ``prepare``.
 
     ``options`` may be a function returning them (called when first asked for).
-    ``prepare(robot, options)`` returns the :class:`Review` of what the target refuses;
+    ``prepare(robot, options)`` returns the :class:`ReviewRecord` of what the target refuses;
     ``one_tree`` says ``convert`` refuses a robot that is not one tree before any other
     word; ``convert`` names (``module:function``) the CLI's write step when it is not the
     plain one (write, then one line counting links and joints); ``misplaced`` words the
@@ -68,7 +68,7 @@ class Format:
     writer: Writer | None
     options: Options = ()
     not_read: str = ''  # why it cannot be read, and what to do instead
-    prepare: Callable[[RobotModel, Mapping[str, Any]], Review] | None = None
+    prepare: Callable[[RobotModel, Mapping[str, Any]], ReviewRecord] | None = None
     one_tree: bool = False
     convert: str = ''
     misplaced: str = '{flag} applies to {suffix} output only: drop it or write {suffix}'

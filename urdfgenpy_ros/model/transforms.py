@@ -147,7 +147,7 @@ def symmetric_eigenvalues(matrix: Matrix3) -> tuple[float, float, float]:
 
     Jacobi rotations: unlike the closed form, they keep two nearly equal eigenvalues (a
     rod's moments, a disc turned off its axes) and a tiny one accurate, which the engines'
-    inertia limits (validation/inertia.py) need.
+    inertia limits (formats/inertia_check.py) need.
     """
     a = [list(row) for row in matrix]
     for _ in range(32):

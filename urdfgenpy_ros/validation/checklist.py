@@ -32,22 +32,24 @@ from dataclasses import dataclass, field
 from os import PathLike
 from pathlib import Path
 import re
-from typing import NamedTuple, TYPE_CHECKING
+from typing import TYPE_CHECKING
 
+from urdfgenpy_ros.formats.inertia_check import check_inertia
+from urdfgenpy_ros.formats.sdf_refusals import check_libsdformat
 from urdfgenpy_ros.formats.xacro_source import in_source
 from urdfgenpy_ros.model.codes import CODES
-from urdfgenpy_ros.model.errors import Severity, ValidationError
+from urdfgenpy_ros.model.errors import ValidationError
 from urdfgenpy_ros.model.findings import Findings
+from urdfgenpy_ros.model.review import ReviewRecord, Suppressed
+from urdfgenpy_ros.model.topology import check_topology
 from urdfgenpy_ros.model.urdf_versions import DEFAULT_TARGET, TARGETS
 from urdfgenpy_ros.resources import PackageResolver
 from urdfgenpy_ros.validation.fix import fix, FIXABLE, missing_defaults, Repair
-from urdfgenpy_ros.validation.inertia import check_inertia
 from urdfgenpy_ros.validation.joints import check_joints
 from urdfgenpy_ros.validation.preflight import (
     ENGINES, gazebo_block_findings, sdformat_findings)
 from urdfgenpy_ros.validation.references import check_references
 from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions, Suppressions
-from urdfgenpy_ros.validation.topology import check_topology
 from urdfgenpy_ros.validation.versions import check_versions
 
 if TYPE_CHECKING:
@@ -127,50 +129,20 @@ class Check:
     """Whether the options ask for it (statics, engines, SDF output are asked for)."""
 
 
-class Suppressed(NamedTuple):
-    """A finding silenced: ``reason`` is ``'external'`` (ignore option) or ``'inSource'``."""
-
-    finding: ValidationError
-    reason: str
-    source: str
-    """What silenced it: ``the ignore option``, ``an ignore-file comment`` or ``the ignore
-    comment before line N``."""
-
-
 @dataclass
-class Review:
+class Review(ReviewRecord):
     """
-    What a review found about one robot, ready for any front end to render.
+    What ``review()`` found about one robot, with the options it ran with and its repairs.
 
-    ``findings`` stay (in check order); ``suppressed`` were silenced, with why;
+    The found, silenced and refused findings are :class:`ReviewRecord`'s;
     ``repairable`` are the findings ``fix`` can repair; ``needs`` says what values it still
-    lacks for some (J103, J106 without ``limit_defaults``); ``refused`` names, per consumer,
-    the findings for which it refuses the robot (``'libsdformat'`` with ``write_sdf``);
-    ``unknown_suppressions`` are (line, word) of comment words that are no finding code.
-    A format's ``prepare`` adds the ``lines`` a front end says before writing and the
-    ``refusal``, why nothing is written, when the target refuses the robot.
+    lacks for some (J103, J106 without ``limit_defaults``). ``Review(robot, options)``;
+    the rest by keyword.
     """
 
-    robot: RobotModel
     options: ReviewOptions
-    findings: list[ValidationError] = field(default_factory=list)
-    suppressed: list[Suppressed] = field(default_factory=list)
-    repairable: list[ValidationError] = field(default_factory=list)
-    needs: list[str] = field(default_factory=list)
-    refused: dict[str, list[ValidationError]] = field(default_factory=dict)
-    unknown_suppressions: list[tuple[int, str]] = field(default_factory=list)
-    lines: list[str] = field(default_factory=list)
-    refusal: str | None = None
-
-    @property
-    def errors(self) -> list[ValidationError]:
-        """Return the findings that stay and are errors."""
-        return [finding for finding in self.findings if finding.severity is Severity.ERROR]
-
-    @property
-    def warnings(self) -> list[ValidationError]:
-        """Return the findings that stay and are warnings."""
-        return [finding for finding in self.findings if finding.severity is Severity.WARNING]
+    repairable: list[ValidationError] = field(default_factory=list, kw_only=True)
+    needs: list[str] = field(default_factory=list, kw_only=True)
 
     @property
     def failed(self) -> bool:
@@ -250,11 +222,6 @@ def _mujoco(robot: RobotModel, findings: Findings, options: ReviewOptions) -> No
         mujoco_findings(robot, findings, list(options.search_paths), _base(robot))
 
 
-def _libsdformat(robot: RobotModel, findings: Findings, options: ReviewOptions) -> None:
-    from urdfgenpy_ros.validation.sdf_refusals import sdformat_refusals
-    findings.refused['libsdformat'] = sdformat_refusals(robot, findings)
-
-
 CHECKS: tuple[Check, ...] = (
     Check('read', _read_warnings),
     Check('topology', lambda robot, found, _: check_topology(robot, found)),
@@ -270,7 +237,8 @@ CHECKS: tuple[Check, ...] = (
     Check('gazebo', _gazebo, ('engines',), lambda options: 'gazebo' in options.engines),
     Check('mujoco', _mujoco, ('engines', 'search_paths'),
           lambda options: 'mujoco' in options.engines),
-    Check('libsdformat', _libsdformat, ('write_sdf',), lambda options: options.write_sdf),
+    Check('libsdformat', lambda robot, found, _: check_libsdformat(robot, found), ('write_sdf',),
+          lambda options: options.write_sdf),
 )
 """Every check, in the order a review runs them (and its findings are listed)."""
 

@@ -45,7 +45,7 @@ from urdfgenpy_ros.model.errors import ModelError, ValidationError
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel
-    from urdfgenpy_ros.validation.checklist import Review
+    from urdfgenpy_ros.model.review import ReviewRecord
 
 __all__ = ['BASES', 'DEFAULT_KP', 'DEFAULT_KV', 'EXPANDED', 'MINIMUM_MASS',
            'MjcfRefusedError', 'MjcfResult', 'NO_ACTUATORS', 'prepare', 'REFUSED', 'STAGES',
@@ -98,8 +98,8 @@ def write_mjcf(robot: RobotModel, path: str | PathLike[str] | None = None, *,
     return _run(robot, path, options, written)
 
 
-def write_prepared(robot: RobotModel, review: Review, path: str | PathLike[str] | None = None,
-                   **options: Any) -> MjcfResult:
+def write_prepared(robot: RobotModel, review: ReviewRecord,
+                   path: str | PathLike[str] | None = None, **options: Any) -> MjcfResult:
     """
     Return (and with ``path``, write) the MJCF of ``robot``, which ``prepare`` reviewed.
 

@@ -17,10 +17,11 @@
 What MuJoCo refuses of a robot, found before anything is written.
 
 :func:`prepare` checks the options (a bad one is a :class:`ModelError` at once) and
-returns a :class:`~urdfgenpy_ros.validation.checklist.Review` whose ``refused['mujoco']``
+returns a :class:`~urdfgenpy_ros.model.review.ReviewRecord` whose ``refused['mujoco']``
 lists what stops the export: not one tree (S002), a joint naming a link that does not
 exist (S004, S005), and the masses and tensors MuJoCo refuses to compile (I201-I203,
-I207). :func:`raise_refused` raises from such a review what ``write_mjcf`` raises.
+I207: the review's inertia check, nothing silenced). :func:`raise_refused` raises from
+such a review what ``write_mjcf`` raises.
 """
 
 from __future__ import annotations
@@ -34,11 +35,11 @@ from urdfgenpy_ros.formats.mjcf.fusing import fused
 from urdfgenpy_ros.formats.mjcf.gains import Gains
 from urdfgenpy_ros.model.errors import ModelError, Severity, SourceLocation, UrdfgenpyError
 from urdfgenpy_ros.model.errors import ValidationError
+from urdfgenpy_ros.model.review import ReviewRecord
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.formats.mjcf.fusing import Sites
     from urdfgenpy_ros.model import RobotModel
-    from urdfgenpy_ros.validation.checklist import Review
 
 BASES = ('fixed', 'floating')
 REFUSED = ('I201', 'I202', 'I203', 'I207')  # what MuJoCo refuses to compile
@@ -64,7 +65,7 @@ class Fused(NamedTuple):
     owners: dict[str, list[str]]
 
 
-def prepare(robot: RobotModel, options: Mapping[str, Any]) -> Review:
+def prepare(robot: RobotModel, options: Mapping[str, Any]) -> ReviewRecord:
     """
     Return the review of what MuJoCo refuses of ``robot`` written with ``options``.
 
@@ -76,9 +77,9 @@ def prepare(robot: RobotModel, options: Mapping[str, Any]) -> Review:
     return prepared(robot, options)[0]
 
 
-def prepared(robot: RobotModel, options: Mapping[str, Any]) -> tuple[Review, Fused | None]:
+def prepared(robot: RobotModel, options: Mapping[str, Any]
+             ) -> tuple[ReviewRecord, Fused | None]:
     """Return the review and the robot the MJCF is written from (None when refused)."""
-    from urdfgenpy_ros.validation.checklist import Review, ReviewOptions
     check_options(options)
     refused = _structure(robot)
     written = None
@@ -86,8 +87,8 @@ def prepared(robot: RobotModel, options: Mapping[str, Any]) -> tuple[Review, Fus
         fuse_fixed = bool(options.get('fuse_fixed', False))
         written = Fused(*fused(robot)) if fuse_fixed else Fused(robot, {}, {})
         refused = _masses(written.robot, options.get('base') == 'floating')
-    review = Review(robot, ReviewOptions(check_meshes=False), findings=list(refused),
-                    refused={CONSUMER: refused} if refused else {})
+    review = ReviewRecord(robot, findings=list(refused),
+                          refused={CONSUMER: refused} if refused else {})
     return review, written if not refused else None
 
 
@@ -126,8 +127,9 @@ def _refusal(code: str, element: str, source: SourceLocation | None, message: st
 
 def _masses(written: RobotModel, floating: bool) -> list[ValidationError]:
     """Return the findings of ``written`` whose mass or tensor MuJoCo refuses."""
-    from urdfgenpy_ros.validation import validate
-    refused = [finding for finding in validate(written, check_meshes=False)
+    from urdfgenpy_ros.formats.inertia_check import check_inertia
+    from urdfgenpy_ros.formats.checked import checked
+    refused = [finding for finding in checked(written, check_inertia).findings
                if finding.code in REFUSED]
     root = written.root
     if floating and root.name != WORLD and _welded_mass(written, root.name) < MINIMUM_MASS:
@@ -140,7 +142,7 @@ def _masses(written: RobotModel, floating: bool) -> list[ValidationError]:
     return refused
 
 
-def raise_refused(review: Review, fuse_fixed: bool) -> None:
+def raise_refused(review: ReviewRecord, fuse_fixed: bool) -> None:
     """
     Raise what ``write_mjcf`` raises for the refusals of ``review``; nothing if none.
 

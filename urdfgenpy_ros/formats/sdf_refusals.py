@@ -12,7 +12,7 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""The review's ``libsdformat`` check: the links whose inertia an SDF loader refuses."""
+"""The links whose inertia an SDF loader refuses: the review's ``libsdformat`` check."""
 
 from __future__ import annotations
 
@@ -52,6 +52,11 @@ def sdformat_refusals(robot: RobotModel, findings: Findings) -> list[ValidationE
                                     'libsdformat refuses it')
         refused.append(found)
     return refused
+
+
+def check_libsdformat(robot: RobotModel, findings: Findings) -> None:
+    """Name the links libsdformat refuses in ``findings.refused['libsdformat']``."""
+    findings.refused['libsdformat'] = sdformat_refusals(robot, findings)
 
 
 def lumped_into(robot: RobotModel, finding: ValidationError) -> str | None:

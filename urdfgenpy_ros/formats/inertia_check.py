@@ -12,13 +12,21 @@
 # See the License for the specific language governing permissions and
 # limitations under the License.
 
-"""Inertia: positive mass where it moves, physical tensors, plausible magnitudes."""
+"""
+Inertia: positive mass where it moves, physical tensors, plausible magnitudes.
+
+What the engines the formats are written for accept of an ``<inertial>`` (MuJoCo's
+compiler, libsdformat's URDF conversion): the review's ``inertia`` check, and what the
+SDF and MJCF rows' ``prepare`` refuse.
+"""
 
 from __future__ import annotations
 
 import math
 from typing import TYPE_CHECKING
 
+from urdfgenpy_ros.formats.sdf_conversion import (
+    SdfConversion, sdformat_conversion, SDFORMAT_ZERO_MASS)
 from urdfgenpy_ros.model.findings import Findings, link_path
 from urdfgenpy_ros.model.geometry import Box, Capsule, Cylinder, Sphere
 from urdfgenpy_ros.model.inertial import (
@@ -27,8 +35,6 @@ from urdfgenpy_ros.model.joint import JointType
 from urdfgenpy_ros.model.link import Link, Shape
 from urdfgenpy_ros.model.transforms import symmetric_eigenvalues
 from urdfgenpy_ros.reshape.lumping import lumps, WORLD
-from urdfgenpy_ros.validation.preflight import (
-    SdfConversion, sdformat_conversion, SDFORMAT_ZERO_MASS)
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel
