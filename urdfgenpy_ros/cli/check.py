@@ -32,12 +32,12 @@ from urdfgenpy_ros.cli.words import CLI_WORDS
 from urdfgenpy_ros.formats import DH_SUFFIXES, find_format, load
 from urdfgenpy_ros.formats.xacro_source import EXPANDED
 from urdfgenpy_ros.model.errors import ModelError, Severity, ValidationError
+from urdfgenpy_ros.model.review import ENGINES
 from urdfgenpy_ros.model.urdf_versions import DEFAULT_TARGET, TARGETS
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.checklist import Review, review, ReviewOptions
 from urdfgenpy_ros.validation.fix import LIMIT_FIELDS, Repair
-from urdfgenpy_ros.validation.preflight import ENGINES
 from urdfgenpy_ros.validation.rewrite import replace_file
 
 

@@ -29,6 +29,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass
+from functools import cached_property
 from os import PathLike
 from pathlib import Path
 from typing import Any, TYPE_CHECKING
@@ -84,6 +85,11 @@ class Format:
     def keywords(self) -> tuple[str, ...]:
         """Return the writer's Python keywords."""
         return keywords(self.declared())
+
+    @cached_property
+    def _taken(self) -> frozenset[str]:
+        """Return the writer's Python keywords as a set (asked on every write)."""
+        return frozenset(self.keywords())
 
 
 def _read_urdf(path: Path, mappings: Mapping[str, str], search_paths: Iterable[PathArg]
@@ -277,10 +283,14 @@ def writer_for(path: PathArg) -> Format:
     return row
 
 
+def _named(name: str) -> Format:
+    """Return the row called ``name``."""
+    return next(row for row in FORMATS if row.name == name)
+
+
 def write_as(robot: RobotModel, name: str, path: PathArg | None, **options: Any) -> str:
     """Return the text of ``robot`` in the format called ``name``; write it with ``path``."""
-    row = next(row for row in FORMATS if row.name == name)
-    return _write(row, robot, path, options)
+    return _write(_named(name), robot, path, options)
 
 
 def save(robot: RobotModel, path: PathArg, **options: Any) -> None:
@@ -295,6 +305,9 @@ def save(robot: RobotModel, path: PathArg, **options: Any) -> None:
 def _write(row: Format, robot: RobotModel, path: PathArg | None, options: Mapping[str, Any]
            ) -> str:
     """Return ``row``'s writer's text; refuse an option it lacks in one line."""
+    if options.keys() <= row._taken:
+        assert row.writer is not None
+        return row.writer(robot, path, **options)
     taken = row.keywords()
     unknown = sorted(set(options) - set(taken))
     if unknown:

@@ -24,6 +24,7 @@ table. To support a new URDF attribute, add the field to the model class and one
 from __future__ import annotations
 
 from collections.abc import Callable
+import types
 from typing import Any, NamedTuple
 
 from urdfgenpy_ros.model.geometry import Box, Capsule, Cylinder, IDENTITY, Mesh, Origin, Sphere
@@ -248,14 +249,22 @@ def plan(cls: type) -> tuple[tuple[str, ...], tuple[str, ...], tuple[str, ...]]:
     return _PLANS[cls]
 
 
+def _raw(cls: type, name: str) -> str:
+    """Return the attribute that reads field ``name`` of ``cls`` fastest: its bare slot."""
+    slot = getattr(cls, f'{name}_slot', None)  # a slot whose setter counts edits keeps it
+    return f'{name}_slot' if isinstance(slot, types.MemberDescriptorType) else name
+
+
 def _compile_values() -> dict[type, Callable[[Any], tuple]]:
     """Return, per model class, a function that takes a by-value snapshot of an object."""
     namespace: dict[str, Any] = {}
     for number, (cls, (fields, nested, lists)) in enumerate(_PLANS.items()):
-        parts = [f'item.{name}' for name in fields]
-        parts += [f'(None if (part := item.{name}) is None else V[type(part)](part))'
+        read = {name: _raw(cls, name) for name in (*fields, *nested, *lists)}
+        parts = [f'item.{read[name]}' for name in fields]
+        parts += [f'(None if (part := item.{read[name]}) is None else V[type(part)](part))'
                   for name in nested]
-        parts += [f'tuple([V[type(part)](part) for part in item.{name}])' for name in lists]
+        parts += [f'tuple([V[type(part)](part) for part in item.{read[name]}])'
+                  for name in lists]
         code = f'def values_{number}(item):\n    return ({", ".join(parts)},)'
         exec(compile(code, f'<values {cls.__name__}>', 'exec'), namespace)  # noqa: S102
     functions = {cls: namespace[f'values_{number}'] for number, cls in enumerate(_PLANS)}

@@ -37,7 +37,6 @@ from typing import NamedTuple, TYPE_CHECKING
 
 from lxml import etree
 
-from urdfgenpy_ros.formats.xacro_mapped import mapped, mapped_error
 from urdfgenpy_ros.model.errors import ParseError, SourceLocation, ValidationError
 
 if TYPE_CHECKING:
@@ -67,6 +66,7 @@ def in_source(findings: list[ValidationError], robot: RobotModel) -> list[Valida
     """
     source_map = getattr(robot, 'source_map', None)
     if source_map is not None:
+        from urdfgenpy_ros.formats.xacro_mapped import mapped  # a Xacro's findings only
         return [mapped(finding, source_map) for finding in findings]
     files = tuple(file for file in robot.included_files
                   if not file.lower().endswith(_NOT_XML))  # an assembly's YAML, a builder
@@ -105,6 +105,7 @@ def error_in_source(error: ParseError, expanded: str, files: list[str],
     if where is None or where.line is None or not (where.file or '').endswith(EXPANDED):
         return error
     if source_map is not None and where.line in source_map.raw:
+        from urdfgenpy_ros.formats.xacro_mapped import mapped_error
         return mapped_error(error, source_map)
     root = etree.fromstring(expanded.encode('utf-8'), etree.XMLParser(
         recover=True, resolve_entities=False, huge_tree=True))

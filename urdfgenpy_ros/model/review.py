@@ -30,6 +30,9 @@ from urdfgenpy_ros.model.errors import Severity, ValidationError
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel
 
+ENGINES = ('mujoco', 'gazebo')
+"""The engines a review can pre-flight (``ReviewOptions.engines``, ``check --engines``)."""
+
 
 class Suppressed(NamedTuple):
     """A finding silenced: ``reason`` is ``'external'`` (ignore option) or ``'inSource'``."""

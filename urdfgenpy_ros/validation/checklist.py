@@ -40,14 +40,12 @@ from urdfgenpy_ros.formats.xacro_source import in_source
 from urdfgenpy_ros.model.codes import CODES
 from urdfgenpy_ros.model.errors import ValidationError
 from urdfgenpy_ros.model.findings import Findings
-from urdfgenpy_ros.model.review import ReviewRecord, Suppressed
+from urdfgenpy_ros.model.review import ENGINES, ReviewRecord, Suppressed
 from urdfgenpy_ros.model.topology import check_topology
 from urdfgenpy_ros.model.urdf_versions import DEFAULT_TARGET, TARGETS
 from urdfgenpy_ros.resources import PackageResolver
 from urdfgenpy_ros.validation.fix import fix, FIXABLE, missing_defaults, Repair
 from urdfgenpy_ros.validation.joints import check_joints
-from urdfgenpy_ros.validation.preflight import (
-    ENGINES, gazebo_block_findings, sdformat_findings)
 from urdfgenpy_ros.validation.references import check_references
 from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions, Suppressions
 from urdfgenpy_ros.validation.versions import check_versions
@@ -211,6 +209,7 @@ def _efforts(robot: RobotModel, findings: Findings, options: ReviewOptions) -> N
 
 
 def _gazebo(robot: RobotModel, findings: Findings, options: ReviewOptions) -> None:
+    from urdfgenpy_ros.validation.preflight import gazebo_block_findings, sdformat_findings
     if len(robot.roots) == 1:  # S001, S002 say it otherwise; no engine loads such a robot
         sdformat_findings(robot, findings)
         gazebo_block_findings(robot, findings)

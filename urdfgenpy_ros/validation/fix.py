@@ -42,10 +42,10 @@ from urdfgenpy_ros.model.inertial import Inertial
 from urdfgenpy_ros.model.joint import Joint, JointLimit, JointType
 from urdfgenpy_ros.model.link import Link
 from urdfgenpy_ros.model.transforms import from_xyz_rpy
-from urdfgenpy_ros.validation.fix_tensor import TensorSources
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel
+    from urdfgenpy_ros.validation.fix_tensor import TensorSources
 
 FIXABLE = frozenset(('J102', 'J103', 'J104', 'J106', 'I202', 'I203', 'I205'))
 """The codes ``fix`` can repair (J103 and J106 only with defaults)."""
@@ -93,6 +93,7 @@ def fix(robot: RobotModel, findings: list[ValidationError],
     taken from. Findings suppressed by the caller are not passed in, so they are not
     touched.
     """
+    from urdfgenpy_ros.validation.fix_tensor import TensorSources  # meshes: when fixing
     context = _Context(dict(limit_defaults or {}), TensorSources.of(robot, search_paths))
     repairs: list[Repair] = []
     done: set[tuple[str, str]] = set()
@@ -276,6 +277,7 @@ def _shapeless(robot: RobotModel, findings: list[ValidationError],
             continue
         reason = ''
         if link.inertial.mass > 0.0:
+            from urdfgenpy_ros.validation.fix_tensor import TensorSources
             sources = sources or TensorSources.of(robot, search_paths)
             found = sources.solid(link)
             if not isinstance(found, str):

@@ -39,11 +39,10 @@ from urdfgenpy_ros.formats.sdf_gazebo import gazebo_losses, script_notes
 from urdfgenpy_ros.model.codes import PREFLIGHT_HINTS
 from urdfgenpy_ros.model.errors import ValidationError
 from urdfgenpy_ros.model.findings import Findings, link_path
+from urdfgenpy_ros.model.review import ENGINES
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel
-
-ENGINES = ('mujoco', 'gazebo')
 
 
 def sdformat_findings(robot: RobotModel, findings: Findings) -> None:
