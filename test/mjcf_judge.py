@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+import re
 
 import numpy
 
@@ -218,3 +219,12 @@ def assert_total_mass_as_urdf(model, urdf_path: Path) -> None:
     total = sum(link.inertial.mass for link in urdf.links
                 if link.inertial is not None and link.inertial.mass is not None)
     assert abs(float(model.body_mass.sum()) - total) <= TOLERANCE * max(1.0, total)
+
+
+def marked_losses(path: Path) -> set[tuple[int, str]]:
+    """Return the (line, code) pairs a fixture marks with ``<!-- Mxxx -->`` comments."""
+    found = set()
+    for number, line in enumerate(path.read_text().splitlines(), start=1):
+        for comment in re.findall(r'<!--((?: M\d{3})+) -->', line):
+            found |= {(number, code) for code in comment.split()}
+    return found

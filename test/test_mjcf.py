@@ -47,21 +47,12 @@ def _mujoco() -> None:
     require_module('mujoco')
 
 
-def _marked(path: Path) -> set[tuple[int, str]]:
-    """Return the (line, code) pairs the fixture marks with ``<!-- Mxxx -->`` comments."""
-    found = set()
-    for number, line in enumerate(path.read_text().splitlines(), start=1):
-        for comment in re.findall(r'<!--((?: M\d{3})+) -->', line):
-            found |= {(number, code) for code in comment.split()}
-    return found
-
-
 def test_every_loss_is_named_on_its_line_and_nothing_else() -> None:
     assert_check_urdf_accepts(EVERYTHING)  # a real URDF, as ROS reads it
     result = write_mjcf(load(EVERYTHING))
     reported = {(finding.location.line, finding.code) for finding in result.findings}
     assert len(result.findings) == len(reported)  # one finding per thing
-    assert reported == _marked(EVERYTHING)
+    assert reported == mjcf_judge.marked_losses(EVERYTHING)
     assert all(finding.location.file == str(EVERYTHING) for finding in result.findings)
 
 
@@ -89,7 +80,7 @@ def test_report_in_checks_json_and_sarif(tmp_path: Path) -> None:
                                   '--report', 'json'])
     document = json.loads(result.stdout)
     codes = {(entry['line'], entry['code']) for entry in document['files'][0]['findings']}
-    assert codes == _marked(EVERYTHING) and document['warnings'] == len(codes)
+    assert codes == mjcf_judge.marked_losses(EVERYTHING) and document['warnings'] == len(codes)
     result = runner.invoke(main, ['convert', str(EVERYTHING), str(tmp_path / 'b.xml'),
                                   '--report', 'sarif'])
     sarif = json.loads(result.stdout)

@@ -24,9 +24,9 @@ from its file without writing it as URDF; the marked fixture judges their lines.
 from __future__ import annotations
 
 from pathlib import Path
-import re
 
 from helpers import FIXTURES, require_module
+import mjcf_judge
 import pytest
 
 from urdfgenpy_ros import Inertial, Joint, Link, Robot
@@ -97,15 +97,6 @@ def test_two_trees_are_refused_as_not_one_tree() -> None:
         write_mjcf(robot)
 
 
-def _marked(path: Path) -> set[tuple[int, str]]:
-    """Return the (line, code) pairs the fixture marks with ``<!-- Mxxx -->`` comments."""
-    found = set()
-    for number, line in enumerate(path.read_text().splitlines(), start=1):
-        for comment in re.findall(r'<!--((?: M\d{3})+) -->', line):
-            found |= {(number, code) for code in comment.split()}
-    return found
-
-
 def test_a_robot_as_read_is_not_written_as_urdf_to_find_its_losses(
         monkeypatch: pytest.MonkeyPatch) -> None:
     require_module('mujoco')  # checks the <mujoco> block's attributes (M808)
@@ -117,7 +108,7 @@ def test_a_robot_as_read_is_not_written_as_urdf_to_find_its_losses(
     monkeypatch.setattr(urdfgenpy_ros.formats.urdf, 'write_urdf', refuse)
     result = write_mjcf(robot)
     assert {(finding.location.line, finding.code) for finding in result.findings} == \
-        _marked(EVERYTHING)
+        mjcf_judge.marked_losses(EVERYTHING)
     assert 'timestep="0.001"' in result.text  # the <mujoco> block, read from the model
 
 
@@ -128,4 +119,4 @@ def test_an_edited_robot_keeps_the_losses_on_their_lines() -> None:
     edited.mass *= 2  # the same lines, written anew from the model
     result = write_mjcf(robot)
     assert {(finding.location.line, finding.code) for finding in result.findings} == \
-        _marked(EVERYTHING)
+        mjcf_judge.marked_losses(EVERYTHING)

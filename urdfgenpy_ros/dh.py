@@ -29,13 +29,12 @@ A revolute row's variable is theta (``theta_offset`` is added); a prismatic row'
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass, field, KW_ONLY
+from dataclasses import dataclass
 from os import PathLike
 from typing import cast, TYPE_CHECKING
 
 from urdfgenpy_ros.model.dh_row import DHConvention, DHRow
-from urdfgenpy_ros.model.dh_skeleton import skeleton
-from urdfgenpy_ros.model.geometry import Origin
+from urdfgenpy_ros.model.dh_skeleton import skeleton, TableRows
 from urdfgenpy_ros.model.transforms import (
     from_xyz_rpy, Matrix4, multiply, rotation_x, rotation_z, translation)
 
@@ -47,14 +46,8 @@ __all__ = ['DHConvention', 'DHRow', 'DHTable']
 
 
 @dataclass(slots=True)
-class DHTable:
+class DHTable(TableRows):
     """A DH table: convention, rows, and optional base and tool transforms."""
-
-    convention: DHConvention
-    rows: list[DHRow] = field(default_factory=list)
-    _: KW_ONLY
-    base: Origin = field(default_factory=Origin)
-    tool: Origin = field(default_factory=Origin)
 
     def __post_init__(self) -> None:
         """Coerce the convention."""
