@@ -189,6 +189,22 @@ def test_srdf_command_missing_package_is_one_line(tmp_path: Path) -> None:
     assert not (tmp_path / 'x.srdf').exists()
 
 
+@pytest.mark.parametrize('group', ['manipulator=panda_link0:no_such_link',
+                                   'manipulator=panda_lnk0:panda_hand'])
+def test_a_group_naming_a_link_the_robot_lacks_is_one_line(group: str, tmp_path: Path) -> None:
+    require_module('coal')
+    from click.testing import CliRunner
+    from urdfgenpy_ros.cli import main
+    result = CliRunner().invoke(main, ['srdf', str(_urdf('panda')), '-o',
+                                       str(tmp_path / 'x.srdf'), '--group', group])
+    missing = group.partition('=')[2].split(':')
+    missing_link = next(link for link in missing if link not in ('panda_link0', 'panda_hand'))
+    assert result.exit_code == 2, result.output
+    assert len(result.output.strip().splitlines()) == 1  # no traceback
+    assert f"group 'manipulator': robot 'panda' has no link {missing_link!r}" in result.output
+    assert not (tmp_path / 'x.srdf').exists()
+
+
 def test_groups_of_panda_and_wheels_are_not_fingers() -> None:
     from urdfgenpy_ros.moveit.groups import find_groups
     panda = Robot.from_urdf(_urdf('panda'))

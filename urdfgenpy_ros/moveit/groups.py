@@ -116,6 +116,11 @@ def find_groups(robot: RobotModel, overrides: Mapping[str, tuple[str, str]] | No
     _search(tree, top, top, grippers, chains)
     named = _chain_names(chains)
     for name, (base, tip) in (overrides or {}).items():
+        for link in (base, tip):
+            try:
+                robot.get_link(link)
+            except KeyError as error:  # a name the user gave: their mistake, in one line
+                raise ModelError(f'group {name!r}: {error.args[0]}') from None
         joints = _free_joints(robot, base, tip)  # a ModelError unless tip is below base
         named = {key: value for key, value in named.items()
                  if value[1] != tip and key != name and _free_joints(robot, *value) != joints}
