@@ -27,6 +27,7 @@ from urdfgenpy_ros.cli._options import input_options, read_robot
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.model.errors import ModelError, UrdfgenpyError
 from urdfgenpy_ros.model.geometry import Origin
+from urdfgenpy_ros.report import counted
 from urdfgenpy_ros.resources import rebase_meshes
 
 
@@ -90,5 +91,6 @@ def attach(base: Path, part: Path, at: str, prefix: str, xyz: str, rpy: str, deg
                          .replace('another joint_name', 'another --joint-name')) from None
     robot.save(output)
     joint = robot.parent_joint(prefix + piece.root.name)
-    click.echo(f'wrote {output}: {len(robot.links)} links, {len(robot.joints)} joints '
+    click.echo(f'wrote {output}: {counted(len(robot.links), "link")}, '
+               f'{counted(len(robot.joints), "joint")} '
                f'({piece.name!r} on {at!r} by joint {joint.name if joint else "?"!r})')

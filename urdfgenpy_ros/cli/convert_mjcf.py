@@ -33,6 +33,7 @@ from urdfgenpy_ros.cli.convert_rows import ConvertRun
 from urdfgenpy_ros.formats.mjcf import MjcfRefusedError, write_mjcf
 from urdfgenpy_ros.formats.table import writer_for
 from urdfgenpy_ros.model.errors import UrdfgenpyError
+from urdfgenpy_ros.report import counted
 from urdfgenpy_ros.robot import Robot
 
 
@@ -67,7 +68,8 @@ def write_mjcf_file(robot: Robot, run: ConvertRun) -> int:
                    'model is written)', err=True)
         return 1
     meshes = len(result.files) - 1 - int(values['scene'])
-    click.echo(f'wrote {target}: {len(robot.links)} links, {len(robot.joints)} joints'
+    click.echo(f'wrote {target}: {counted(len(robot.links), "link")}, '
+               f'{counted(len(robot.joints), "joint")}'
                + (f', {meshes} mesh file(s)' if meshes else '')
                + (', scene.xml' if values['scene'] else '')
                + f'; {len(result.findings)} thing(s) the MJCF cannot carry', err=True)

@@ -25,6 +25,7 @@ import click
 from urdfgenpy_ros.cli._options import input_options, read_robot
 from urdfgenpy_ros.formats import format_of
 from urdfgenpy_ros.model.errors import UrdfgenpyError
+from urdfgenpy_ros.report import counted
 from urdfgenpy_ros.reshape.mirror import mirror_subtree, PLANES
 from urdfgenpy_ros.resources import rebase_meshes
 
@@ -87,4 +88,5 @@ def mirror(source: Path, arguments: tuple[str, ...], root: str, plane: str,
         click.echo(str(rule))
     rebase_meshes(robot, source.parent, output.parent)  # relative meshes still found
     robot.save(output)
-    click.echo(f'wrote {output}: {len(robot.links)} links, {len(robot.joints)} joints')
+    click.echo(f'wrote {output}: {counted(len(robot.links), "link")}, '
+               f'{counted(len(robot.joints), "joint")}')
