@@ -130,3 +130,38 @@ def test_a_value_that_differs_between_instances_is_refused(robot: Path) -> None:
     assert 'is an expression: repair it by hand' in result.stdout
     assert result.stdout.count('by hand') == 1  # said once
     assert result.exit_code == 2
+
+
+ROOT_WITH_MASS = f"""<?xml version="1.0"?>
+<robot name="m" {NS}>
+  <xacro:macro name="body" params="name">
+    <link name="${{name}}">{INERTIAL}</link>
+  </xacro:macro>
+  <xacro:body name="base_link"/>
+  <xacro:body name="arm"/>
+  <joint name="j" type="revolute"><parent link="base_link"/><child link="arm"/>
+    <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+</robot>
+"""
+
+
+def test_a_warning_xacro_fix_leaves_is_repaired_as_the_advice_says(tmp_path: Path) -> None:
+    """I205 (a root with mass) is a warning, which convert --fix leaves: check --fix does it."""
+    from helpers import check_urdf, require_module
+    yourdfpy = require_module('yourdfpy')
+    robot = tmp_path / 'm.urdf.xacro'
+    robot.write_text(ROOT_WITH_MASS)
+    said = _check(robot, '--fix').output
+    assert 'I205' in said and 'OUT.urdf --fix' not in said
+    assert 'urdfgenpy convert m.urdf.xacro OUT.urdf and repair that with urdfgenpy check ' \
+           '--fix OUT.urdf' in said
+    out = tmp_path / 'OUT.urdf'
+    runner = CliRunner()
+    assert runner.invoke(main, ['convert', str(robot), str(out)]).exit_code == 0
+    runner.invoke(main, ['check', '--fix', str(out)])
+    assert 'I205' not in runner.invoke(main, ['check', str(out)]).output
+    assert check_urdf(out).returncode == 0  # urdfdom reads the repaired copy
+    model = yourdfpy.URDF.load(str(out), build_scene_graph=False, load_meshes=False)
+    children = {joint.child for joint in model.robot.joints}
+    roots = [link for link in model.robot.links if link.name not in children]
+    assert len(roots) == 1 and roots[0].inertial is None  # a massless root, as KDL wants

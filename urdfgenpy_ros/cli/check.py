@@ -299,7 +299,8 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
                                        options.review))
             return report
         repairs = found.fix()
-        refusal = _not_rewritable(path, robot, _repairable(len(repairs), len(found.findings)))
+        refusal = _not_rewritable(path, robot, _repairable(len(repairs), len(found.findings)),
+                                  found.repairable)
         if refusal is not None:  # nothing is written: no word on missing defaults either
             report.refused = refusal if repairs else None
             return report
@@ -340,7 +341,8 @@ def _repairable(count: int, listed: int) -> str:
             f'the {count} of the {listed} finding{plural} above that --fix repairs')
 
 
-def _not_rewritable(path: Path, robot: Robot, count: str) -> str | None:
+def _not_rewritable(path: Path, robot: Robot, count: str,
+                    repairable: Sequence[ValidationError]) -> str | None:
     """Return why ``path`` is not a file --fix can write back (None when it is plain URDF)."""
     if path.suffix.lower() in DH_SUFFIXES:
         from urdfgenpy_ros.formats.assembly_file import is_assembly
@@ -352,8 +354,10 @@ def _not_rewritable(path: Path, robot: Robot, count: str) -> str | None:
                 f'change the table for {count}')
     if path.suffix.lower() == '.xacro' or any(
             warning.code == 'X101' for warning in robot.read_warnings):
+        from urdfgenpy_ros.cli.check_xacro import repaired_copy
+        copy = repaired_copy(path, repairable)
         return (f'{path}: not fixed: it is Xacro, and writing the expanded robot back would '
                 f'lose its macros and properties: repair {count} by '
-                'hand (their lines say how), or write a repaired copy with urdfgenpy convert '
-                f'{path} OUT.urdf --fix (or OUT.sdf)')
+                f'hand (their lines say how), or {copy}'
+                + (' (or OUT.sdf)' if copy.endswith('--fix') else ''))
     return None

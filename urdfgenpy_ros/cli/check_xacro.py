@@ -28,7 +28,7 @@ from urdfgenpy_ros.formats.urdf_read import read_urdf_bytes
 from urdfgenpy_ros.formats.xacro_map import XacroMap
 from urdfgenpy_ros.formats.xacro_mapped import shown
 from urdfgenpy_ros.formats.xacro_read import expand_xacro
-from urdfgenpy_ros.model.errors import ParseError
+from urdfgenpy_ros.model.errors import ParseError, Severity
 from urdfgenpy_ros.resources import PackageResolver
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.checklist import Review
@@ -59,8 +59,7 @@ def fix_xacro(path: Path, robot: Robot, found: Review, mappings: Mapping[str, st
         said = '; '.join(f'{finding.code} {finding.element}: {why}' for finding, why in refused)
         report.refused = (f'{path}: not fixed: {said}: repair '
                           f'{"it" if len(refused) == 1 else "them"} by hand (the lines above '
-                          f'say where), or write a repaired copy with urdfgenpy convert {path} '
-                          'OUT.urdf --fix')
+                          f'say where), or {repaired_copy(path, refused)}')
     if texts is None:
         return False
     report.repairs = repairs
@@ -105,3 +104,17 @@ def _note(edits: list[XacroEdit], main: str) -> str:
         return (f'{said} (in the body of {first.macro}: every instance of the macro changes, '
                 f'{first.made} in this robot)')
     return said
+
+
+def repaired_copy(path: Path, findings: Sequence[object]) -> str:
+    """
+    Return how to write a repaired copy of ``path``, a Xacro file, for ``findings``.
+
+    ``convert --fix`` repairs errors only; warnings are repaired by ``check --fix`` on
+    the expanded URDF ``convert`` writes. ``findings`` may be (finding, why) pairs.
+    """
+    items = [item[0] if isinstance(item, tuple) else item for item in findings]
+    if any(getattr(item, 'severity', None) is Severity.ERROR for item in items):
+        return f'write a repaired copy with urdfgenpy convert {path} OUT.urdf --fix'
+    return (f'write the expanded robot with urdfgenpy convert {path} OUT.urdf and repair '
+            'that with urdfgenpy check --fix OUT.urdf')
