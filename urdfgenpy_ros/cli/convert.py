@@ -29,7 +29,7 @@ import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot, say_read_warnings
 from urdfgenpy_ros.cli.convert_rows import ConvertRun, refuse_misplaced, row_options
-from urdfgenpy_ros.cli.convert_rows import write_step
+from urdfgenpy_ros.cli.convert_rows import write_plain
 from urdfgenpy_ros.cli.words import CLI_WORDS
 from urdfgenpy_ros.formats.prepare import tree_review
 from urdfgenpy_ros.formats.table import Format, writer_for
@@ -95,7 +95,7 @@ def convert(source: Path, target: Path, arguments: tuple[str, ...],
     robot = _transformed(robot, row, run, (keep, drop_frames) if merge_fixed else None)
     if row.prepare is not None:  # what the target refuses: its lines, then the refusal
         _say(row.prepare(robot, run.keywords(row)), lambda why: f'{target} not written: {why}')
-    status = write_step(row)(robot, run)
+    status = _write_step(row)(robot, run)
     if status:
         raise SystemExit(status)
 
@@ -131,3 +131,25 @@ def _say(found: ReviewRecord, refusal: Callable[[str], str]) -> None:
         click.echo(line, err=True)
     if found.refusal is not None:
         raise UrdfgenpyError(refusal(found.refusal))
+
+
+def _write_step(row: Format) -> Callable[[Robot, ConvertRun], int]:
+    """Return ``row``'s write step: its own when it says more, else ``write_plain``."""
+    return _WRITE_STEPS.get(row.name, write_plain)
+
+
+def _write_sdf(robot: Robot, run: ConvertRun) -> int:
+    """Write the SDF; say what it does not carry and count its links, joints and frames."""
+    from urdfgenpy_ros.cli.convert_write import write_sdf_file
+    return write_sdf_file(robot, run)
+
+
+def _write_mjcf(robot: Robot, run: ConvertRun) -> int:
+    """Write the MJCF, its meshes and scene; print its loss report."""
+    from urdfgenpy_ros.cli.convert_mjcf import write_mjcf_file
+    return write_mjcf_file(robot, run)
+
+
+_WRITE_STEPS: dict[str, Callable[[Robot, ConvertRun], int]] = {
+    'sdf': _write_sdf, 'mjcf': _write_mjcf}
+"""The formats whose ``convert`` says more than the links and joints it wrote."""

@@ -26,7 +26,6 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-import importlib
 from pathlib import Path
 from typing import Any
 
@@ -114,15 +113,6 @@ def row_options(low: int, high: int) -> Callable[[Callable[..., Any]], Callable[
             function = _click_option(option)(function)
         return function
     return decorate
-
-
-def write_step(row: Format) -> Callable[[Robot, ConvertRun], int]:
-    """Return ``row``'s write step: its ``convert`` hook, else :func:`write_plain`."""
-    if not row.convert:
-        return write_plain
-    module, _, name = row.convert.partition(':')
-    step: Callable[[Robot, ConvertRun], int] = getattr(importlib.import_module(module), name)
-    return step
 
 
 def write_plain(robot: Robot, run: ConvertRun) -> int:

@@ -57,9 +57,8 @@ class Format:
     ``options`` may be a function returning them (called when first asked for).
     ``prepare(robot, options)`` returns the :class:`ReviewRecord` of what the target refuses;
     ``one_tree`` says ``convert`` refuses a robot that is not one tree before any other
-    word; ``convert`` names (``module:function``) the CLI's write step when it is not the
-    plain one (write, then one line counting links and joints); ``misplaced`` words the
-    refusal of its flags on other output (``{flag}``: the first, ``{flags}``: all).
+    word; ``misplaced`` words the refusal of its flags on other output (``{flag}``: the
+    first, ``{flags}``: all).
     """
 
     name: str
@@ -71,7 +70,6 @@ class Format:
     not_read: str = ''  # why it cannot be read, and what to do instead
     prepare: Callable[[RobotModel, Mapping[str, Any]], ReviewRecord] | None = None
     one_tree: bool = False
-    convert: str = ''
     misplaced: str = '{flag} applies to {suffix} output only: drop it or write {suffix}'
 
     def matches(self, path: PathArg) -> bool:
@@ -188,14 +186,12 @@ FORMATS: list[Format] = [
            misplaced='{flag} applies to .urdf and .xacro output only: drop it or write .urdf'),
     Format('sdf', ('.sdf',), 'SDF', None, _write_sdf, writer_options.sdf_options,
            not_read='reading SDF is not supported (convert from URDF or Xacro)',
-           prepare=prepare_sdf, one_tree=True,
-           convert='urdfgenpy_ros.cli.convert_write:write_sdf_file'),
+           prepare=prepare_sdf, one_tree=True),
     Format('mjcf', ('.xml', '.mjcf'), 'MuJoCo MJCF', None, write_mjcf_warning,
            writer_options.mjcf_options,
            not_read='reading MJCF is not supported: urdfgenpy writes it (a URDF or Xacro '
                     'file named .xml: rename it .urdf or .urdf.xacro)',
            prepare=prepare_mjcf, one_tree=True,
-           convert='urdfgenpy_ros.cli.convert_mjcf:write_mjcf_file',
            misplaced='{flags} apply to MJCF output (.xml, .mjcf) only: drop them or write .xml'),
     Format('assembly', ('.assembly.yaml', '.assembly.yml'), 'assembly file',
            _read_assembly, None),
