@@ -16,8 +16,8 @@
 """
 What the MJCF writer reads of the robot's URDF source: the one place that knows the record.
 
-:func:`mujoco_block` is the robot's first ``<mujoco>`` element, kept by the reader among
-the robot's other top-level nodes. :func:`urdf_root` is the ``<robot>`` element the
+:func:`mujoco_block` is the robot's first ``<mujoco>`` element, as the reader kept it
+(``SourceDocument.elements``). :func:`urdf_root` is the ``<robot>`` element the
 losses walk: the one read from the file when the robot is as the file says (the URDF
 writer would copy the file's text), else the robot written as URDF and parsed back.
 """
@@ -46,8 +46,7 @@ def mujoco_block(robot: RobotModel) -> Any | None:
         return None  # built in Python: the model has no place for one
     if None in document.node.nsmap and _as_file(robot, document):
         return None  # the written file keeps its default namespace: no <mujoco> tag in it
-    return next((node for node in document.order
-                 if isinstance(node, etree._Element) and node.tag == 'mujoco'), None)
+    return next(iter(document.elements('mujoco')), None)
 
 
 def urdf_root(robot: RobotModel) -> Any:
