@@ -44,19 +44,14 @@ import tempfile
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parent
 WORKER = r"""
-import gc, json, sys, time, warnings
+import json, sys, warnings
 warnings.simplefilter('ignore')
+from timing import median_seconds
 from urdfgenpy_ros import Robot
 files = json.loads(sys.argv[1])
 search = json.loads(sys.argv[2])
-def clock(function, repeat=3):
-    best = []
-    for _ in range(repeat):
-        gc.collect()
-        start = time.perf_counter()
-        function()
-        best.append(time.perf_counter() - start)
-    return sorted(best)[len(best) // 2]
+def clock(function):
+    return median_seconds(function, 3)
 def chain():
     from urdfgenpy_ros import Box, Collision, Inertial, Joint, JointLimit, Link, Origin, Visual
     robot = Robot('bench')
@@ -115,7 +110,7 @@ def robots(corpus: Path | None) -> tuple[list[str], dict[str, list[str]]]:
 
 def run(folder: Path, files: list[str], search: dict[str, list[str]]) -> dict:
     """Run the workloads once with the package in ``folder``; return their times."""
-    env = dict(os.environ, PYTHONPATH=str(folder))
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join((str(folder), str(HERE))))  # + timing
     done = subprocess.run([sys.executable, '-c', WORKER, json.dumps(files), json.dumps(search)],
                           env=env, capture_output=True, text=True, cwd=folder)
     if done.returncode:
