@@ -52,8 +52,9 @@ from urdfgenpy_ros.validation.fix_output import DEFAULT_RADIUS, fix_for_output
 @click.option('--keep', 'keep', multiple=True, metavar='LINK',
               help='With --merge-fixed: never merge this link (repeatable).')
 @click.option('--fix', 'repair', is_flag=True,
-              help="Apply check --fix's repairs to the model written (the source is not "
-                   'touched); each is printed.')
+              help="Apply check --fix's repairs of errors to the model written (the source "
+                   'is not touched); each is printed. Warnings it repairs (I205, J102) are '
+                   'left: run check --fix on the file written.')
 @click.option('--fix-radius', type=click.FloatRange(min=0.0, min_open=True),
               default=DEFAULT_RADIUS, show_default=True,
               help='With --fix: radius (m) of the solid sphere whose tensor a link with no '
