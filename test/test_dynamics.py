@@ -363,7 +363,7 @@ def test_the_pinocchio_path_gives_the_numpy_paths_numbers(path: Path) -> None:
     require_module('pinocchio')
     from urdfgenpy_ros.dynamics import compiled
     from urdfgenpy_ros.dynamics.accelerated import accelerated
-    from urdfgenpy_ros.dynamics.forward import jacobian
+    from urdfgenpy_ros.dynamics.forward import jacobian, link_matrices
     from urdfgenpy_ros.dynamics.gravity import gravity_torques, mass_model
     robot = _robot(path)
     model = compiled(robot)
@@ -377,19 +377,37 @@ def test_the_pinocchio_path_gives_the_numpy_paths_numbers(path: Path) -> None:
         found = robot.jacobian(tip, configurations, frame)
         assert abs(found - jacobian(model, tip, configurations, frame)).max() < 1e-12
         assert abs(robot.jacobian(tip, configurations[3], frame) - found[3]).max() < 1e-15
+    for q in configurations[:4]:  # one configuration's poses are pinocchio's placements
+        expected = link_matrices(model, q[None, :])[0]
+        poses = robot.fk(q)
+        assert max(abs(poses[link] - expected[number]).max()
+                   for number, link in enumerate(model.links)) < 1e-12
+        assert abs(poses.array - expected).max() < 1e-12
     tilted = (0.5, -9.0, -2.0)
     assert abs(robot.gravity_torques(configurations[0], tilted) - gravity_torques(
         model, mass_model(robot, model), configurations[:1], tilted)[0]).max() < 1e-12 * max(
             1.0, abs(expected).max())
 
 
+def test_a_pose_read_is_a_view_of_the_array_as_on_the_numpy_path() -> None:
+    robot = odd_robot()
+    poses = robot.fk([0.3, -0.2, 0.5])
+    tool = poses['link_g']
+    assert numpy.shares_memory(tool, poses.array)
+    tool[0, 3] += 1.0  # written through, as into a numpy view
+    assert poses.array[list(poses).index('link_g'), 0, 3] == tool[0, 3] == poses['link_g'][0, 3]
+    with pytest.raises(KeyError, match="'nowhere' is not a link of the robot"):
+        poses['nowhere']
+    assert list(poses) == [link.name for link in robot.links] and len(poses) == len(robot.links)
+
+
 def test_without_pinocchio_the_numpy_path_answers(monkeypatch: pytest.MonkeyPatch) -> None:
     from urdfgenpy_ros.dynamics import accelerated, compiled
     robot = odd_robot()
     q = [0.3, -0.2, 0.5]
-    with_it = robot.gravity_torques(q), robot.jacobian('link_g', q, 'local')
+    with_it = robot.gravity_torques(q), robot.jacobian('link_g', q, 'local'), robot.fk(q).array
     monkeypatch.setattr(accelerated, '_MODULE', [None])  # as if it were not installed
     assert accelerated.accelerated(compiled(robot), robot, True) is None
-    without = robot.gravity_torques(q), robot.jacobian('link_g', q, 'local')
-    assert abs(with_it[0] - without[0]).max() < 1e-12
-    assert abs(with_it[1] - without[1]).max() < 1e-12
+    without = robot.gravity_torques(q), robot.jacobian('link_g', q, 'local'), robot.fk(q).array
+    for found, expected in zip(with_it, without):
+        assert abs(found - expected).max() < 1e-12

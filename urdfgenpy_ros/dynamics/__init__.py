@@ -17,8 +17,9 @@ Kinematics and statics of a robot, vectorised with numpy.
 
 What ``robot.fk``, ``robot.jacobian`` and ``robot.gravity_torques`` call. The robot is
 compiled to arrays once (:mod:`.model`) and again only when its joints or links change.
-Where pinocchio is installed, Jacobians and gravity torques are computed by it on a model
-built from those arrays (:mod:`.accelerated`): the same numbers, to rounding.
+Where pinocchio is installed, Jacobians, gravity torques and one configuration's poses
+are computed by it on a model built from those arrays (:mod:`.accelerated`): the same
+numbers, to rounding.
 ``q`` is a mapping of joint names, an array over :func:`movable_joints`, or an (N, dof)
 array of configurations, which gives N results at once.
 """
@@ -77,6 +78,10 @@ def fk(robot: RobotModel, q: Any = None, base: Any = None, strict: bool = False)
     """Return every link's 4x4 pose (N x 4 x 4 for N configurations) in the root frame."""
     model = compiled(robot)
     values, single = positions(model, q, strict)
+    if single and base is None:
+        fast = _accelerated(model, robot, masses=False)
+        if fast is not None:  # pinocchio: the same numbers, each pose made when read
+            return fast.poses(values)
     matrices = link_matrices(model, values, base)
     return LinkPoses(model.links, matrices[0] if single else matrices, model.index)
 

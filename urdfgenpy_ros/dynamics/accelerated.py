@@ -13,7 +13,7 @@
 # limitations under the License.
 
 """
-Gravity torques and Jacobians through pinocchio where it is installed: the same numbers.
+Poses, gravity torques and Jacobians through pinocchio where installed: the same numbers.
 
 pinocchio is not read from a file: its model is built from the compiled arrays of
 :mod:`.model` and the masses of :mod:`.gravity`, once per compiled model (a new one when
@@ -23,17 +23,23 @@ are merged into the placement of what they carry, as the numpy path keeps them a
 origin.
 q is spread over pinocchio's joints by the mimic formula, and pinocchio's torques and
 Jacobian columns are folded back (a mimic joint's times its multiplier, added to its
-leader's), as the numpy path does. Without pinocchio, nothing here is used.
+leader's), as the numpy path does. One configuration's link poses stay pinocchio's
+placements until read (:class:`PlacedPoses`): each is turned into a 4x4 array when asked
+for, as reading every one of them costs ten times pinocchio's forward kinematics.
+Without pinocchio, nothing here is used.
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+import copy
 import operator
 from typing import Any, TYPE_CHECKING
 import weakref
 
 import numpy
 
+from urdfgenpy_ros.dynamics.forward import LinkPoses
 from urdfgenpy_ros.dynamics.gravity import mass_model, MassModel
 from urdfgenpy_ros.dynamics.model import ChainModel, REVOLUTE
 
@@ -81,6 +87,7 @@ class Accelerated:
         # q to pinocchio's joints and back without a matrix product (BLAS's threads spin)
         self.column, self.factor = chain.source[moving], chain.multiplier[moving]
         self.offset = chain.offset[moving]
+        self.mimics = bool((self.factor != 1.0).any() or self.offset.any())
         self.order = numpy.argsort(self.column, kind='stable')  # each column's joints together
         self.starts = numpy.searchsorted(self.column[self.order], numpy.arange(len(chain.movable)))
         self.gravity = model.gravity.linear.copy()
@@ -116,6 +123,16 @@ class Accelerated:
             flat[number] = pin.computeFrameJacobian(model, data, values, frame, where).ravel()
         return self._fold(found)
 
+    def poses(self, q: numpy.ndarray) -> PlacedPoses:
+        """Return every link's pose at the one configuration ``q`` (a (1, dof) array)."""
+        values = q[0].take(self.column)
+        if self.mimics:
+            numpy.multiply(values, self.factor, out=values)
+            numpy.add(values, self.offset, out=values)
+        self.pin.framesForwardKinematics(self.model, self.data, values)
+        return PlacedPoses(self.chain.links, self.chain.index, copy.copy(self.data.oMf),
+                           self.frames)
+
     def _spread(self, q: numpy.ndarray) -> numpy.ndarray:
         """Return each pinocchio joint's value: its column of ``q`` by the mimic formula."""
         return q[:, self.column] * self.factor + self.offset
@@ -123,6 +140,53 @@ class Accelerated:
     def _fold(self, found: numpy.ndarray) -> numpy.ndarray:
         """Return pinocchio's last axis over our columns: each joint's times its multiplier."""
         return numpy.add.reduceat((found * self.factor)[..., self.order], self.starts, axis=-1)
+
+
+class PlacedPoses(LinkPoses):
+    """
+    Link poses held as pinocchio's placements, each made a 4x4 array when first read.
+
+    As :class:`LinkPoses`: ``poses[link]`` is a view of ``poses.array``, which is filled
+    row by row as links are read, and whole when ``array`` itself is asked for.
+    """
+
+    def __init__(self, links: tuple[str, ...], index: Mapping[str, int], placements: Any,
+                 frames: list[int]) -> None:
+        self.links, self._index = links, index
+        self._placements, self._frames = placements, frames
+        self._rows: numpy.ndarray | None = None  # made at the first read
+        self._unread = bytearray(b'\x01') * len(links)  # rows not filled yet
+
+    @property
+    def array(self) -> numpy.ndarray:
+        """Return every link's pose, (L, 4, 4), links in ``links`` order."""
+        for number in [number for number, unread in enumerate(self._unread) if unread]:
+            self._fill(number)
+        return self._filled()
+
+    @array.setter
+    def array(self, value: numpy.ndarray) -> None:
+        self._rows, self._unread = value, bytearray(len(self.links))
+
+    def _filled(self) -> numpy.ndarray:
+        if self._rows is None:
+            self._rows = numpy.empty((len(self.links), 4, 4))
+        return self._rows
+
+    def _fill(self, number: int) -> numpy.ndarray:
+        rows = self._filled()
+        rows[number] = self._placements[self._frames[number]].homogeneous
+        self._unread[number] = 0
+        return rows
+
+    def __getitem__(self, link: str) -> numpy.ndarray:
+        """Return the pose of ``link``."""
+        try:
+            number = self._index[link]
+        except KeyError:
+            raise KeyError(f'{link!r} is not a link of the robot') from None
+        rows = self._fill(number) if self._unread[number] else self._filled()
+        return rows[number]
 
 
 _CACHE: dict[int, list] = {}  # id of a ChainModel: [weak reference, Accelerated]

@@ -119,29 +119,51 @@ def _link_by_link(model: ChainModel, turns: _Turns, q: numpy.ndarray,
 
     The configurations are the last axis (L, 4, 4, N), so that each entry of a pose is one
     contiguous row: a product is 36 multiplications of rows, not N small matrix products.
+    A turning link's rotation is made just before its product, while its rows are in the
+    cache, not for every link at once beforehand.
     """
     count, links = q.shape[0], len(model.links)
     poses = numpy.empty((links, 4, 4, count))
     poses[:] = model.origin[..., None]
-    if len(turns.links):
-        source, multiplier, offset = turns.turn_values
-        angle = (q[:, source].T * multiplier + offset)[:, None, None, :]
-        poses[turns.links, :3, :3] = (turns.fixed_part[:, 0, ..., None]
-                                      + numpy.cos(angle) * turns.cosine_part[:, 0, ..., None]
-                                      + numpy.sin(angle) * turns.sine_part[:, 0, ..., None])
     if len(turns.shifts):
         source, multiplier, offset = turns.shift_values
         value = q[:, source].T * multiplier + offset
         poses[turns.shifts, :3, 3] += value[:, None, :] * turns.shift_axis[:, 0, :, None]
     if base is not None:
         poses[0] = base[..., None]  # the root comes first; its own origin is the identity
+    turning = _Turning(turns, q)
     terms = numpy.empty((3, 3, 4, count))
     for link in range(1, links):  # parents come first: each is already in the root frame
         parent, own = poses[turns.parent[link]], poses[link, :3]
+        turning.rotate(link, own[:, :3])
         numpy.multiply(parent[:3, :3, None, :], own[None, :, :, :], out=terms)
         terms[:, 0, 3] += parent[:3, 3]
         numpy.sum(terms, axis=1, out=own)
     return poses.transpose(3, 0, 1, 2)
+
+
+class _Turning:
+    """The rotations of the turning links at N configurations, one link at a time."""
+
+    def __init__(self, turns: _Turns, q: numpy.ndarray) -> None:
+        self.number = {int(link): number for number, link in enumerate(turns.links)}
+        if self.number:
+            source, multiplier, offset = turns.turn_values
+            angle = q[:, source].T * multiplier + offset
+            self.cosine, self.sine = numpy.cos(angle), numpy.sin(angle)
+            self.fixed, self.cosine_part, self.sine_part = (
+                part[:, 0, ..., None] for part in (
+                    turns.fixed_part, turns.cosine_part, turns.sine_part))
+            self.spare = numpy.empty((3, 3, q.shape[0]))
+
+    def rotate(self, link: int, rotation: numpy.ndarray) -> None:
+        """Put into ``rotation`` (3, 3, N) the origin's turned by ``link``'s angles, if any."""
+        number = self.number.get(link)
+        if number is not None:  # fixed + cos C + sin S, added in that order
+            numpy.multiply(self.cosine_part[number], self.cosine[number], out=rotation)
+            rotation += self.fixed[number]
+            numpy.multiply(self.sine_part[number], self.sine[number], out=self.spare)
+            rotation += self.spare
 
 
 def link_frames(model: ChainModel, q: numpy.ndarray, base: numpy.ndarray | None = None
