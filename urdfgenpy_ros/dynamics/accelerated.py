@@ -88,10 +88,21 @@ class Accelerated:
         self.column, self.factor = chain.source[moving], chain.multiplier[moving]
         self.offset = chain.offset[moving]
         self.mimics = bool((self.factor != 1.0).any() or self.offset.any())
-        self.order = numpy.argsort(self.column, kind='stable')  # each column's joints together
-        self.starts = numpy.searchsorted(self.column[self.order], numpy.arange(len(chain.movable)))
+        self._folding(len(chain.movable))
         self.gravity = model.gravity.linear.copy()
         self.state: tuple[list, list] = ([], [])  # the masses' mass_state when made
+
+    def _folding(self, columns: int) -> None:
+        """Plan :meth:`_fold`: each column's first joint, then its others round by round."""
+        order = numpy.argsort(self.column, kind='stable')  # each column's joints together
+        starts = numpy.searchsorted(self.column[order], numpy.arange(columns))
+        self.heads = order[starts]
+        self.scaled = not bool((self.factor[self.heads] == 1.0).all())
+        rank = numpy.arange(len(order)) - starts[self.column[order]]  # place in its column
+        self.rounds = [(self.column[order[rank == number]], order[rank == number])
+                       for number in range(1, int(rank.max(initial=0)) + 1)]
+        self.plain = (not self.scaled and not self.rounds
+                      and bool((self.heads == numpy.arange(len(self.heads))).all()))
 
     def _body(self, model: Any, link: int, joint: int, placement: numpy.ndarray) -> int:
         pin, mass = self.pin, float(self.mass[link])
@@ -139,7 +150,14 @@ class Accelerated:
 
     def _fold(self, found: numpy.ndarray) -> numpy.ndarray:
         """Return pinocchio's last axis over our columns: each joint's times its multiplier."""
-        return numpy.add.reduceat((found * self.factor)[..., self.order], self.starts, axis=-1)
+        if self.plain:  # one joint a column, in order: nothing to fold
+            return found
+        result = found.take(self.heads, axis=-1)
+        if self.scaled:
+            result *= self.factor[self.heads]
+        for columns, joints in self.rounds:  # added in the joints' order, a column once a round
+            result[..., columns] += found[..., joints] * self.factor[joints]
+        return result
 
 
 class PlacedPoses(LinkPoses):
