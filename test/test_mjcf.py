@@ -457,6 +457,19 @@ def test_a_mimic_mujoco_cannot_couple_is_a_loss() -> None:
     assert '<equality>' not in result.text
 
 
+def test_undeclared_prefixes_convert_and_are_named_as_losses(tmp_path: Path) -> None:
+    require_module('mujoco')
+    import mujoco
+    out = tmp_path / 'robot.xml'
+    source = FIXTURES / 'robots' / 'undeclared_prefix.urdf'
+    result = CliRunner().invoke(main, ['convert', str(source), str(out)])
+    assert result.exit_code == 0, result.output
+    model = mujoco.MjModel.from_xml_path(str(out))  # MuJoCo judges what was written
+    assert (model.nbody, model.njnt) == (3, 1)
+    assert 'drake:collision_filter_group' in result.output  # what MJCF cannot carry, named
+    assert 'Traceback' not in result.output
+
+
 def test_convert_replaces_no_file_of_the_users_without_force(tmp_path: Path) -> None:
     from urdfgenpy_ros.examples import pan_tilt_unit
     source = tmp_path / 'ptu.urdf'

@@ -57,9 +57,11 @@ def urdf_root(robot: RobotModel) -> Any:
             and not any(warning.code in _REREAD for warning in robot.read_warnings):
         return document.node
     from urdfgenpy_ros.formats.urdf import write_urdf
+    kept = any(warning.code == 'P105' for warning in robot.read_warnings)
+    # undeclared prefixes (P105) are written as read: read them again as the reader did
     return etree.fromstring(write_urdf(robot).encode('utf-8'),
                             etree.XMLParser(huge_tree=True, resolve_entities=False,
-                                            no_network=True))
+                                            no_network=True, recover=kept))
 
 
 def _as_file(robot: RobotModel, document: SourceDocument) -> bool:
