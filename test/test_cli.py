@@ -36,6 +36,21 @@ def test_example_prints_the_tree_and_writes_urdf_and_xacro(tmp_path: Path) -> No
     assert snapshot(load_yourdfpy(expanded)) == snapshot(load_yourdfpy(urdf))
 
 
+def test_example_keeps_an_edited_file_without_force(tmp_path: Path) -> None:
+    arguments = ['example', '--output-dir', str(tmp_path)]
+    assert CliRunner().invoke(main, arguments).exit_code == 0
+    assert CliRunner().invoke(main, arguments).exit_code == 0  # as written: written again
+    urdf = tmp_path / 'ptu.urdf'
+    urdf.write_text(urdf.read_text().replace('name="ptu"', 'name="mine"'))
+    result = CliRunner().invoke(main, arguments)
+    assert result.exit_code == 2 and result.stderr.count('\n') == 1
+    assert 'ptu.urdf exists and differs from the example' in result.stderr
+    assert 'name="mine"' in urdf.read_text()
+    assert CliRunner().invoke(main, [*arguments, '--force']).exit_code == 0
+    assert 'name="ptu"' in urdf.read_text()
+    assert_check_urdf_accepts(urdf)
+
+
 def test_unwritable_output_is_one_line_and_exit_2(tmp_path: Path) -> None:
     blocker = tmp_path / 'file'
     blocker.write_text('x')

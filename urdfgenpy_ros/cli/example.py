@@ -21,18 +21,27 @@ from pathlib import Path
 import click
 
 from urdfgenpy_ros.examples import EXAMPLES
+from urdfgenpy_ros.model.errors import UrdfgenpyError
 
 
 @click.command()
 @click.argument('name', type=click.Choice(sorted(EXAMPLES)), default='ptu')
 @click.option('--output-dir', '-o', type=click.Path(file_okay=False, path_type=Path),
               default=Path('.'), show_default=True, help='Where to write the files.')
-def example(name: str, output_dir: Path) -> None:
+@click.option('--force', '-f', is_flag=True,
+              help='Overwrite the files if they exist with other content.')
+def example(name: str, output_dir: Path, force: bool) -> None:
     """Print the tree of example robot NAME and write NAME.urdf and NAME.urdf.xacro."""
     robot = EXAMPLES[name]()
-    paths = [output_dir / f'{name}{suffix}' for suffix in ('.urdf', '.urdf.xacro')]
-    for path in paths:
+    texts = {output_dir / f'{name}.urdf': robot.to_urdf(),
+             output_dir / f'{name}.urdf.xacro': robot.to_xacro()}
+    for path, text in texts.items():  # a file as the example writes it is written again
+        if not force and path.is_file() and path.read_bytes() != text.encode('utf-8'):
+            raise UrdfgenpyError(f'{path} exists and differs from the example (edited?): '
+                                 'pass --force to overwrite it, or --output-dir elsewhere')
+    for path in texts:
         robot.save(path)
+    paths = list(texts)
     robot.print_tree()
     for path in paths:
         click.echo(f'wrote {path}')
