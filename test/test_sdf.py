@@ -19,6 +19,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 import subprocess
+import warnings
 
 from helpers import (
     build_sdf_checker, CORPUS, corpus_cases, corpus_file, full_robot, load_yourdfpy,
@@ -26,7 +27,7 @@ from helpers import (
 import pytest
 from registry_robots import absolute_meshes, robot as registry_robot
 
-from urdfgenpy_ros import Origin, Robot
+from urdfgenpy_ros import Inertial, Joint, JointLimit, Link, Origin, Robot
 from urdfgenpy_ros.examples import pan_tilt_unit
 from urdfgenpy_ros.model.sensors import Camera, ForceTorque, Imu, Lidar
 from urdfgenpy_ros.plugins import diff_drive, gz_ros2_control, joint_state_publisher
@@ -278,6 +279,23 @@ def test_a_root_link_named_world_gives_sdf_sdformat_loads(check_sdf, tmp_path: P
     code, theirs, _, _, errors = check_sdf(urdf)  # libsdformat's own conversion
     assert code == 0, errors
     assert set(ours) == set(theirs)
+
+
+def test_an_sdf_libsdformat_refuses_is_said_when_saved(check_sdf, tmp_path: Path) -> None:
+    robot = Robot('tipped').add_link(Link('base', inertial=Inertial(1.0, ixx=1, iyy=1, izz=5)))
+    robot.add_link(Link('arm', inertial=Inertial(1.0, ixx=0.01, iyy=0.01, izz=0.01)))
+    robot.add_joint(Joint('turn', 'revolute', 'base', 'arm', axis=(0.0, 0.0, 1.0),
+                          limit=JointLimit(-1.0, 1.0, effort=1.0, velocity=1.0)))
+    sdf = tmp_path / 'tipped.sdf'
+    with pytest.warns(UserWarning, match="I203 link 'base'.*libsdformat refuses") as caught:
+        robot.save(sdf)
+    assert len(caught) == 1
+    assert check_sdf(sdf)[0] != 0  # libsdformat itself refuses it
+    robot.get_link('base').inertial = Inertial.from_box(1.0, 0.1, 0.1, 0.1)
+    with warnings.catch_warnings():
+        warnings.simplefilter('error')  # no line once the inertia is valid
+        robot.save(sdf)
+    assert check_sdf(sdf)[0] == 0
 
 
 def _every_urdf() -> list:

@@ -38,6 +38,7 @@ from urdfgenpy_ros.formats._xml import robot_name, write_text
 from urdfgenpy_ros.formats.sdf_frames import merge_for_sdf, Merged
 from urdfgenpy_ros.formats.sdf_gazebo import (
     apply_blocks, apply_shape_blocks, gazebo_losses, script_notes)
+from urdfgenpy_ros.formats.sdf_inertia import refusal
 from urdfgenpy_ros.formats.sdf_mimic import Follow, follows, mimic_notes, MIMIC_VERSION
 from urdfgenpy_ros.formats.sdf_mimic import sdf_version
 from urdfgenpy_ros.model.errors import ModelError
@@ -280,9 +281,26 @@ def _check_ends(robot: RobotModel) -> None:
                              'two prismatic joints and a revolute one)')
 
 
+def _refused(merged: RobotModel) -> list[str]:
+    """Return a line for each link of the SDF whose inertia libsdformat refuses."""
+    lines = []
+    for link in merged.links:
+        inertial = link.inertial if link.name != WORLD else None
+        problem = refusal(inertial) if inertial is not None else None
+        if inertial is not None and problem is not None:
+            source = inertial.source
+            where = f'{source}: ' if source is not None and source.line is not None else ''
+            lines.append(f'{where}error {problem[0]} link {link.name!r}: {problem[1]}, which '
+                         'libsdformat refuses: Gazebo will not load this SDF (give the link '
+                         'a valid inertia, e.g. Inertial.from_box, or lump_fixed=True to '
+                         'merge a link on a fixed joint into its parent)')
+    return lines
+
+
 def _notes(robot: RobotModel, merged: RobotModel, frames: list[Merged], version: str) -> list[str]:
-    notes = [str(loss) for loss in (*gazebo_losses(merged, [f.joint for f in frames]),
-                                    *script_notes(merged))]
+    notes = _refused(merged)
+    notes += [str(loss) for loss in (*gazebo_losses(merged, [f.joint for f in frames]),
+                                     *script_notes(merged))]
     notes.extend(mimic_notes(robot, version))
     if version == MIMIC_VERSION:
         notes.extend(follows(merged, robot)[1])
