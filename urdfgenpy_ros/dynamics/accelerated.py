@@ -46,6 +46,7 @@ from urdfgenpy_ros.dynamics.model import ChainModel, REVOLUTE
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel
 
+FOLD_BY_ROUNDS = 64  # configurations: fewer are folded by one reduceat
 _MODULE: list[Any] = []  # [pinocchio or None], once looked for
 
 
@@ -94,12 +95,12 @@ class Accelerated:
 
     def _folding(self, columns: int) -> None:
         """Plan :meth:`_fold`: each column's first joint, then its others round by round."""
-        order = numpy.argsort(self.column, kind='stable')  # each column's joints together
-        starts = numpy.searchsorted(self.column[order], numpy.arange(columns))
-        self.heads = order[starts]
+        self.order = numpy.argsort(self.column, kind='stable')  # each column's joints together
+        self.starts = numpy.searchsorted(self.column[self.order], numpy.arange(columns))
+        self.heads = self.order[self.starts]
         self.scaled = not bool((self.factor[self.heads] == 1.0).all())
-        rank = numpy.arange(len(order)) - starts[self.column[order]]  # place in its column
-        self.rounds = [(self.column[order[rank == number]], order[rank == number])
+        rank = numpy.arange(len(self.order)) - self.starts[self.column[self.order]]
+        self.rounds = [(self.column[self.order[rank == number]], self.order[rank == number])
                        for number in range(1, int(rank.max(initial=0)) + 1)]
         self.plain = (not self.scaled and not self.rounds
                       and bool((self.heads == numpy.arange(len(self.heads))).all()))
@@ -152,10 +153,13 @@ class Accelerated:
         """Return pinocchio's last axis over our columns: each joint's times its multiplier."""
         if self.plain:  # one joint a column, in order: nothing to fold
             return found
-        result = found.take(self.heads, axis=-1)
+        if len(found) < FOLD_BY_ROUNDS:  # one pass over a small copy
+            return numpy.add.reduceat((found * self.factor)[..., self.order], self.starts,
+                                      axis=-1)
+        result = found.take(self.heads, axis=-1)  # no copy of every joint's answers
         if self.scaled:
             result *= self.factor[self.heads]
-        for columns, joints in self.rounds:  # added in the joints' order, a column once a round
+        for columns, joints in self.rounds:  # a column once a round
             result[..., columns] += found[..., joints] * self.factor[joints]
         return result
 
