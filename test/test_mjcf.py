@@ -303,6 +303,31 @@ def test_a_robot_without_inertial_on_a_moving_link_is_refused() -> None:
         write_mjcf(robot)
 
 
+NAN_ARM = """<?xml version="1.0"?>
+<robot name="nanbot">
+  <link name="base"><inertial><mass value="1"/>
+    <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+  <link name="arm"><inertial><mass value="1"/>
+    <inertia ixx="nan" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+  <joint name="j" type="revolute"><parent link="base"/><child link="arm"/>
+    <axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="10" velocity="1"/></joint>
+</robot>
+"""
+
+
+def test_a_nan_inertia_mujoco_refuses_is_refused_before_writing(tmp_path: Path) -> None:
+    require_module('mujoco')
+    import mujoco
+    urdf, out = tmp_path / 'nanbot.urdf', tmp_path / 'nanbot.xml'
+    urdf.write_text(NAN_ARM)
+    with pytest.raises(ValueError, match='mass and inertia of moving bodies'):
+        mujoco.MjModel.from_xml_path(str(urdf))  # MuJoCo's own import refuses it
+    result = CliRunner().invoke(main, ['convert', str(urdf), str(out)])
+    assert result.exit_code == 2 and not out.exists()
+    assert 'nanbot.urdf:5:' in result.stderr and "error R305 link 'arm'" in result.stderr
+    assert 'write finite numbers' in result.stderr and 'Traceback' not in result.output
+
+
 def test_sensors_measure_what_gazebos_would() -> None:
     import mujoco
     import numpy

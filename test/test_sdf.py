@@ -18,9 +18,11 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+import re
 import subprocess
 import warnings
 
+from click.testing import CliRunner
 from helpers import (
     build_sdf_checker, CORPUS, corpus_cases, corpus_file, full_robot, load_yourdfpy,
     pybullet_load, require_module)
@@ -28,6 +30,7 @@ import pytest
 from registry_robots import absolute_meshes, robot as registry_robot
 
 from urdfgenpy_ros import Inertial, Joint, JointLimit, Link, Origin, Robot
+from urdfgenpy_ros.cli import main
 from urdfgenpy_ros.examples import pan_tilt_unit
 from urdfgenpy_ros.model.sensors import Camera, ForceTorque, Imu, Lidar
 from urdfgenpy_ros.plugins import diff_drive, gz_ros2_control, joint_state_publisher
@@ -296,6 +299,33 @@ def test_an_sdf_libsdformat_refuses_is_said_when_saved(check_sdf, tmp_path: Path
         warnings.simplefilter('error')  # no line once the inertia is valid
         robot.save(sdf)
     assert check_sdf(sdf)[0] == 0
+
+
+@pytest.mark.parametrize('mass, ixx, code', [('-2', '0.01', 'I201'), ('1', 'nan', 'R305')])
+def test_a_mass_or_number_libsdformat_refuses_is_named_not_a_traceback(
+        check_sdf, tmp_path: Path, mass: str, ixx: str, code: str) -> None:
+    robot = Robot('bad').add_link(Link('base', inertial=Inertial.from_box(1.0, 0.1, 0.1, 0.1)))
+    robot.add_link(Link('arm', inertial=Inertial.from_box(1.0, 0.1, 0.1, 0.1)))
+    robot.add_joint(Joint('turn', 'revolute', 'base', 'arm', axis=(0.0, 0.0, 1.0),
+                          limit=JointLimit(-1.0, 1.0, effort=1.0, velocity=1.0)))
+    urdf = tmp_path / 'bad.urdf'
+    urdf.write_text(_set_arm(robot.to_urdf(), mass, ixx))
+    if code == 'I201':  # libsdformat's own conversion refuses the file
+        assert check_sdf(urdf)[0] != 0
+    result = CliRunner().invoke(main, ['convert', str(urdf), str(tmp_path / 'bad.sdf')])
+    assert result.exit_code == 2 and not (tmp_path / 'bad.sdf').exists()
+    assert f"error {code} link 'arm'" in result.stderr and 'Traceback' not in result.output
+    assert 'principal moments' not in result.stderr  # the mass or the number, not the tensor
+    with pytest.warns(UserWarning, match=f"{code} link 'arm'.*libsdformat refuses"):
+        Robot.from_urdf(urdf).to_sdf()
+
+
+def _set_arm(text: str, mass: str, ixx: str) -> str:
+    """Return ``text`` with the arm's mass and ixx replaced."""
+    head, arm = text.split('<link name="arm"', 1)
+    arm = arm.replace('<mass value="1"/>', f'<mass value="{mass}"/>', 1)
+    arm = re.sub(r'ixx="[^"]*"', f'ixx="{ixx}"', arm, count=1)
+    return head + '<link name="arm"' + arm
 
 
 def _every_urdf() -> list:

@@ -27,6 +27,8 @@ from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.formats.sdf_conversion import (
     SdfConversion, sdformat_conversion, SDFORMAT_ZERO_MASS)
+from urdfgenpy_ros.formats.sdf_inertia import finite
+from urdfgenpy_ros.model.errors import Severity, SourceLocation, ValidationError
 from urdfgenpy_ros.model.findings import Findings, link_path
 from urdfgenpy_ros.model.geometry import Box, Capsule, Cylinder, Sphere
 from urdfgenpy_ros.model.inertial import (
@@ -49,6 +51,21 @@ MINIMUM = 1e-15
 EIGENVALUE_MINIMUM = 1e-14
 BORDER = 64 * 2.0 ** -52  # closer to a limit than this (relative), rounding decides
 IMPLAUSIBLE = 100.0  # a tensor this many times off the geometry's is a unit slip
+
+
+def non_finite_inertials(robot: RobotModel) -> list[ValidationError]:
+    """
+    Return an R305 error for each ``<inertial>`` holding NaN or inf, which every engine refuses.
+
+    The review says it as the reader's R305; a target's ``prepare`` runs no review, so
+    this is what it refuses such a link for.
+    """
+    return [ValidationError(
+        'R305', Severity.ERROR, f'link {link.name!r}',
+        link.inertial.source or SourceLocation(path=link_path(link.name) + '/inertial'),
+        'its mass or inertia is not a finite number (NaN or inf)',
+        'write finite numbers in its <inertial>')
+        for link in robot.links if link.inertial is not None and not finite(link.inertial)]
 
 
 def check_inertia(robot: RobotModel, findings: Findings) -> None:

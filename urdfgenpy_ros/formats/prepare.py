@@ -38,6 +38,9 @@ if TYPE_CHECKING:
     from urdfgenpy_ros.model.review import ReviewRecord
 
 
+_TENSORS = ('I202', 'I203')  # what --fix mends: a tensor from the link's shape
+
+
 def tree_review(robot: RobotModel) -> ReviewRecord:
     """Return the review of the robot's tree alone; a robot not one tree is refused."""
     found = checked(robot, check_topology)
@@ -57,19 +60,23 @@ def prepare_sdf(robot: RobotModel, options: Mapping[str, Any]) -> ReviewRecord:
     from urdfgenpy_ros.formats.sdf_refusals import check_libsdformat, lumped_into
     merged = merge_for_sdf(robot, bool(options.get('lump_fixed')))[0]  # the links it has
     found = checked(merged, check_inertia, check_libsdformat)
-    refused = [(finding, lumped_into(merged, finding))
+    refused = [(finding, lumped_into(merged, finding) if finding.code in _TENSORS else None)
                for finding in found.refused['libsdformat']]
     for finding, parent in refused:
         fix = (f"pass --lump-fixed (it merges the link into {parent!r}, as libsdformat's "
                'conversion does) or --fix (a tensor from its shape)'
                if parent is not None else 'pass --fix (a tensor from its shape)')
+        if finding.code not in _TENSORS:  # no tensor from a shape mends a mass or a NaN
+            fix = finding.hint
         found.lines.append(f'{finding.location}: error {finding.code} {finding.element}: '
                            f'{finding.message}, which libsdformat refuses: {fix}')
     if refused:
         lumpable = all(parent is not None for _, parent in refused)
+        tensors = all(finding.code in _TENSORS for finding, _ in refused)
         found.refusal = (f'libsdformat would refuse the inertia of {len(refused)} link(s) '
-                         '(above): ' + ('pass --lump-fixed' if lumpable
-                                        else 'pass --fix, or fix them and convert again'))
+                         '(above): ' + ('pass --lump-fixed' if lumpable else
+                                        'pass --fix, or fix them and convert again' if tensors
+                                        else 'fix them and convert again'))
     else:  # a mass-only inertial kept as libsdformat keeps it
         found.lines += [*mass_only_notes(robot), *default_mass_notes(merged)]
     return found

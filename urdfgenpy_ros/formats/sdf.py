@@ -283,18 +283,26 @@ def _check_ends(robot: RobotModel) -> None:
 
 def _refused(merged: RobotModel) -> list[str]:
     """Return a line for each link of the SDF whose inertia libsdformat refuses."""
+    moving = {joint.child for joint in merged.joints if joint.type is not JointType.FIXED}
     lines = []
     for link in merged.links:
         inertial = link.inertial if link.name != WORLD else None
         problem = refusal(inertial) if inertial is not None else None
         if inertial is not None and problem is not None:
+            code, message = problem
+            code = 'I201' if code == 'I210' and link.name in moving else code
             source = inertial.source
             where = f'{source}: ' if source is not None and source.line is not None else ''
-            lines.append(f'{where}error {problem[0]} link {link.name!r}: {problem[1]}, which '
-                         'libsdformat refuses: Gazebo will not load this SDF (give the link '
-                         'a valid inertia, e.g. Inertial.from_box, or lump_fixed=True to '
-                         'merge a link on a fixed joint into its parent)')
+            lines.append(f'{where}error {code} link {link.name!r}: {message}, which '
+                         f'libsdformat refuses: Gazebo will not load this SDF ({_MENDS[code]})')
     return lines
+
+
+_MENDS = {'R305': 'write finite numbers in its <inertial>',
+          'I201': 'give it a positive mass (kg)', 'I210': 'give it a positive mass (kg)',
+          'I202': 'give the link a valid inertia, e.g. Inertial.from_box, or lump_fixed=True '
+                  'to merge a link on a fixed joint into its parent'}
+_MENDS['I203'] = _MENDS['I202']
 
 
 def _notes(robot: RobotModel, merged: RobotModel, frames: list[Merged], version: str) -> list[str]:

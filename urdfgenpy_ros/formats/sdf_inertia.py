@@ -23,6 +23,7 @@ passes (MuJoCo's limit, finding I202, is stricter).
 
 from __future__ import annotations
 
+import math
 import sys
 
 from urdfgenpy_ros.model.inertial import Inertial
@@ -35,15 +36,26 @@ def _epsilon(moments: tuple[float, float, float]) -> float:
     return _TOLERANCE * sys.float_info.epsilon * 2.0 * max(moments)
 
 
+def finite(inertial: Inertial) -> bool:
+    """Return whether the mass and the six numbers of the tensor are finite numbers."""
+    return all(math.isfinite(value) for value in (
+        inertial.mass, inertial.ixx, inertial.ixy, inertial.ixz, inertial.iyy, inertial.iyz,
+        inertial.izz))
+
+
 def refusal(inertial: Inertial) -> tuple[str, str] | None:
     """Return the finding code and problem libsdformat refuses ``inertial`` for, or None."""
+    if not finite(inertial):
+        return 'R305', 'its mass or inertia is not a finite number (NaN or inf)'
+    if inertial.mass < 0.0:
+        return 'I210', f'mass is {inertial.mass:g}'
     (ixx, ixy, ixz), (_, iyy, iyz), (_, _, izz) = inertial.tensor
     epsilon = _epsilon((ixx, iyy, izz))
     determinant = (ixx * (iyy * izz - iyz * iyz) - ixy * (ixy * izz - iyz * ixz)
                    + ixz * (ixy * iyz - iyy * ixz))
     moments = symmetric_eigenvalues(inertial.tensor)
     listed = ', '.join(f'{m:.4g}' for m in moments)
-    if not (inertial.mass >= 0.0 and ixx >= -epsilon and ixx * iyy - ixy * ixy >= -epsilon
+    if not (ixx >= -epsilon and ixx * iyy - ixy * ixy >= -epsilon
             and determinant >= -epsilon):
         return 'I202', f'principal moments {listed} are not all positive or zero'
     epsilon = _epsilon(moments)

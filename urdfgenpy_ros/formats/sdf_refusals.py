@@ -27,12 +27,18 @@ if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel
 
 
+_SAME = {'I202': ('I202', 'I203'), 'I203': ('I202', 'I203'), 'I210': ('I201', 'I210'),
+         'R305': ('R305',)}  # the inertia check's codes for what libsdformat refuses
+_HINTS = {'I210': 'give it a positive mass (kg)', 'R305': 'write finite numbers in its <inertial>'}
+
+
 def sdformat_refusals(robot: RobotModel, findings: Findings) -> list[ValidationError]:
     """
-    Return an I202/I203 finding for each link of ``robot`` libsdformat refuses.
+    Return a finding for each link of ``robot`` libsdformat refuses.
 
-    The inertia check's finding when it made one (with the file and line: that check runs
-    first), else one made here, at the ``<inertia>``.
+    I202 or I203 for a tensor, I201 or I210 for a negative mass, R305 for NaN or inf: the
+    inertia check's finding when it made one (with the file and line: that check runs
+    first), else one made here, at the ``<inertial>``.
     """
     made = {(finding.element, finding.code): finding for finding in findings.items}
     refused = []
@@ -42,14 +48,15 @@ def sdformat_refusals(robot: RobotModel, findings: Findings) -> list[ValidationE
         if problem is None:
             continue
         element = f'link {link.name!r}'
-        found = made.get((element, 'I202')) or made.get((element, 'I203'))
+        found = next(filter(None, (made.get((element, code)) for code in _SAME[problem[0]])),
+                     None)
         if found is None:
             code, message = problem
             source = link.inertial.source if link.inertial is not None else None
             where = (source if source is not None and source.line is not None
                      else SourceLocation(path=link_path(link.name) + '/inertial/inertia'))
             found = ValidationError(code, Severity.ERROR, element, where, message,
-                                    'libsdformat refuses it')
+                                    _HINTS.get(code, 'libsdformat refuses it'))
         refused.append(found)
     return refused
 

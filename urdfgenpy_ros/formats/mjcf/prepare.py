@@ -127,10 +127,11 @@ def _refusal(code: str, element: str, source: SourceLocation | None, message: st
 
 def _masses(written: RobotModel, floating: bool) -> list[ValidationError]:
     """Return the findings of ``written`` whose mass or tensor MuJoCo refuses."""
-    from urdfgenpy_ros.formats.inertia_check import check_inertia
+    from urdfgenpy_ros.formats.inertia_check import check_inertia, non_finite_inertials
     from urdfgenpy_ros.formats.checked import checked
-    refused = [finding for finding in checked(written, check_inertia).findings
-               if finding.code in REFUSED]
+    refused = non_finite_inertials(written)  # MuJoCo compiles NaN, then refuses the body
+    refused += [finding for finding in checked(written, check_inertia).findings
+                if finding.code in REFUSED]
     root = written.root
     if floating and root.name != WORLD and _welded_mass(written, root.name) < MINIMUM_MASS:
         refused.append(ValidationError(
@@ -162,9 +163,10 @@ def raise_refused(review: ReviewRecord, fuse_fixed: bool) -> None:
 def _advice(refused: list[ValidationError], fuse_fixed: bool) -> str:
     """Return what repairs the refused links: convert --fix for a tensor, else the URDF."""
     tensors = sorted({finding.element for finding in refused if finding.code in TENSORS})
+    numbers = sorted({finding.element for finding in refused if finding.code == 'R305'})
     massless = sorted({finding.element for finding in refused
-                       if finding.code not in TENSORS})
-    said = []
+                       if finding.code not in TENSORS} - set(numbers))
+    said = [f"write finite numbers in the <inertial> of {', '.join(numbers)}"] if numbers else []
     if tensors:
         said.append(f"urdfgenpy convert --fix repairs the tensor of {', '.join(tensors)}")
     if massless:
