@@ -19,13 +19,16 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 import os
 from pathlib import Path
+from typing import TYPE_CHECKING
 from urllib.parse import quote
 
 from urdfgenpy_ros.formats.xacro_source import EXPANDED
 from urdfgenpy_ros.model.codes import CODES, PREFLIGHT_HINTS
 from urdfgenpy_ros.model.errors import Severity, ValidationError
 from urdfgenpy_ros.validation.checklist import Suppressed
-from urdfgenpy_ros.validation.fix import Repair
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.validation.fix import Repair
 
 SARIF_SCHEMA = 'https://json.schemastore.org/sarif-2.1.0.json'
 _LEVEL = {Severity.ERROR: 'error', Severity.WARNING: 'warning'}
