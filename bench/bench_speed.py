@@ -26,7 +26,8 @@ temporary folder, ``PYTHONDONTWRITEBYTECODE`` dropped), as in any installed pack
   (example-robot-data, the bench extra): the seconds of CPU inside the process, and the
   T801 findings of both versions compared line by line.
 - **Start-up**: ``urdfgenpy check`` of a two-link file as a process, CPU time (user +
-  system), against ``python -c "import lxml.etree"``, the floor of any reader.
+  system), against ``python -c "import lxml.etree"``, the floor of any reader; beside it
+  how many modules each process loads (the package's, and all), counted in one more run.
 - **Kinematics** on TALOS: one ``robot.fk``/``gravity_torques``/``jacobian`` per call
   (200 configurations) and 10,000 in one call, microseconds of CPU per configuration
   (the process's, every thread's: OpenBLAS's waiting threads count), against pinocchio's
@@ -172,6 +173,16 @@ def statics(trees: dict[str, Path], cache: Path, folder: Path, repeat: int) -> N
               + ('the same' if same else 'DIFFERENT') + ' |')
 
 
+def _loaded(command: list[str], environment: dict[str, str], folder: Path) -> str:
+    """Return how many modules ``command`` loads: the package's, and all (``64 / 183``)."""
+    code = ('import atexit, sys\natexit.register(lambda: print(len([name for name in '
+            "sys.modules if name.split('.')[0] == 'urdfgenpy_ros']), '/', len(sys.modules), "
+            'file=sys.stderr))\n' + command[2])
+    done = subprocess.run([command[0], '-c', code, *command[3:]], env=environment,
+                          cwd=folder, capture_output=True, text=True)
+    return done.stderr.splitlines()[-1]
+
+
 def startup(trees: dict[str, Path], cache: Path, folder: Path, repeat: int) -> None:
     """Print the CPU seconds of a one-file check process and of the floor."""
     small = folder / 'small.urdf'
@@ -190,9 +201,11 @@ def startup(trees: dict[str, Path], cache: Path, folder: Path, repeat: int) -> N
         for label, (command, environment) in runs.items():
             seconds[label].append(_cpu(command, environment, folder))
     floor = statistics.median(next(iter(seconds.values())))
-    print('| process | s CPU (median, min-max) | of the floor |\n|---|---:|---:|')
+    print('| process | s CPU (median, min-max) | of the floor | modules loaded (package / all) |'
+          '\n|---|---:|---:|---:|')
     for label, values in seconds.items():
-        print(f'| {label} | {_spread(values)} | {statistics.median(values) / floor:.2f}x |')
+        print(f'| {label} | {_spread(values)} | {statistics.median(values) / floor:.2f}x | '
+              f'{_loaded(*runs[label], folder)} |')
 
 
 def kinematics(trees: dict[str, Path], cache: Path, folder: Path, repeat: int) -> None:
