@@ -20,7 +20,8 @@ reads that process's ``sys.modules`` at exit: what a plain check of a two-link U
 uses (numpy, the mesh and engine libraries, the fixer, the writers' options, the JSON and
 metadata modules of the reports) is not there, and a check that asks for it (``--fix``,
 ``--format sarif``) still loads and uses it. The readers compiled per element on their
-first call read a robot the same whatever was read before. No time is asserted
+first call read a robot the same whatever was read before, and in threads reading at
+once. No time is asserted
 (bench/bench_speed.py measures it).
 """
 
@@ -108,18 +109,21 @@ def test_a_check_that_asks_for_the_fixer_and_a_report_loads_them(tmp_path: Path)
             'importlib.metadata'} <= modules
 
 
-def test_readers_compiled_on_first_use_read_the_same_whatever_came_before(
+def test_readers_compiled_on_first_use_read_the_same_whatever_came_before_or_beside(
         tmp_path: Path) -> None:
     (tmp_path / 'small.urdf').write_text(SMALL)
     full_robot().to_urdf(tmp_path / 'full.urdf')
-    code = ('import sys\nfrom urdfgenpy_ros import Robot\n'
-            'robots = [Robot.from_urdf(path) for path in sys.argv[1:]]\n'
-            'print(robots[-1].to_urdf(), repr(robots[-1]))')
+    code = ('import sys\nfrom concurrent.futures import ThreadPoolExecutor\n'
+            'from urdfgenpy_ros import Robot\n'
+            'with ThreadPoolExecutor(8) as pool:  # the first reads of each element at once\n'
+            '    robots = list(pool.map(Robot.from_urdf, sys.argv[1:]))\n'
+            'print(*sorted({robot.to_urdf() + repr(robot) for robot in robots\n'
+            '               if robot.name != "small"}), sep="")')
     environment = dict(os.environ, PYTHONPATH=os.pathsep.join(
         [str(REPO), *filter(None, [os.environ.get('PYTHONPATH')])]))
     outputs = [subprocess.run([sys.executable, '-c', code, *paths], env=environment,
                               cwd=tmp_path, capture_output=True, text=True, check=True,
                               timeout=60).stdout
-               for paths in (['full.urdf'], ['small.urdf', 'full.urdf'])]
-    assert outputs[0] == outputs[1]
+               for paths in (['full.urdf'], ['small.urdf', 'full.urdf'], ['full.urdf'] * 8)]
+    assert outputs[0] == outputs[1] == outputs[2]
     assert '<mesh' in outputs[0] and '<mimic' in outputs[0]

@@ -26,6 +26,7 @@ message at the file's line. :mod:`.urdf_read` calls them; nothing else does.
 
 from __future__ import annotations
 
+from _thread import allocate_lock  # threading's lock, without loading threading
 from collections.abc import Callable
 import dataclasses
 from typing import Any
@@ -238,13 +239,17 @@ def _compile_all() -> dict[str, Reader]:
         'Preserved': Preserved, 'SL': SourceLocation, 'tnew': tuple.__new__,
         'new': object.__new__, 'TYPES': {kind.value: kind for kind in JointType}}
     readers: dict[str, Reader] = {}
+    lock = allocate_lock()  # threads reading at once compile each reader once
 
     def stub(element: Element) -> Reader:
         def first_call(r: Any, node: Any) -> Any:
-            reader = _compile(element, namespace)
-            readers[element.tag] = namespace[f'R_{element.tag}'] = reader
-            if element.tag in namespace['SHAPES']:
-                namespace['SHAPES'][element.tag] = reader
+            with lock:
+                reader = readers[element.tag]
+                if reader is first_call:
+                    reader = _compile(element, namespace)
+                    readers[element.tag] = namespace[f'R_{element.tag}'] = reader
+                    if element.tag in namespace['SHAPES']:
+                        namespace['SHAPES'][element.tag] = reader
             return reader(r, node)
         return first_call
 
