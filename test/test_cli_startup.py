@@ -21,8 +21,10 @@ uses (numpy, the mesh and engine libraries, the fixer, the writers' options, the
 metadata modules of the reports) is not there, and a check that asks for it (``--fix``,
 ``--format sarif``) still loads and uses it. The readers compiled per element on their
 first call read a robot the same whatever was read before, and in threads reading at
-once. No time is asserted
-(bench/bench_speed.py measures it).
+once. A process's own command line (``main()``, the console script) freezes the garbage
+collector at exit, so exit does not walk every object: such a process prints, exits
+and writes what the same command run in-process (CliRunner, which leaves the collector
+alone) does, byte for byte. No time is asserted (bench/bench_speed.py measures it).
 """
 
 from __future__ import annotations
@@ -35,7 +37,7 @@ import sys
 
 from click.testing import CliRunner
 
-from helpers import full_robot, REPO
+from helpers import FIXTURES, full_robot, REPO
 from urdfgenpy_ros.cli import main
 
 SMALL = """<?xml version="1.0"?>
@@ -53,6 +55,17 @@ listing = sys.argv.pop()
 atexit.register(lambda: open(listing, 'w').write('\\n'.join(sorted(sys.modules))))
 from urdfgenpy_ros.cli import main
 main()
+"""
+FROZEN = """
+import atexit, gc, sys
+start = gc.get_freeze_count()  # what the interpreter freezes itself
+atexit.register(lambda: print('frozen at exit:', gc.get_freeze_count() > start,
+                              file=sys.stderr))
+from urdfgenpy_ros.cli import main
+if sys.argv.pop(1) == 'in-process':
+    main.main(sys.argv[1:], standalone_mode=False)
+else:
+    main()
 """
 NEVER = ('numpy', 'scipy', 'trimesh', 'mujoco', 'manifold3d', 'yaml', 'xacro', 'rclpy')
 """Libraries a plain check of a URDF file has no use for."""
@@ -127,3 +140,40 @@ def test_readers_compiled_on_first_use_read_the_same_whatever_came_before_or_bes
                for paths in (['full.urdf'], ['small.urdf', 'full.urdf'], ['full.urdf'] * 8)]
     assert outputs[0] == outputs[1] == outputs[2]
     assert '<mesh' in outputs[0] and '<mimic' in outputs[0]
+
+
+def test_only_a_process_own_command_line_freezes_the_collector_at_exit(tmp_path: Path) -> None:
+    (tmp_path / 'small.urdf').write_text(SMALL)
+    environment = dict(os.environ, PYTHONPATH=os.pathsep.join(
+        [str(REPO), *filter(None, [os.environ.get('PYTHONPATH')])]))
+    said = [subprocess.run([sys.executable, '-c', FROZEN, how, 'check', 'small.urdf'],
+                           env=environment, cwd=tmp_path, capture_output=True, text=True,
+                           timeout=60).stderr.splitlines()[-1]
+            for how in ('process', 'in-process')]
+    assert said == ['frozen at exit: True', 'frozen at exit: False']
+
+
+def test_a_process_writes_and_says_what_the_same_command_in_process_does(
+        tmp_path: Path) -> None:
+    packages = FIXTURES / 'packages'
+    source = packages / 'fixture_description' / 'urdf' / 'every_element.urdf'
+    for target in ('robot.xml', 'robot.sdf', 'robot.urdf'):  # MJCF converts its STL mesh
+        arguments = ['convert', str(source), str(tmp_path / 'out' / target), '-p',
+                     str(packages)]
+        runs = []
+        for how in ('process', 'in-process'):
+            (tmp_path / 'out').mkdir()
+            if how == 'process':
+                done, _ = _run(arguments, tmp_path)
+                said = (done.returncode, done.stdout, done.stderr)
+            else:
+                result = CliRunner().invoke(main, arguments)
+                said = (result.exit_code, result.stdout, result.stderr)
+            written = {path.relative_to(tmp_path / 'out'): path.read_bytes()
+                       for path in sorted((tmp_path / 'out').rglob('*')) if path.is_file()}
+            runs.append((said, written))
+            for path in sorted((tmp_path / 'out').rglob('*'), reverse=True):
+                path.unlink() if path.is_file() else path.rmdir()
+            (tmp_path / 'out').rmdir()
+        assert runs[0] == runs[1]
+        assert Path(target) in runs[0][1] or runs[0][0][0] != 0
