@@ -19,8 +19,9 @@ Every contender runs as its own Python process, rounds interleaved (each round r
 contender once, so the shared machine's load hits all alike); a figure is the median of
 ``--repeat`` rounds with the smallest and largest beside it. ``--baseline`` is a source
 tree of an older version (``git worktree add /tmp/base 6684634``), run with
-``PYTHONPATH`` set to it. Bytecode is cached for both (``PYTHONPYCACHEPREFIX`` in a
-temporary folder, ``PYTHONDONTWRITEBYTECODE`` dropped), as in any installed package.
+``PYTHONPATH`` set to it; given again, more versions join every table (statics' ratio
+is to the first). Bytecode is cached for all (``PYTHONPYCACHEPREFIX`` in a temporary folder,
+``PYTHONDONTWRITEBYTECODE`` dropped), as in any installed package.
 
 - **Statics**: ``robot.validate(statics=True)`` on TALOS, TIAGo and TIAGo dual
   (example-robot-data, the bench extra): the seconds of CPU inside the process, and the
@@ -231,13 +232,15 @@ def kinematics(trees: dict[str, Path], cache: Path, folder: Path, repeat: int) -
 def main() -> None:
     """Run the three comparisons and print markdown tables."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
-    parser.add_argument('--baseline', type=Path, help='source tree of the older version')
+    parser.add_argument('--baseline', type=Path, action='append', default=[],
+                        help='source tree of an older version (repeatable: the first is '
+                             '"baseline", the others go by their folder\'s name)')
     parser.add_argument('--repeat', type=int, default=5)
     parser.add_argument('--only', choices=('statics', 'startup', 'kinematics'))
     arguments = parser.parse_args()
     trees = {'this tree': HERE}
-    if arguments.baseline is not None:
-        trees['baseline'] = arguments.baseline.resolve()
+    for number, tree in enumerate(arguments.baseline):
+        trees['baseline' if number == 0 else tree.name] = tree.resolve()
     with tempfile.TemporaryDirectory() as folder:
         cache = Path(folder) / 'pycache'
         for part in (statics, startup, kinematics):
