@@ -19,14 +19,16 @@ Every contender runs as its own Python process, rounds interleaved (each round r
 contender once, so the shared machine's load hits all alike); a figure is the median of
 ``--repeat`` rounds with the smallest and largest beside it. ``--baseline`` is a source
 tree of an older version (``git worktree add /tmp/base 6684634``), run with
-``PYTHONPATH`` set to it. Bytecode is cached for both (``PYTHONPYCACHEPREFIX`` in a
-temporary folder, ``PYTHONDONTWRITEBYTECODE`` dropped), as in any installed package.
+``PYTHONPATH`` set to it; given again, more versions join every table (statics' ratio
+is to the first). Bytecode is cached for all (``PYTHONPYCACHEPREFIX`` in a temporary folder,
+``PYTHONDONTWRITEBYTECODE`` dropped), as in any installed package.
 
 - **Statics**: ``robot.validate(statics=True)`` on TALOS, TIAGo and TIAGo dual
   (example-robot-data, the bench extra): the seconds of CPU inside the process, and the
   T801 findings of both versions compared line by line.
 - **Start-up**: ``urdfgenpy check`` of a two-link file as a process, CPU time (user +
-  system), against ``python -c "import lxml.etree"``, the floor of any reader.
+  system), against ``python -c "import lxml.etree"``, the floor of any reader; beside it
+  how many modules each process loads (the package's, and all), counted in one more run.
 - **Kinematics** on TALOS: one ``robot.fk``/``gravity_torques``/``jacobian`` per call
   (200 configurations) and 10,000 in one call, microseconds of CPU per configuration
   (the process's, every thread's: OpenBLAS's waiting threads count), against pinocchio's
@@ -172,6 +174,16 @@ def statics(trees: dict[str, Path], cache: Path, folder: Path, repeat: int) -> N
               + ('the same' if same else 'DIFFERENT') + ' |')
 
 
+def _loaded(command: list[str], environment: dict[str, str], folder: Path) -> str:
+    """Return how many modules ``command`` loads: the package's, and all (``64 / 183``)."""
+    code = ('import atexit, sys\natexit.register(lambda: print(len([name for name in '
+            "sys.modules if name.split('.')[0] == 'urdfgenpy_ros']), '/', len(sys.modules), "
+            'file=sys.stderr))\n' + command[2])
+    done = subprocess.run([command[0], '-c', code, *command[3:]], env=environment,
+                          cwd=folder, capture_output=True, text=True)
+    return done.stderr.splitlines()[-1]
+
+
 def startup(trees: dict[str, Path], cache: Path, folder: Path, repeat: int) -> None:
     """Print the CPU seconds of a one-file check process and of the floor."""
     small = folder / 'small.urdf'
@@ -190,9 +202,11 @@ def startup(trees: dict[str, Path], cache: Path, folder: Path, repeat: int) -> N
         for label, (command, environment) in runs.items():
             seconds[label].append(_cpu(command, environment, folder))
     floor = statistics.median(next(iter(seconds.values())))
-    print('| process | s CPU (median, min-max) | of the floor |\n|---|---:|---:|')
+    print('| process | s CPU (median, min-max) | of the floor | modules loaded (package / all) |'
+          '\n|---|---:|---:|---:|')
     for label, values in seconds.items():
-        print(f'| {label} | {_spread(values)} | {statistics.median(values) / floor:.2f}x |')
+        print(f'| {label} | {_spread(values)} | {statistics.median(values) / floor:.2f}x | '
+              f'{_loaded(*runs[label], folder)} |')
 
 
 def kinematics(trees: dict[str, Path], cache: Path, folder: Path, repeat: int) -> None:
@@ -218,13 +232,15 @@ def kinematics(trees: dict[str, Path], cache: Path, folder: Path, repeat: int) -
 def main() -> None:
     """Run the three comparisons and print markdown tables."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[1])
-    parser.add_argument('--baseline', type=Path, help='source tree of the older version')
+    parser.add_argument('--baseline', type=Path, action='append', default=[],
+                        help='source tree of an older version (repeatable: the first is '
+                             '"baseline", the others go by their folder\'s name)')
     parser.add_argument('--repeat', type=int, default=5)
     parser.add_argument('--only', choices=('statics', 'startup', 'kinematics'))
     arguments = parser.parse_args()
     trees = {'this tree': HERE}
-    if arguments.baseline is not None:
-        trees['baseline'] = arguments.baseline.resolve()
+    for number, tree in enumerate(arguments.baseline):
+        trees['baseline' if number == 0 else tree.name] = tree.resolve()
     with tempfile.TemporaryDirectory() as folder:
         cache = Path(folder) / 'pycache'
         for part in (statics, startup, kinematics):

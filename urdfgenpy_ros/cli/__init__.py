@@ -21,7 +21,9 @@ its help), so ``urdfgenpy check`` loads what checking needs and nothing of the o
 
 from __future__ import annotations
 
+import atexit
 from dataclasses import replace
+import gc
 import importlib
 from typing import Any
 
@@ -73,6 +75,20 @@ class _Commands(dict[str, click.Command]):
 
 class _Group(click.Group):
     """A group inside the one boundary: a user's mistake is one line and exit 2."""
+
+    def __call__(self, *args: Any, **kwargs: Any) -> Any:
+        """
+        Run the command line; as a process's own (no arguments given), skip exit's collection.
+
+        The console script calls ``main()``: the process ends with the command, and its
+        last garbage collection would walk every object only to free memory the exit frees
+        anyway (a tenth of a one-file check's CPU). ``gc.freeze()`` at exit leaves them out;
+        files, temporary folders and pools are closed by their own code and atexit hooks.
+        ``main(args)`` and ``main.main(...)`` (CliRunner) leave the collector alone.
+        """
+        if not args and 'args' not in kwargs:
+            atexit.register(gc.freeze)
+        return super().__call__(*args, **kwargs)
 
     def invoke(self, ctx: click.Context) -> object:
         def verbose() -> bool:  # set by main() below, once the options are parsed

@@ -16,10 +16,10 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import replace
 import math
 from pathlib import Path
-from typing import Any, cast, Sequence
+from typing import Any, cast, Sequence, TYPE_CHECKING
 
 import click
 
@@ -37,16 +37,19 @@ from urdfgenpy_ros.model.urdf_versions import DEFAULT_TARGET, TARGETS
 from urdfgenpy_ros.report import KNOWN_ERRORS, one_line
 from urdfgenpy_ros.robot import Robot
 from urdfgenpy_ros.validation.checklist import Review, review, ReviewOptions
-from urdfgenpy_ros.validation.fix import LIMIT_FIELDS, Repair
-from urdfgenpy_ros.validation.rewrite import replace_file
+
+if TYPE_CHECKING:  # the fixer loads with --fix or --limit-default (start-up)
+    from urdfgenpy_ros.validation.fix import Repair
 
 
-@dataclass(frozen=True)
 class _Options:
-    review: ReviewOptions
-    fix: bool
-    dry_run: bool
-    srdf: Path | None = None
+    """What one ``check`` asks for: the review's options, --fix, --dry-run and --srdf."""
+
+    __slots__ = ('review', 'fix', 'dry_run', 'srdf')
+
+    def __init__(self, review: ReviewOptions, fix: bool, dry_run: bool,
+                 srdf: Path | None = None) -> None:
+        self.review, self.fix, self.dry_run, self.srdf = review, fix, dry_run, srdf
 
 
 def _engines(ctx: click.Context, param: click.Parameter, value: str | None
@@ -61,7 +64,10 @@ def _engines(ctx: click.Context, param: click.Parameter, value: str | None
 
 def _limit_defaults(ctx: click.Context, param: click.Parameter, values: tuple[str, ...]
                     ) -> dict[str, float]:
-    defaults = {}
+    defaults: dict[str, float] = {}
+    if not values:
+        return defaults
+    from urdfgenpy_ros.validation.fix import LIMIT_FIELDS
     for item in values:
         for part in item.split(','):
             name, _, text = part.partition('=')
@@ -293,6 +299,7 @@ def _check_file(path: Path, mappings: dict[str, str], options: _Options) -> File
             return report
         if robot.source_map is not None:  # Xacro: its values are edited where written
             from urdfgenpy_ros.cli.check_xacro import fix_xacro
+            from urdfgenpy_ros.validation.rewrite import replace_file
             if fix_xacro(path, robot, found, mappings, options.review.search_paths,
                          options.dry_run, report, replace_file):
                 _render(report, review(load(path, mappings, options.review.search_paths),

@@ -16,36 +16,47 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 import os
 from pathlib import Path
+from typing import TYPE_CHECKING
 from urllib.parse import quote
 
 from urdfgenpy_ros.formats.xacro_source import EXPANDED
 from urdfgenpy_ros.model.codes import CODES, PREFLIGHT_HINTS
 from urdfgenpy_ros.model.errors import Severity, ValidationError
 from urdfgenpy_ros.validation.checklist import Suppressed
-from urdfgenpy_ros.validation.fix import Repair
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.validation.fix import Repair
 
 SARIF_SCHEMA = 'https://json.schemastore.org/sarif-2.1.0.json'
 _LEVEL = {Severity.ERROR: 'error', Severity.WARNING: 'warning'}
 
 
-@dataclass
 class FileReport:
-    """What ``check`` found in one file: findings, silenced ones, repairs, or why unreadable."""
+    """
+    What ``check`` found in one file: findings, silenced ones, repairs, or why unreadable.
 
-    path: str
-    error: str | None = None
-    findings: list[ValidationError] = field(default_factory=list)
-    suppressed: list[Suppressed] = field(default_factory=list)
-    """The review's silenced findings: finding, reason (inSource, external), what said so."""
-    repairs: list[Repair] = field(default_factory=list)
-    notes: list[str] = field(default_factory=list)
-    refused: str | None = None
-    """Why --fix left the file alone though it had repairs (Xacro, assembly, DH table)."""
-    payload: str | None = None
-    """Why --statics did not run: the --payload link is not one of this robot's."""
+    ``suppressed`` are the review's silenced findings (finding, reason: inSource or
+    external, what said so); ``refused`` says why --fix left the file alone though it had
+    repairs (Xacro, assembly, DH table); ``payload`` why --statics did not run (the
+    --payload link is not one of this robot's). A plain class, not a dataclass: one less
+    to build when ``check`` starts.
+    """
+
+    __slots__ = ('path', 'error', 'findings', 'suppressed', 'repairs', 'notes', 'refused',
+                 'payload')
+
+    def __init__(self, path: str, error: str | None = None,
+                 findings: list[ValidationError] | None = None,
+                 suppressed: list[Suppressed] | None = None,
+                 repairs: list[Repair] | None = None, notes: list[str] | None = None,
+                 refused: str | None = None, payload: str | None = None) -> None:
+        self.path, self.error, self.refused, self.payload = path, error, refused, payload
+        self.findings: list[ValidationError] = [] if findings is None else findings
+        self.suppressed: list[Suppressed] = [] if suppressed is None else suppressed
+        self.repairs: list[Repair] = [] if repairs is None else repairs
+        self.notes: list[str] = [] if notes is None else notes
 
 
 def json_report(reports: list[FileReport]) -> str:

@@ -34,19 +34,17 @@ from os import PathLike
 from pathlib import Path
 from typing import Any, TYPE_CHECKING
 
-from urdfgenpy_ros.formats import writer_options
-from urdfgenpy_ros.formats.options import keywords, Option
-from urdfgenpy_ros.formats.prepare import prepare_mjcf, prepare_sdf
 from urdfgenpy_ros.model.errors import ModelError
 
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # the writers' options and prepare load when asked for (start-up)
+    from urdfgenpy_ros.formats.options import Option
     from urdfgenpy_ros.model import RobotModel
     from urdfgenpy_ros.model.review import ReviewRecord
 
 PathArg = str | PathLike[str]
 Reader = Callable[[Path, Mapping[str, str], Iterable[PathArg]], 'RobotModel']
 Writer = Callable[..., str]
-Options = tuple[Option, ...] | Callable[[], tuple[Option, ...]]
+Options = tuple['Option', ...] | Callable[[], tuple['Option', ...]]
 
 
 @dataclass(frozen=True)
@@ -82,6 +80,7 @@ class Format:
 
     def keywords(self) -> tuple[str, ...]:
         """Return the writer's Python keywords."""
+        from urdfgenpy_ros.formats.options import keywords
         return keywords(self.declared())
 
     @cached_property
@@ -179,19 +178,49 @@ def write_mjcf_warning(robot: RobotModel, path: PathArg | None, **options: Any) 
     return result.text
 
 
+def _xacro_options() -> tuple[Option, ...]:
+    from urdfgenpy_ros.formats.writer_options import xacro_options
+    return xacro_options()
+
+
+def _urdf_options() -> tuple[Option, ...]:
+    from urdfgenpy_ros.formats.writer_options import urdf_options
+    return urdf_options()
+
+
+def _sdf_options() -> tuple[Option, ...]:
+    from urdfgenpy_ros.formats.writer_options import sdf_options
+    return sdf_options()
+
+
+def _mjcf_options() -> tuple[Option, ...]:
+    from urdfgenpy_ros.formats.writer_options import mjcf_options
+    return mjcf_options()
+
+
+def _prepare_sdf(robot: RobotModel, options: Mapping[str, Any]) -> ReviewRecord:
+    from urdfgenpy_ros.formats.prepare import prepare_sdf
+    return prepare_sdf(robot, options)
+
+
+def _prepare_mjcf(robot: RobotModel, options: Mapping[str, Any]) -> ReviewRecord:
+    from urdfgenpy_ros.formats.prepare import prepare_mjcf
+    return prepare_mjcf(robot, options)
+
+
 FORMATS: list[Format] = [
     Format('xacro', ('.urdf.xacro', '.xacro'), 'Xacro', _read_xacro, _write_xacro,
-           writer_options.xacro_options),
-    Format('urdf', ('.urdf',), 'URDF', _read_urdf, _write_urdf, writer_options.urdf_options,
+           _xacro_options),
+    Format('urdf', ('.urdf',), 'URDF', _read_urdf, _write_urdf, _urdf_options,
            misplaced='{flag} applies to .urdf and .xacro output only: drop it or write .urdf'),
-    Format('sdf', ('.sdf',), 'SDF', None, _write_sdf, writer_options.sdf_options,
+    Format('sdf', ('.sdf',), 'SDF', None, _write_sdf, _sdf_options,
            not_read='reading SDF is not supported (convert from URDF or Xacro)',
-           prepare=prepare_sdf, one_tree=True),
+           prepare=_prepare_sdf, one_tree=True),
     Format('mjcf', ('.xml', '.mjcf'), 'MuJoCo MJCF', None, write_mjcf_warning,
-           writer_options.mjcf_options,
+           _mjcf_options,
            not_read='reading MJCF is not supported: urdfgenpy writes it (a URDF or Xacro '
                     'file named .xml: rename it .urdf or .urdf.xacro)',
-           prepare=prepare_mjcf, one_tree=True,
+           prepare=_prepare_mjcf, one_tree=True,
            misplaced='{flags} apply to MJCF output (.xml, .mjcf) only: drop them or write .xml'),
     Format('assembly', ('.assembly.yaml', '.assembly.yml'), 'assembly file',
            _read_assembly, None),

@@ -26,6 +26,7 @@ message at the file's line. :mod:`.urdf_read` calls them; nothing else does.
 
 from __future__ import annotations
 
+from _thread import allocate_lock  # threading's lock, without loading threading
 from collections.abc import Callable
 import dataclasses
 from typing import Any
@@ -227,10 +228,32 @@ def _compile(element: Element, namespace: dict[str, Any]) -> Reader:
 
 
 def _compile_all() -> dict[str, Reader]:
+    """
+    Return the readers by tag, each compiled on its first call (start-up).
+
+    Until then a tag's reader is a stub that compiles it, puts it in its place (in the
+    returned dict, the generated code's ``R_<tag>`` and ``SHAPES``) and calls it: a file
+    without meshes, materials or mimics never compiles their readers.
+    """
     namespace: dict[str, Any] = {
         'Preserved': Preserved, 'SL': SourceLocation, 'tnew': tuple.__new__,
         'new': object.__new__, 'TYPES': {kind.value: kind for kind in JointType}}
-    readers = {element.tag: _compile(element, namespace) for element in OF_CLASS.values()}
+    readers: dict[str, Reader] = {}
+    lock = allocate_lock()  # threads reading at once compile each reader once
+
+    def stub(element: Element) -> Reader:
+        def first_call(r: Any, node: Any) -> Any:
+            with lock:
+                reader = readers[element.tag]
+                if reader is first_call:
+                    reader = _compile(element, namespace)
+                    readers[element.tag] = namespace[f'R_{element.tag}'] = reader
+                    if element.tag in namespace['SHAPES']:
+                        namespace['SHAPES'][element.tag] = reader
+            return reader(r, node)
+        return first_call
+
+    readers.update({element.tag: stub(element) for element in OF_CLASS.values()})
     namespace.update({f'R_{tag}': reader for tag, reader in readers.items()})
     namespace['SHAPES'] = {tag: readers[tag] for tag in _SHAPE_TAGS}
     return readers

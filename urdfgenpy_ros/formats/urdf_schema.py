@@ -272,7 +272,7 @@ def _compile_values() -> dict[type, Callable[[Any], tuple]]:
     return functions
 
 
-_VALUES = _compile_values()
+_VALUES: dict[type, Callable[[Any], tuple]] = {}  # compiled on first use (start-up)
 
 
 def values(item: Any) -> tuple:
@@ -282,6 +282,8 @@ def values(item: Any) -> tuple:
     Frozen parts (origins, shapes, materials) compare by value as they are; mutable ones
     (inertials, limits, visuals ...) are taken apart, so a later edit shows.
     """
+    if not _VALUES:
+        _VALUES.update(_compile_values())
     return _VALUES[type(item)](item)
 
 

@@ -160,6 +160,9 @@ PREFLIGHT_HINTS: dict[str, str] = {
             'Sim renders',
 }
 
+FIXABLE = frozenset(('J102', 'J103', 'J104', 'J106', 'I202', 'I203', 'I205'))
+"""The codes ``validation.fix`` can repair (J103 and J106 only with defaults)."""
+
 
 def severity_of(code: str) -> Severity:
     """Return the severity of ``code``."""

@@ -35,23 +35,22 @@ import re
 from typing import TYPE_CHECKING
 
 from urdfgenpy_ros.formats.inertia_check import check_inertia
-from urdfgenpy_ros.formats.sdf_refusals import check_libsdformat
 from urdfgenpy_ros.formats.xacro_source import in_source
-from urdfgenpy_ros.model.codes import CODES
+from urdfgenpy_ros.model.codes import CODES, FIXABLE
 from urdfgenpy_ros.model.errors import ValidationError
 from urdfgenpy_ros.model.findings import Findings
 from urdfgenpy_ros.model.review import ENGINES, ReviewRecord, Suppressed
 from urdfgenpy_ros.model.topology import check_topology
 from urdfgenpy_ros.model.urdf_versions import DEFAULT_TARGET, TARGETS
 from urdfgenpy_ros.resources import PackageResolver
-from urdfgenpy_ros.validation.fix import fix, FIXABLE, missing_defaults, Repair
 from urdfgenpy_ros.validation.joints import check_joints
 from urdfgenpy_ros.validation.references import check_references
 from urdfgenpy_ros.validation.suppressions import parse_codes, read_suppressions, Suppressions
 from urdfgenpy_ros.validation.versions import check_versions
 
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # the fixer loads when there is something to repair (start-up)
     from urdfgenpy_ros.model import RobotModel
+    from urdfgenpy_ros.validation.fix import Repair
 
 
 @dataclass(frozen=True)
@@ -149,11 +148,13 @@ class Review(ReviewRecord):
 
     def fix(self) -> list[Repair]:
         """Repair the ``repairable`` findings in ``robot``, in place; return what was done."""
+        from urdfgenpy_ros.validation.fix import fix
         return fix(self.robot, self.repairable, dict(self.options.limit_defaults),
                    self.options.search_paths)
 
     def preview(self) -> list[Repair]:
         """Return what ``fix()`` would do, made on a copy: ``robot`` is left as it is."""
+        from urdfgenpy_ros.validation.fix import fix
         return fix(copy.deepcopy(self.robot), self.repairable,
                    dict(self.options.limit_defaults), self.options.search_paths)
 
@@ -215,6 +216,11 @@ def _gazebo(robot: RobotModel, findings: Findings, options: ReviewOptions) -> No
         gazebo_block_findings(robot, findings)
 
 
+def _libsdformat(robot: RobotModel, findings: Findings, options: ReviewOptions) -> None:
+    from urdfgenpy_ros.formats.sdf_refusals import check_libsdformat
+    check_libsdformat(robot, findings)
+
+
 def _mujoco(robot: RobotModel, findings: Findings, options: ReviewOptions) -> None:
     from urdfgenpy_ros.validation.mujoco_preflight import mujoco_findings
     if len(robot.roots) == 1:
@@ -236,8 +242,7 @@ CHECKS: tuple[Check, ...] = (
     Check('gazebo', _gazebo, ('engines',), lambda options: 'gazebo' in options.engines),
     Check('mujoco', _mujoco, ('engines', 'search_paths'),
           lambda options: 'mujoco' in options.engines),
-    Check('libsdformat', lambda robot, found, _: check_libsdformat(robot, found), ('write_sdf',),
-          lambda options: options.write_sdf),
+    Check('libsdformat', _libsdformat, ('write_sdf',), lambda options: options.write_sdf),
 )
 """Every check, in the order a review runs them (and its findings are listed)."""
 
@@ -276,6 +281,8 @@ def review(robot: RobotModel, options: ReviewOptions | None = None) -> Review:
         else:
             result.suppressed.append(Suppressed(finding, reason, silencing.source(finding)))
     result.repairable = [finding for finding in result.findings if finding.code in FIXABLE]
-    result.needs = missing_defaults(robot, result.repairable, dict(options.limit_defaults),
-                                    options.search_paths)
+    if result.repairable:  # none: nothing is missing either (needs stays empty)
+        from urdfgenpy_ros.validation.fix import missing_defaults
+        result.needs = missing_defaults(robot, result.repairable,
+                                        dict(options.limit_defaults), options.search_paths)
     return result

@@ -35,6 +35,7 @@ from os import PathLike
 import re
 from typing import TYPE_CHECKING
 
+from urdfgenpy_ros.model.codes import FIXABLE
 from urdfgenpy_ros.model.errors import SourceLocation, ValidationError
 from urdfgenpy_ros.model.floats import fmt, fmt_vec
 from urdfgenpy_ros.model.geometry import Mesh
@@ -46,9 +47,6 @@ from urdfgenpy_ros.model.transforms import from_xyz_rpy
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel
     from urdfgenpy_ros.validation.fix_tensor import TensorSources
-
-FIXABLE = frozenset(('J102', 'J103', 'J104', 'J106', 'I202', 'I203', 'I205'))
-"""The codes ``fix`` can repair (J103 and J106 only with defaults)."""
 
 LIMIT_FIELDS = ('lower', 'upper', 'effort', 'velocity')
 _OWNER = re.compile(r"^/robot/(link|joint)\[@name='(.*?)'\]")
