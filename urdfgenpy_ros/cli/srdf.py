@@ -20,14 +20,16 @@ from collections import Counter
 import os
 from pathlib import Path
 import tempfile
+from typing import TYPE_CHECKING
 
 import click
 
 from urdfgenpy_ros.cli._options import input_options, read_robot
 from urdfgenpy_ros.model.errors import UrdfgenpyError
-from urdfgenpy_ros.moveit.collision_matrix import Reason
-from urdfgenpy_ros.moveit.srdf import Srdf, VIRTUAL_JOINTS, write_srdf
-from urdfgenpy_ros.moveit.srdf_update import update_srdf
+from urdfgenpy_ros.moveit import VIRTUAL_JOINTS
+
+if TYPE_CHECKING:
+    from urdfgenpy_ros.moveit.srdf import Srdf
 
 
 @click.command()
@@ -72,12 +74,14 @@ def srdf(source: Path, arguments: tuple[str, ...], output: Path | None, samples:
         if groups:
             raise click.UsageError('--group makes a new SRDF: with --update, edit the '
                                    "file's groups by hand")
+        from urdfgenpy_ros.moveit.srdf_update import update_srdf  # numpy: when asked
         update = update_srdf(robot, existing, samples, seed, default_state, package_paths)
         replace_file(output, update.text.encode('utf-8', 'surrogateescape'))
         for line in update.lines() or ['the collision matrix is unchanged']:
             click.echo(line)
         click.echo(f'wrote {output}')
         return
+    from urdfgenpy_ros.moveit.srdf import write_srdf
     result = write_srdf(robot, output, samples=samples, seed=seed, groups=list(groups),
                         default_state=default_state,
                         virtual_joint=None if virtual_joint == 'none' else virtual_joint,
@@ -103,6 +107,7 @@ def replace_file(path: Path, data: bytes) -> None:
 
 def summary(result: Srdf) -> list[str]:
     """Return what the SRDF holds, and each Default pair with its collision rate."""
+    from urdfgenpy_ros.moveit.collision_matrix import Reason
     matrix = result.matrix
     counts = Counter(matrix.disabled.values())
     total = len(matrix.links) * (len(matrix.links) - 1) // 2

@@ -13,3 +13,6 @@
 # limitations under the License.
 
 """MoveIt's semantic description (SRDF) of a robot, its collision matrix first."""
+
+VIRTUAL_JOINTS = ('fixed', 'floating', 'planar')
+"""The types of the virtual joint an SRDF fixes the robot to its world with."""

@@ -33,7 +33,7 @@ from lxml import etree
 from urdfgenpy_ros.dynamics import movable_joints
 from urdfgenpy_ros.model.errors import ModelError
 from urdfgenpy_ros.model.floats import fmt
-from urdfgenpy_ros.moveit import sampling
+from urdfgenpy_ros.moveit import sampling, VIRTUAL_JOINTS
 from urdfgenpy_ros.moveit.collision_matrix import CollisionMatrix, compute_matrix
 from urdfgenpy_ros.moveit.gripper_states import opens_at_upper
 from urdfgenpy_ros.moveit.groups import (EndEffector, find_groups, Group, parse_group,
@@ -41,8 +41,6 @@ from urdfgenpy_ros.moveit.groups import (EndEffector, find_groups, Group, parse_
 
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel
-
-VIRTUAL_JOINTS = ('fixed', 'floating', 'planar')
 
 
 @dataclass(frozen=True)
