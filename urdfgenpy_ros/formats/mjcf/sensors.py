@@ -159,10 +159,11 @@ def _site(body: Any, name: str, pose: Origin) -> Any:
 def _first_after_joints(body: Any, tag: str, attributes: dict[str, str]) -> Any:
     """Add ``tag`` to ``body`` before its child bodies (MJCF wants no order; readers do)."""
     element = etree.Element(tag, attributes)
-    children = list(body)
-    index = next((number for number, child in enumerate(children) if child.tag == 'body'),
-                 len(children))
-    body.insert(index, element)
+    child = body.find('body')  # lxml's own scan: a lidar adds a thousand sites to one body
+    if child is None:
+        body.append(element)
+    else:
+        child.addprevious(element)
     return element
 
 
