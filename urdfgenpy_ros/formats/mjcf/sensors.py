@@ -146,20 +146,22 @@ def write_sensors(document: Any, worldbody: Any, robot: RobotModel,
     return written
 
 
-def _site(body: Any, name: str, pose: Origin) -> Any:
+def _site(body: Any, name: str, pose: Origin, before: Any = None) -> Any:
+    """Add a site to ``body`` before its child bodies (``before``: the first, when known)."""
     attributes = {'name': name}
     if any(pose.xyz):
         attributes['pos'] = fmt_vec(pose.xyz)
     turned = quat(pose)
     if turned is not None:
         attributes['quat'] = turned
-    return _first_after_joints(body, 'site', attributes)
+    return _first_after_joints(body, 'site', attributes, before)
 
 
-def _first_after_joints(body: Any, tag: str, attributes: dict[str, str]) -> Any:
+def _first_after_joints(body: Any, tag: str, attributes: dict[str, str],
+                        before: Any = None) -> Any:
     """Add ``tag`` to ``body`` before its child bodies (MJCF wants no order; readers do)."""
     element = etree.Element(tag, attributes)
-    child = body.find('body')  # lxml's own scan: a lidar adds a thousand sites to one body
+    child = before if before is not None else body.find('body')
     if child is None:
         body.append(element)
     else:
@@ -191,13 +193,14 @@ def _lidar(body: Any, section: Any, name: str, pose: Origin, element: Any) -> st
     cutoff = _number(scan, 'range/max', 0.0)
     frame = from_xyz_rpy(pose.xyz, pose.rpy)
     width = len(str(samples - 1))
+    before = body.find('body')  # found once: a ring can be a thousand sites
     for index in range(samples):
         angle = low + (high - low) * index / (samples - 1) if samples > 1 else low
         # the ray is the site's +Z: turn +Z onto the sensor's (cos a, sin a, 0)
         ray = multiply(frame, from_xyz_rpy((0.0, 0.0, 0.0), (0.0, math.pi / 2.0, angle)))
         xyz, rpy = to_xyz_rpy(ray)
         site = f'{name}_ray{index:0{width}d}'
-        _site(body, site, Origin(xyz, rpy))
+        _site(body, site, Origin(xyz, rpy), before)
         attributes = {'name': site, 'site': site}
         if cutoff > 0.0:
             attributes['cutoff'] = fmt(cutoff)
