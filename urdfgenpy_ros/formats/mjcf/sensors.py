@@ -146,26 +146,31 @@ def write_sensors(document: Any, worldbody: Any, robot: RobotModel,
     return written
 
 
-def _site(body: Any, name: str, pose: Origin, before: Any = None) -> Any:
-    """Add a site to ``body`` before its child bodies (``before``: the first, when known)."""
+def _site(body: Any, name: str, pose: Origin) -> Any:
+    return _first_after_joints(body, 'site', _site_attributes(name, pose))
+
+
+def _site_attributes(name: str, pose: Origin) -> dict[str, str]:
     attributes = {'name': name}
     if any(pose.xyz):
         attributes['pos'] = fmt_vec(pose.xyz)
     turned = quat(pose)
     if turned is not None:
         attributes['quat'] = turned
-    return _first_after_joints(body, 'site', attributes, before)
+    return attributes
 
 
-def _first_after_joints(body: Any, tag: str, attributes: dict[str, str],
-                        before: Any = None) -> Any:
+def _first_after_joints(body: Any, tag: str, attributes: dict[str, str]) -> Any:
     """Add ``tag`` to ``body`` before its child bodies (MJCF wants no order; readers do)."""
-    element = etree.Element(tag, attributes)
-    child = before if before is not None else body.find('body')
-    if child is None:
+    return _placed(body, etree.Element(tag, attributes), body.find('body'))
+
+
+def _placed(body: Any, element: Any, before: Any) -> Any:
+    """Add ``element`` to ``body`` before its child body ``before`` (None: at the end)."""
+    if before is None:
         body.append(element)
     else:
-        child.addprevious(element)
+        before.addprevious(element)
     return element
 
 
@@ -200,7 +205,7 @@ def _lidar(body: Any, section: Any, name: str, pose: Origin, element: Any) -> st
         ray = multiply(frame, from_xyz_rpy((0.0, 0.0, 0.0), (0.0, math.pi / 2.0, angle)))
         xyz, rpy = to_xyz_rpy(ray)
         site = f'{name}_ray{index:0{width}d}'
-        _site(body, site, Origin(xyz, rpy), before)
+        _placed(body, etree.Element('site', _site_attributes(site, Origin(xyz, rpy))), before)
         attributes = {'name': site, 'site': site}
         if cutoff > 0.0:
             attributes['cutoff'] = fmt(cutoff)
