@@ -152,6 +152,7 @@ def test_a_converted_meshs_verdict_is_asked_once_a_process(tmp_path: Path,
                       'filename="part.dae"/></geometry></visual></link></robot>')
     asked: list[int] = []
     verdict = mesh_convert.mujoco_refusal
+    monkeypatch.setattr(mesh_convert, '_verdicts', {})  # this process may have asked before
     monkeypatch.setattr(mesh_convert, 'mujoco_refusal',
                         lambda name, data: asked.append(len(data)) or verdict(name, data))
     for number in range(3):
