@@ -23,8 +23,7 @@ import behind its own package resolution); kscalelabs' urdf2mjcf; truerig. "Load
 the converter wrote a file and MuJoCo compiles it. Ours is timed twice: convert (read,
 write MJCF and its meshes) and convert-and-verify (the same, then MuJoCo compiles it).
 
-    URDFGENPY_CORPUS=/path/to/corpus python bench/bench_mjcf.py --repeat 3 [--cold] \
-        [--fresh-mujoco] [--cpu]
+    URDFGENPY_CORPUS=<corpus> python bench/bench_mjcf.py --repeat 3 [--cold --fresh-mujoco --cpu]
 
 Converted meshes are kept in a mesh cache (issue 41): this run uses a cache folder of its
 own, empty at the start, so the first of the repeats converts and the others reuse;
