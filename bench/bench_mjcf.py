@@ -23,11 +23,16 @@ import behind its own package resolution); kscalelabs' urdf2mjcf; truerig. "Load
 the converter wrote a file and MuJoCo compiles it. Ours is timed twice: convert (read,
 write MJCF and its meshes) and convert-and-verify (the same, then MuJoCo compiles it).
 
-    URDFGENPY_CORPUS=/path/to/corpus python bench/bench_mjcf.py --repeat 3 [--cold]
+    URDFGENPY_CORPUS=<corpus> python bench/bench_mjcf.py --repeat 3 [--cold --fresh-mujoco --cpu]
 
 Converted meshes are kept in a mesh cache (issue 41): this run uses a cache folder of its
 own, empty at the start, so the first of the repeats converts and the others reuse;
 ``--cold`` gives each of our runs an empty cache (every mesh converted every time).
+``--fresh-mujoco`` empties MuJoCo's own in-process mesh cache before every timed run of
+every converter, as a new process starts: without it, MuJoCo's import reads the package's
+mesh files at the same paths every run and compiles them from that cache after the first,
+while our verify reads the files just written, at new paths, so never from it. ``--cpu``
+times by the process's CPU time (a machine shared with other work), not the wall clock.
 
 Robots: the registry robots of the test extra and, with the corpus, its URDF files that
 check_urdf accepts.
@@ -91,6 +96,8 @@ def _compiles(path: Path) -> bool:
 
 
 COLD = False  # --cold: each of our runs starts with an empty mesh cache
+FRESH_MUJOCO = False  # --fresh-mujoco: MuJoCo's mesh cache emptied before every timed run
+CLOCK = time.perf_counter  # --cpu: time.process_time (this process's CPU, on a shared machine)
 
 
 def ours(source: Path, folders: list[Path], out: Path, verify: bool) -> bool:
@@ -172,13 +179,16 @@ def _time(function, source: Path, folders: list[Path], verify: bool,
     times = []
     for _ in range(repeat):
         with tempfile.TemporaryDirectory() as folder:
-            start = time.perf_counter()
+            if FRESH_MUJOCO:
+                import mujoco
+                mujoco.mj_clearCache(mujoco.mj_getCache())
+            start = CLOCK()
             try:
                 with _silent():
                     loaded = function(source, folders, Path(folder), verify)
             except Exception:  # noqa: B902 - a peer failing on a robot is a result
                 loaded = False
-            times.append(time.perf_counter() - start)
+            times.append(CLOCK() - start)
         if not loaded:
             return None
     return statistics.median(times)
@@ -190,9 +200,14 @@ def main() -> None:
     parser.add_argument('--repeat', type=int, default=3)
     parser.add_argument('--cold', action='store_true',
                         help='an empty mesh cache for each of our runs')
+    parser.add_argument('--fresh-mujoco', action='store_true',
+                        help="MuJoCo's in-process mesh cache emptied before every timed run")
+    parser.add_argument('--cpu', action='store_true',
+                        help="time by this process's CPU time, not the wall clock")
     arguments = parser.parse_args()
-    global COLD
-    COLD = arguments.cold
+    global COLD, FRESH_MUJOCO, CLOCK
+    COLD, FRESH_MUJOCO = arguments.cold, arguments.fresh_mujoco
+    CLOCK = time.process_time if arguments.cpu else time.perf_counter
     cache = tempfile.mkdtemp(prefix='mesh-cache-')
     os.environ.setdefault('URDFGENPY_CACHE_DIR', cache)
     robots = _robots()

@@ -37,9 +37,12 @@ def write_excludes(document: Any, assets: dict[str, bytes], meshdir: str | None
         return ('contacts: no self-collision excluded (MuJoCo finds the pairs: '
                 "pip install 'urdfgenpy_ros[engines]')")
     files = {f'{meshdir}/{name}' if meshdir else name: data for name, data in assets.items()}
+    text, used = _without_visuals(document)
     try:
-        try:
-            model = mujoco.MjModel.from_xml_string(_without_visuals(document), files)
+        try:  # MuJoCo copies every file it is given: only those the contact model reads
+            model = mujoco.MjModel.from_xml_string(text, {
+                f'{meshdir}/{name}' if meshdir else name: data
+                for name, data in assets.items() if name in used})
         except ValueError:  # an overlay names a visual geom: the whole model, then
             model = mujoco.MjModel.from_xml_string(
                 etree.tostring(document, encoding='unicode'), files)
@@ -66,8 +69,12 @@ def write_excludes(document: Any, assets: dict[str, bytes], meshdir: str | None
             'MuJoCo finds them; Gazebo has no self-collision by default)')
 
 
-def _without_visuals(document: Any) -> str:
-    """Return the model's text without visual geoms and the meshes only they use (faster)."""
+def _without_visuals(document: Any) -> tuple[str, set[str]]:
+    """
+    Return the model's text without visual geoms and the meshes only they use (faster).
+
+    With it, the names of the files its meshes read.
+    """
     import copy
     model = copy.deepcopy(document)
     for geom in list(model.iter('geom')):
@@ -78,7 +85,8 @@ def _without_visuals(document: Any) -> str:
     for mesh in list(asset.iter('mesh')) if asset is not None else ():
         if mesh.get('name') not in used:
             asset.remove(mesh)
-    return etree.tostring(model, encoding='unicode')
+    files = {mesh.get('file') for mesh in model.iter('mesh') if mesh.get('file')}
+    return etree.tostring(model, encoding='unicode'), files
 
 
 def _pairs(mujoco: Any, model: Any) -> list[tuple[str, str]]:

@@ -176,6 +176,21 @@ def mujoco_refusal(file_name: str, data: bytes) -> str | None:
     return verdict.decode() or None
 
 
+_verdicts: dict[tuple[str, int], str | None] = {}  # (conversion's key, part): this process's
+
+
+def conversion_refusal(path: Path, part: int, data: bytes) -> str | None:
+    """
+    Return :func:`mujoco_refusal` of ``data``, part ``part`` (-1: whole) of ``path``'s OBJ.
+
+    Asked once a process per conversion, not hashed again on every write.
+    """
+    stamp = (_key(path), part)
+    if stamp not in _verdicts:
+        _verdicts[stamp] = mujoco_refusal('m.obj', data)
+    return _verdicts[stamp]
+
+
 def _mujoco_reads(mujoco: Any, suffix: str, data: bytes) -> bytes:
     text = ('<mujoco><default><mesh inertia="shell"/></default><asset>'
             f'<mesh name="m" file="m{suffix}"/></asset></mujoco>')

@@ -32,9 +32,10 @@ import re
 from typing import Any, TYPE_CHECKING
 from urllib.parse import urlparse
 
-from urdfgenpy_ros.formats.mjcf.mesh_convert import (convert_many, CONVERTED, Converted,
-                                                     converted, COPIED, mujoco_refusal,
-                                                     needs_conversion, readable, Rgba)
+from urdfgenpy_ros.formats.mjcf.mesh_convert import (conversion_refusal, convert_many,
+                                                     CONVERTED, Converted, converted,
+                                                     COPIED, needs_conversion, readable,
+                                                     Rgba)
 from urdfgenpy_ros.model.errors import ModelError, UrdfgenpyError
 from urdfgenpy_ros.model.floats import fmt_vec
 from urdfgenpy_ros.model.geometry import Mesh
@@ -173,7 +174,7 @@ class MeshAssets:
                 if part >= 0:
                     data, _, material = conversion.parts[part]
                     stem = f'{stem}_{_safe(material) or part + 1}'
-                refusal = mujoco_refusal('m.obj', data)
+                refusal = conversion_refusal(path, part, data)
                 if refusal is not None:
                     raise ModelError(f'{path}: MuJoCo cannot read its conversion to OBJ '
                                      f'({refusal})')

@@ -147,22 +147,30 @@ def write_sensors(document: Any, worldbody: Any, robot: RobotModel,
 
 
 def _site(body: Any, name: str, pose: Origin) -> Any:
+    return _first_after_joints(body, 'site', _site_attributes(name, pose))
+
+
+def _site_attributes(name: str, pose: Origin) -> dict[str, str]:
     attributes = {'name': name}
     if any(pose.xyz):
         attributes['pos'] = fmt_vec(pose.xyz)
     turned = quat(pose)
     if turned is not None:
         attributes['quat'] = turned
-    return _first_after_joints(body, 'site', attributes)
+    return attributes
 
 
 def _first_after_joints(body: Any, tag: str, attributes: dict[str, str]) -> Any:
     """Add ``tag`` to ``body`` before its child bodies (MJCF wants no order; readers do)."""
-    element = etree.Element(tag, attributes)
-    children = list(body)
-    index = next((number for number, child in enumerate(children) if child.tag == 'body'),
-                 len(children))
-    body.insert(index, element)
+    return _placed(body, etree.Element(tag, attributes), body.find('body'))
+
+
+def _placed(body: Any, element: Any, before: Any) -> Any:
+    """Add ``element`` to ``body`` before its child body ``before`` (None: at the end)."""
+    if before is None:
+        body.append(element)
+    else:
+        before.addprevious(element)
     return element
 
 
@@ -190,13 +198,14 @@ def _lidar(body: Any, section: Any, name: str, pose: Origin, element: Any) -> st
     cutoff = _number(scan, 'range/max', 0.0)
     frame = from_xyz_rpy(pose.xyz, pose.rpy)
     width = len(str(samples - 1))
+    before = body.find('body')  # found once: a ring can be a thousand sites
     for index in range(samples):
         angle = low + (high - low) * index / (samples - 1) if samples > 1 else low
         # the ray is the site's +Z: turn +Z onto the sensor's (cos a, sin a, 0)
         ray = multiply(frame, from_xyz_rpy((0.0, 0.0, 0.0), (0.0, math.pi / 2.0, angle)))
         xyz, rpy = to_xyz_rpy(ray)
         site = f'{name}_ray{index:0{width}d}'
-        _site(body, site, Origin(xyz, rpy))
+        _placed(body, etree.Element('site', _site_attributes(site, Origin(xyz, rpy))), before)
         attributes = {'name': site, 'site': site}
         if cutoff > 0.0:
             attributes['cutoff'] = fmt(cutoff)
