@@ -389,6 +389,25 @@ def test_the_pinocchio_path_gives_the_numpy_paths_numbers(path: Path) -> None:
             1.0, abs(expected).max())
 
 
+@pytest.mark.parametrize('gravity', [(0.0, 0.0, math.nan), (1.0, 2.0), 'down'])
+def test_a_gravity_that_is_not_three_finite_numbers_is_refused(gravity: object) -> None:
+    with pytest.raises(ModelError, match='gravity must be three finite numbers'):
+        odd_robot().gravity_torques([0.1, 0.2, 0.3], gravity)  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize('base, message', [
+    (numpy.full((4, 4), math.nan), 'not a finite number'),
+    (numpy.diag([2.0, 2.0, 2.0, 1.0]), 'rigid pose'),  # a scaling
+    (numpy.diag([1.0, 1.0, -1.0, 1.0]), 'rigid pose'),  # a mirror
+    (numpy.ones((4, 4)), 'rigid pose')])
+def test_a_base_that_is_not_a_rigid_pose_is_refused(base: numpy.ndarray, message: str) -> None:
+    robot = odd_robot()
+    for call in (lambda: robot.fk([0.1, 0.2, 0.3], base=base),
+                 lambda: robot.jacobian('link_g', [0.1, 0.2, 0.3], base=base)):
+        with pytest.raises(ModelError, match=message):
+            call()
+
+
 def test_a_pose_read_is_a_view_of_the_array_as_on_the_numpy_path() -> None:
     robot = odd_robot()
     poses = robot.fk([0.3, -0.2, 0.5])

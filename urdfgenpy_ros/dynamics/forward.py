@@ -25,6 +25,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
 import math
+from typing import Any
 
 import numpy
 
@@ -78,6 +79,25 @@ def _turns(model: ChainModel) -> _Turns:
     return cached[1]
 
 
+def rigid_pose(base: Any) -> numpy.ndarray:
+    """Return ``base`` as a 4x4 rigid pose (a rotation and a shift), or a ModelError."""
+    try:
+        pose = numpy.asarray(base, dtype=float)
+    except (TypeError, ValueError):
+        raise ModelError(f'base must be a 4x4 pose, got {base!r}') from None
+    if pose.shape != (4, 4):
+        raise ModelError(f'base must be a 4x4 pose, got shape {pose.shape}')
+    if not numpy.isfinite(pose).all():
+        raise ModelError('base holds a value that is not a finite number (NaN or inf)')
+    rotation = pose[:3, :3]
+    if not (numpy.array_equal(pose[3], (0.0, 0.0, 0.0, 1.0))
+            and numpy.allclose(rotation @ rotation.T, numpy.eye(3), atol=1e-6)
+            and numpy.linalg.det(rotation) > 0.0):
+        raise ModelError('base must be a rigid pose: a rotation (orthonormal, determinant 1) '
+                         'and a shift, with the last row 0 0 0 1')
+    return pose
+
+
 def link_matrices(model: ChainModel, q: numpy.ndarray, base: numpy.ndarray | None = None
                   ) -> numpy.ndarray:
     """
@@ -87,11 +107,7 @@ def link_matrices(model: ChainModel, q: numpy.ndarray, base: numpy.ndarray | Non
     (default: the identity), puts the root there instead.
     """
     turns = _turns(model)
-    pose = None
-    if base is not None:
-        pose = numpy.asarray(base, dtype=float)
-        if pose.shape != (4, 4):
-            raise ModelError(f'base must be a 4x4 pose, got shape {pose.shape}')
+    pose = None if base is None else rigid_pose(base)
     count, links = q.shape[0], len(model.links)
     if count >= JUMPING_BELOW:
         return _link_by_link(model, turns, q, pose)

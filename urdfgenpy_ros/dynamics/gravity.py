@@ -91,9 +91,12 @@ def _payload(model: ChainModel, payload: Mapping[str, object]
 
 def gravity_vector(gravity: Sequence[float] | numpy.ndarray) -> numpy.ndarray:
     """Return ``gravity`` as a 3-vector, or a ModelError."""
-    g = numpy.asarray(gravity, dtype=float)
-    if g.shape != (3,):
-        raise ModelError(f'gravity must be three numbers (m/s^2), got {gravity!r}')
+    try:
+        g = numpy.asarray(gravity, dtype=float)
+    except (TypeError, ValueError):
+        g = numpy.zeros(0)
+    if g.shape != (3,) or not all(map(math.isfinite, g.tolist())):
+        raise ModelError(f'gravity must be three finite numbers (m/s^2), got {gravity!r}')
     return g
 
 
