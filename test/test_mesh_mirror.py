@@ -21,7 +21,10 @@ the source's unit is read with lxml (mesh_judge); the URIs are read back by your
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
+import subprocess
+import sys
 
 from click.testing import CliRunner
 from helpers import require_module
@@ -132,3 +135,21 @@ def test_a_mirror_image_is_taken_from_the_cache(tmp_path: Path, monkeypatch) -> 
             str(tmp_path / 'b.urdf'))
     assert (tmp_path / 'a' / 'part_mirror_xz.dae').read_bytes() == \
         (tmp_path / 'b' / 'part_mirror_xz.dae').read_bytes()
+
+
+def test_a_mirror_written_again_loads_no_mesh_library(tmp_path: Path) -> None:
+    require_module('collada')
+    mesh_judge.write_y_up_dae(tmp_path / 'part.dae')
+    (tmp_path / 'arm.urdf').write_text(ARM.format(mesh='part.dae'))
+    run = ('import sys\nfrom urdfgenpy_ros.cli import main\n'
+           'main.main(sys.argv[1:], standalone_mode=False)\n'
+           "print(sorted(m for m in ('trimesh', 'scipy') if m in sys.modules))")
+    arguments = ['mirror', str(tmp_path / 'arm.urdf'), '--root', 'left_arm', '--mesh-folder',
+                 str(tmp_path / 'meshes'), '-o', str(tmp_path / 'both.urdf'), '--force']
+    environment = {**os.environ, 'URDFGENPY_CACHE_DIR': str(tmp_path / 'cache')}
+    for _ in range(2):  # the second finds its mirror image in the folder, byte for byte
+        result = subprocess.run([sys.executable, '-c', run, *arguments], capture_output=True,
+                                text=True, env=environment, timeout=120)
+        assert result.returncode == 0, result.stderr
+    assert result.stdout.splitlines()[-1] == '[]'
+    assert (tmp_path / 'meshes' / 'part_mirror_xz.dae').exists()

@@ -175,9 +175,9 @@ def _export(mesh: Any, target: Path) -> tuple[bytes, dict[str, bytes]]:
 
 def _same_geometry(target: Path, data: bytes, suffix: str) -> bool:
     """Return whether ``target`` holds the triangles ``data`` does (in any order)."""
-    import trimesh
-    if target.read_bytes() == data:
+    if target.read_bytes() == data:  # a mirror written before: no mesh library to load
         return True
+    import trimesh
     kind = suffix.lstrip('.').lower()
     try:
         there: Any = trimesh.load(str(target), force='mesh', process=False)
