@@ -221,8 +221,9 @@ def _check_followers(model: ChainModel, row: numpy.ndarray,
     more = f' (and {len(wrong) - 1} more)' if len(wrong) > 1 else ''
     name, leader = first
     if strict:
-        raise ModelError(f'q names {name!r}, a mimic joint: it follows {leader!r}; give a value '
-                         f'for {leader!r} instead ({wrong[0]}{more})')
+        raise ModelError(f'q gives mimic joint {name!r} a value that does not follow '
+                         f'{leader!r} ({wrong[0]}{more}): leave {name!r} out (its value comes '
+                         f'from {leader!r}) or give it the value the formula gives')
     warn_caller(f'mimic joint {name!r} follows {leader!r}: {wrong[0]}{more}; the value '
                 f'from {leader!r} is used, as robot_state_publisher does')
 
