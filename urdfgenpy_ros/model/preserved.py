@@ -109,7 +109,7 @@ class SourceDocument(Preserved):
     Writers find each node's span in ``text`` (:mod:`urdfgenpy_ros.formats.source_record`).
     """
 
-    __slots__ = ('order', 'text', 'bom', 'mended', 'blocks', 'directives')
+    __slots__ = ('order', 'text', 'bom', 'mended', 'blocks', 'directives', 'layout')
 
     def __init__(self, node: Any, order: list[Any], text: str, *, bom: bool = False,
                  mended: bool = False, blocks: dict[Any, bytes] | None = None,
@@ -121,6 +121,7 @@ class SourceDocument(Preserved):
         self.mended = mended
         self.blocks = blocks if blocks is not None else {}
         self.directives = directives if directives is not None else []
+        self.layout: tuple[str, str, str] | None = None  # the writer's: text, line end, quote
 
     def elements(self, tag: str) -> list[Any]:
         """
