@@ -70,14 +70,14 @@ def _layout(document: SourceDocument | None) -> tuple[str, str, str]:
     if document is None:
         return '\n', '"', '  '
     text = document.text
-    known = document.layout  # (text, line end, quote): counted once per text
+    known = document.memo.get('layout')  # (text, line end, quote): counted once per text
     if known is not None and known[0] is text:
         newline, quote = known[1], known[2]
     else:
         crlf = text.count('\r\n') if '\r' in text else 0  # the ends most lines have
         newline = '\r\n' if crlf and 2 * crlf > text.count('\n') else '\n'
         quote = "'" if "='" in text and text.count("='") > text.count('="') else '"'
-        document.layout = (text, newline, quote)
+        document.memo['layout'] = (text, newline, quote)
     space = document.node.text or ''
     unit = space.rsplit('\n', 1)[-1] if '\n' in space else ''
     return newline, quote, unit if unit and not unit.strip() else '  '
