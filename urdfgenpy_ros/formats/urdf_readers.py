@@ -177,7 +177,9 @@ def _build(code: _Code, element: Element, indent: int) -> None:
     parts = [f'f_{name}' for name in fields]
     parts += [f'(None if f_{name} is None else f_{name}.extras.snapshot)' for name in nested]
     parts += [f'tuple([part.extras.snapshot for part in f_{name}])' for name in lists]
-    code.add(indent, f'ex = Preserved(node, ({", ".join(parts)},))')
+    code.add(indent, 'ex = new(Preserved)')  # Preserved(node, snapshot), without its __init__
+    code.add(indent, 'ex.node = node')
+    code.add(indent, f'ex.snapshot = ({", ".join(parts)},)')
     code.add(indent, 'where = tnew(SL, (r.file, node.sourceline, None, None, ()))')
     if element.make is not None:
         given = ', '.join(f'f_{attr.field}' for attr in element.attrs)
