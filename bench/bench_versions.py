@@ -27,7 +27,10 @@ Workloads: ``read`` (``Robot.from_urdf`` of every URDF below, a fresh parse each
 with the public API and written), ``mjcf`` (``to_mjcf()`` of the registry robots, the
 mesh cache warm).
 
-    python bench/bench_versions.py 6684634 068406d HEAD [--rounds 5] [--corpus DIR]
+``--cpu`` times each call in CPU time (``time.process_time``) instead of wall time: on a
+machine other work keeps busy, the figures move less.
+
+    python bench/bench_versions.py 6684634 068406d HEAD [--rounds 5] [--corpus DIR] [--cpu]
 """
 
 from __future__ import annotations
@@ -44,14 +47,15 @@ import tempfile
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parent
 WORKER = r"""
-import json, sys, warnings
+import json, sys, time, warnings
 warnings.simplefilter('ignore')
 from timing import median_seconds
 from urdfgenpy_ros import Robot
 files = json.loads(sys.argv[1])
 search = json.loads(sys.argv[2])
+timer = time.process_time if sys.argv[3] == 'cpu' else time.perf_counter
 def clock(function):
-    return median_seconds(function, 3)
+    return median_seconds(function, 3, timer)
 def chain():
     from urdfgenpy_ros import Box, Collision, Inertial, Joint, JointLimit, Link, Origin, Visual
     robot = Robot('bench')
@@ -108,11 +112,12 @@ def robots(corpus: Path | None) -> tuple[list[str], dict[str, list[str]]]:
     return files, {str(path): folders for path in registry}
 
 
-def run(folder: Path, files: list[str], search: dict[str, list[str]]) -> dict:
+def run(folder: Path, files: list[str], search: dict[str, list[str]], clock: str = 'wall'
+        ) -> dict:
     """Run the workloads once with the package in ``folder``; return their times."""
     env = dict(os.environ, PYTHONPATH=os.pathsep.join((str(folder), str(HERE))))  # + timing
-    done = subprocess.run([sys.executable, '-c', WORKER, json.dumps(files), json.dumps(search)],
-                          env=env, capture_output=True, text=True, cwd=folder)
+    done = subprocess.run([sys.executable, '-c', WORKER, json.dumps(files), json.dumps(search),
+                           clock], env=env, capture_output=True, text=True, cwd=folder)
     if done.returncode:
         sys.exit(f'{folder}: the workloads failed:\n{done.stderr[-2000:]}')
     return json.loads(done.stdout)
@@ -168,6 +173,7 @@ def main() -> None:
     parser.add_argument('versions', nargs='+', help='git commits or folders, first = yardstick')
     parser.add_argument('--rounds', type=int, default=5)
     parser.add_argument('--corpus', type=Path, default=os.environ.get('URDFGENPY_CORPUS'))
+    parser.add_argument('--cpu', action='store_true', help='CPU time instead of wall time')
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as scratch:
         folders = {version: unpack(version, Path(scratch)) for version in args.versions}
@@ -177,7 +183,8 @@ def main() -> None:
         times: dict[str, list[dict]] = {version: [] for version in folders}
         for _ in range(args.rounds):
             for version, folder in folders.items():
-                times[version].append(run(folder, files, search))
+                times[version].append(run(folder, files, search,
+                                          'cpu' if args.cpu else 'wall'))
     print(table(times))
 
 
