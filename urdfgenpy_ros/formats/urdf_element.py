@@ -113,6 +113,8 @@ class ElementWriter:
     def write_inertial(self, inertial: Inertial, pad: str | None, link: Link,
                        slot: Any = None) -> str:
         """Return the ``<inertial>`` element of ``link``."""
+        if inertial.extras is None and slot is None and pad is not None and self.quote == '"':
+            return FRESH[type(inertial)](self, inertial, pad)  # what write_object does then
         return self.write_object(INERTIAL, inertial, pad, slot)
 
     def source_text(self, node: Any, as_read: bool = False) -> str:
