@@ -169,7 +169,8 @@ class ElementWriter:
             if text is None:
                 text = self._leaves[item] = in_quotes(FRESH[kind](self, item, pad), self.quote)
             return text
-        return in_quotes(FRESH[kind](self, item, pad), self.quote)
+        text = FRESH[kind](self, item, pad)
+        return text if self.quote == '"' else in_quotes(text, self.quote)  # a call less
 
     def write(self, element: Element, item: Any, node: Any, pad: str | None) -> str:
         """Return ``element`` with the fields of ``item``, laid out like ``node`` if any."""
