@@ -23,9 +23,10 @@ rounds. The table gives, per workload, each version's per-file median time and i
 to the first version's, as the median and the 90th percentile over files.
 
 Workloads: ``read`` (``Robot.from_urdf`` of every URDF below, a fresh parse each time),
-``write`` (``to_urdf()`` of what was read, unedited), ``build`` (a 1,000-link chain made
-with the public API and written), ``mjcf`` (``to_mjcf()`` of the registry robots, the
-mesh cache warm).
+``write`` (``to_urdf()`` of what was read, unedited), ``edited`` (the first ``to_urdf()``
+of a robot just read and edited: renamed, one mass and one effort set), ``build`` (a
+1,000-link chain made with the public API and written), ``mjcf`` (``to_mjcf()`` of the
+registry robots, the mesh cache warm).
 
 ``--cpu`` times each call in CPU time (``time.process_time``) instead of wall time: on a
 machine other work keeps busy, the figures move less.
@@ -73,11 +74,25 @@ def chain():
                                   axis=(0, 0, 1),
                                   limit=JointLimit(-1.57, 1.57, effort=10, velocity=1)))
     robot.to_urdf()
-out = {'build': {'chain-1000': clock(chain)}, 'read': {}, 'write': {}, 'mjcf': {}}
+def edited(file):
+    robot = Robot.from_urdf(file)
+    robot.name += '_edited'
+    for link in robot.links:
+        if link.inertial is not None:
+            link.inertial.mass = link.inertial.mass * 2 + 0.125
+            break
+    for joint in robot.joints:
+        if joint.limit is not None:
+            joint.limit.effort = 7.5
+            break
+    return robot
+out = {'build': {'chain-1000': clock(chain)}, 'read': {}, 'write': {}, 'edited': {}, 'mjcf': {}}
 for file in files:
     robot = Robot.from_urdf(file)
     out['read'][file] = clock(lambda: Robot.from_urdf(file))
     out['write'][file] = clock(robot.to_urdf)
+    copies = [edited(file) for _ in range(3)]  # each written once: a first write
+    out['edited'][file] = clock(lambda: copies.pop().to_urdf())
     if file in search:
         try:
             robot.to_mjcf(search_paths=search[file])  # the mesh cache warm
@@ -153,7 +168,7 @@ def table(times: dict[str, list[dict]]) -> str:
         f'{version} (ms, median)' for version in versions) + ' | ' + ' | '.join(
         f'{version} / {first} (median, p90)' for version in versions[1:]) + ' |',
         '|---|---:|' + '---:|' * (2 * len(versions) - 1)]
-    for workload in ('read', 'write', 'build', 'mjcf'):
+    for workload in ('read', 'write', 'edited', 'build', 'mjcf'):
         keys = list(times[first][0][workload])
         if not keys:
             continue
