@@ -239,6 +239,22 @@ def test_writes_between_edits_change_nothing_written_after(path: Path) -> None:
     assert expected.count('<kept>') == len(_blocks(once))
 
 
+def test_a_copy_of_a_written_robot_writes_as_a_robot_never_written() -> None:
+    """What a write keeps of the file stays with the robot written, not with its copies."""
+    import copy
+    path = FIXTURES / 'crlf.urdf'
+    original = Robot.from_urdf(path)
+    _edit_values(original)
+    written = original.to_urdf()
+    twin = copy.deepcopy(original)
+    _edit_blocks(twin)
+    expected = Robot.from_urdf(path)
+    _edit_values(expected)
+    _edit_blocks(expected)
+    assert twin.to_urdf() == expected.to_urdf() != written
+    assert original.to_urdf() == written
+
+
 def _corpus_files() -> list[Path]:
     if not CORPUS.is_dir():
         return []

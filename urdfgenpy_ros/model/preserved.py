@@ -125,6 +125,19 @@ class SourceDocument(Preserved):
         self.directives = directives if directives is not None else []
         self.memo: dict[str, tuple[Any, ...]] = {}
 
+    def __getstate__(self) -> tuple[None, dict[str, Any]]:
+        """Return what a copy takes: every slot but ``memo`` (a copy works it out again)."""
+        slots = {name: getattr(self, name) for name in (*Preserved.__slots__,
+                                                        *SourceDocument.__slots__)}
+        del slots['memo']
+        return None, slots
+
+    def __setstate__(self, state: tuple[None, dict[str, Any]]) -> None:
+        """Take a copy's slots; its ``memo`` starts empty."""
+        for name, value in state[1].items():
+            setattr(self, name, value)
+        self.memo = {}
+
     def elements(self, tag: str) -> list[Any]:
         """
         Return the robot's top-level ``<tag>`` elements the model does not hold, as read.
