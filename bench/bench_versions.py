@@ -28,8 +28,8 @@ of a robot just read and edited: renamed, one mass and one effort set), ``build`
 1,000-link chain made with the public API and written), ``mjcf`` (``to_mjcf()`` of the
 registry robots, the mesh cache warm).
 
-``--cpu`` times each call in CPU time (``time.process_time``) instead of wall time: on a
-machine other work keeps busy, the figures move less.
+``--cpu`` times each call in the CPU time of its process (``time.process_time``) instead
+of wall time: time spent waiting for a core that other work holds is not counted.
 
     python bench/bench_versions.py 6684634 068406d HEAD [--rounds 5] [--corpus DIR] [--cpu]
 """

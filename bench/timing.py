@@ -28,8 +28,8 @@ def median_seconds(function: Callable[[], Any], repeat: int,
     """
     Return the median time of ``repeat`` calls of ``function`` (GC run before each).
 
-    ``clock`` is wall time; ``time.process_time`` gives the CPU time of this process,
-    which other work on a busy machine disturbs less.
+    ``clock`` is wall time; ``time.process_time`` gives the CPU time of this process (time
+    spent waiting for a core is not counted).
     """
     times = []
     for _ in range(repeat):

@@ -76,7 +76,7 @@ def _layout(document: SourceDocument | None) -> tuple[str, str, str]:
     else:
         crlf = text.count('\r\n') if '\r' in text else 0  # the ends most lines have
         newline = '\r\n' if crlf and 2 * crlf > text.count('\n') else '\n'
-        quote = "'" if "='" in text and text.count("='") > text.count('="') else '"'
+        quote = "'" if "'" in text and text.count("='") > text.count('="') else '"'
         document.memo['layout'] = (text, newline, quote)
     space = document.node.text or ''
     unit = space.rsplit('\n', 1)[-1] if '\n' in space else ''
