@@ -23,11 +23,15 @@ rounds. The table gives, per workload, each version's per-file median time and i
 to the first version's, as the median and the 90th percentile over files.
 
 Workloads: ``read`` (``Robot.from_urdf`` of every URDF below, a fresh parse each time),
-``write`` (``to_urdf()`` of what was read, unedited), ``build`` (a 1,000-link chain made
-with the public API and written), ``mjcf`` (``to_mjcf()`` of the registry robots, the
-mesh cache warm).
+``write`` (``to_urdf()`` of what was read, unedited), ``edited`` (the first ``to_urdf()``
+of a robot just read and edited: renamed, one mass and one effort set), ``build`` (a
+1,000-link chain made with the public API and written), ``mjcf`` (``to_mjcf()`` of the
+registry robots, the mesh cache warm).
 
-    python bench/bench_versions.py 6684634 068406d HEAD [--rounds 5] [--corpus DIR]
+``--cpu`` times each call in the CPU time of its process (``time.process_time``) instead
+of wall time: time spent waiting for a core that other work holds is not counted.
+
+    python bench/bench_versions.py 6684634 068406d HEAD [--rounds 5] [--corpus DIR] [--cpu]
 """
 
 from __future__ import annotations
@@ -44,14 +48,15 @@ import tempfile
 HERE = Path(__file__).resolve().parent
 REPO = HERE.parent
 WORKER = r"""
-import json, sys, warnings
+import json, sys, time, warnings
 warnings.simplefilter('ignore')
 from timing import median_seconds
 from urdfgenpy_ros import Robot
 files = json.loads(sys.argv[1])
 search = json.loads(sys.argv[2])
+timer = time.process_time if sys.argv[3] == 'cpu' else time.perf_counter
 def clock(function):
-    return median_seconds(function, 3)
+    return median_seconds(function, 3, timer)
 def chain():
     from urdfgenpy_ros import Box, Collision, Inertial, Joint, JointLimit, Link, Origin, Visual
     robot = Robot('bench')
@@ -69,11 +74,25 @@ def chain():
                                   axis=(0, 0, 1),
                                   limit=JointLimit(-1.57, 1.57, effort=10, velocity=1)))
     robot.to_urdf()
-out = {'build': {'chain-1000': clock(chain)}, 'read': {}, 'write': {}, 'mjcf': {}}
+def edited(file):
+    robot = Robot.from_urdf(file)
+    robot.name += '_edited'
+    for link in robot.links:
+        if link.inertial is not None:
+            link.inertial.mass = link.inertial.mass * 2 + 0.125
+            break
+    for joint in robot.joints:
+        if joint.limit is not None:
+            joint.limit.effort = 7.5
+            break
+    return robot
+out = {'build': {'chain-1000': clock(chain)}, 'read': {}, 'write': {}, 'edited': {}, 'mjcf': {}}
 for file in files:
     robot = Robot.from_urdf(file)
     out['read'][file] = clock(lambda: Robot.from_urdf(file))
     out['write'][file] = clock(robot.to_urdf)
+    copies = [edited(file) for _ in range(3)]  # each written once: a first write
+    out['edited'][file] = clock(lambda: copies.pop().to_urdf())
     if file in search:
         try:
             robot.to_mjcf(search_paths=search[file])  # the mesh cache warm
@@ -108,11 +127,12 @@ def robots(corpus: Path | None) -> tuple[list[str], dict[str, list[str]]]:
     return files, {str(path): folders for path in registry}
 
 
-def run(folder: Path, files: list[str], search: dict[str, list[str]]) -> dict:
+def run(folder: Path, files: list[str], search: dict[str, list[str]], clock: str = 'wall'
+        ) -> dict:
     """Run the workloads once with the package in ``folder``; return their times."""
     env = dict(os.environ, PYTHONPATH=os.pathsep.join((str(folder), str(HERE))))  # + timing
-    done = subprocess.run([sys.executable, '-c', WORKER, json.dumps(files), json.dumps(search)],
-                          env=env, capture_output=True, text=True, cwd=folder)
+    done = subprocess.run([sys.executable, '-c', WORKER, json.dumps(files), json.dumps(search),
+                           clock], env=env, capture_output=True, text=True, cwd=folder)
     if done.returncode:
         sys.exit(f'{folder}: the workloads failed:\n{done.stderr[-2000:]}')
     return json.loads(done.stdout)
@@ -148,7 +168,7 @@ def table(times: dict[str, list[dict]]) -> str:
         f'{version} (ms, median)' for version in versions) + ' | ' + ' | '.join(
         f'{version} / {first} (median, p90)' for version in versions[1:]) + ' |',
         '|---|---:|' + '---:|' * (2 * len(versions) - 1)]
-    for workload in ('read', 'write', 'build', 'mjcf'):
+    for workload in ('read', 'write', 'edited', 'build', 'mjcf'):
         keys = list(times[first][0][workload])
         if not keys:
             continue
@@ -168,6 +188,7 @@ def main() -> None:
     parser.add_argument('versions', nargs='+', help='git commits or folders, first = yardstick')
     parser.add_argument('--rounds', type=int, default=5)
     parser.add_argument('--corpus', type=Path, default=os.environ.get('URDFGENPY_CORPUS'))
+    parser.add_argument('--cpu', action='store_true', help='CPU time instead of wall time')
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as scratch:
         folders = {version: unpack(version, Path(scratch)) for version in args.versions}
@@ -177,7 +198,8 @@ def main() -> None:
         times: dict[str, list[dict]] = {version: [] for version in folders}
         for _ in range(args.rounds):
             for version, folder in folders.items():
-                times[version].append(run(folder, files, search))
+                times[version].append(run(folder, files, search,
+                                          'cpu' if args.cpu else 'wall'))
     print(table(times))
 
 

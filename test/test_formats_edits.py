@@ -154,7 +154,7 @@ def _normal(value):
     return plain
 
 
-def _check_edits(path: Path, data) -> None:
+def _check_edits(path: Path, data, write_between: bool = False) -> None:
     yourdfpy = require_module('yourdfpy')
     robot = Robot.from_urdf(path)
     theirs = load_yourdfpy(path)
@@ -168,6 +168,8 @@ def _check_edits(path: Path, data) -> None:
                   'block': bool(_blocks(robot))}
         if usable.get(kind, bool(robot.links)):
             _apply(data, kind, robot, theirs, yourdfpy)
+        if write_between:  # what a write keeps of the file's text must not outlive an edit
+            robot.to_urdf()
     with tempfile.TemporaryDirectory() as folder:
         written = Path(folder) / path.name
         robot.to_urdf(written)
@@ -188,6 +190,69 @@ def test_random_edits_are_all_written(path: Path) -> None:
     def check(data) -> None:
         _check_edits(path, data)
     check()
+
+
+@pytest.mark.parametrize('path', LAYOUTS, ids=[path.name for path in LAYOUTS])
+def test_edits_between_writes_are_all_written(path: Path) -> None:
+    """A robot written after each edit still writes every edit (nothing kept goes stale)."""
+    @hypothesis.settings(max_examples=15, deadline=None, derandomize=True)
+    @hypothesis.given(data=st.data())
+    def check(data) -> None:
+        _check_edits(path, data, write_between=True)
+    check()
+
+
+def _edit_blocks(robot: Robot) -> None:
+    """Edit what lxml holds: each block gets a child and an attribute."""
+    from lxml import etree
+    for number, block in enumerate(_blocks(robot)):
+        etree.SubElement(block.element, 'kept').text = f'block {number}'
+        block.element.set('edited', 'yes')
+
+
+def _edit_values(robot: Robot) -> None:
+    """Edit the model: every limit's effort, the last link's name."""
+    for joint in robot.joints:
+        if joint.limit is not None:
+            joint.limit.effort = 3.5
+    robot.links[-1].name = 'renamed_last'
+
+
+@pytest.mark.parametrize('path', LAYOUTS, ids=[path.name for path in LAYOUTS])
+def test_writes_between_edits_change_nothing_written_after(path: Path) -> None:
+    """Written between its edits or not, a robot writes the same (yourdfpy sees the edits)."""
+    once = Robot.from_urdf(path)
+    _edit_blocks(once)
+    _edit_values(once)
+    expected = once.to_urdf()
+    twice = Robot.from_urdf(path)
+    twice.to_urdf()
+    _edit_blocks(twice)
+    twice.to_urdf()
+    _edit_values(twice)
+    with tempfile.TemporaryDirectory() as folder:
+        written = Path(folder) / path.name
+        assert twice.to_urdf(written) == expected
+        theirs = load_yourdfpy(written)
+    assert 'renamed_last' in [link.name for link in theirs.links]
+    assert {joint.limit.effort for joint in theirs.joints if joint.limit is not None} <= {3.5}
+    assert expected.count('<kept>') == len(_blocks(once))
+
+
+def test_a_copy_of_a_written_robot_writes_as_a_robot_never_written() -> None:
+    """What a write keeps of the file stays with the robot written, not with its copies."""
+    import copy
+    path = FIXTURES / 'crlf.urdf'
+    original = Robot.from_urdf(path)
+    _edit_values(original)
+    written = original.to_urdf()
+    twin = copy.deepcopy(original)
+    _edit_blocks(twin)
+    expected = Robot.from_urdf(path)
+    _edit_values(expected)
+    _edit_blocks(expected)
+    assert twin.to_urdf() == expected.to_urdf() != written
+    assert original.to_urdf() == written
 
 
 def _corpus_files() -> list[Path]:

@@ -87,7 +87,7 @@ def parse_xml(data: bytes, file: str | None) -> tuple[Any, Source, list[ReadWarn
     """
     source = Source(file, data)
     warnings: list[ReadWarning] = []
-    match = _DOCTYPE.search(data) if _DECLARATIONS.search(data) else None
+    match = _DOCTYPE.search(data) if b'!' in data and _DECLARATIONS.search(data) else None
     if match and _BARE_DOCTYPE.match(data, match.start()) \
             and not _DOCTYPE.search(data, match.end()):
         match = None  # declares nothing: read as urdfdom reads it

@@ -200,13 +200,15 @@ class Spans:
     what is in them) are ``loose``, their span possibly another's of the same name.
     """
 
-    def __init__(self, text: str, top: Any) -> None:
+    def __init__(self, text: str, top: Any, found: list[Span] | None = None) -> None:
+        """Pair ``top`` and its siblings with the text's top level (``found``, if scanned)."""
         self.text = text
         self.known: dict[Any, Span] = {}
         self.loose: set[Any] = set()
         self.expanded: set[Any] = set()  # the nodes whose children were paired
         nodes = [*reversed(list(top.itersiblings(preceding=True))), top, *top.itersiblings()]
-        found = shallow(text, 0, len(text), last=True)
+        if found is None:
+            found = shallow(text, 0, len(text), last=True)
         if len(found) != len(nodes):  # a copy of the tree has no siblings: its element only
             found = [span for span in found if span.kind == ELEMENT][:1]
             nodes = [top]

@@ -309,8 +309,11 @@ def writer_for(path: PathArg) -> Format:
 
 
 def _named(name: str) -> Format:
-    """Return the row called ``name``."""
-    return next(row for row in FORMATS if row.name == name)
+    """Return the row called ``name`` (asked on every ``Robot.to_*``: a plain loop)."""
+    for row in FORMATS:
+        if row.name == name:
+            return row
+    raise KeyError(f'no format called {name!r}')  # a bug of ours: names are the table's
 
 
 def write_as(robot: RobotModel, name: str, path: PathArg | None, **options: Any) -> str:

@@ -70,9 +70,14 @@ def _layout(document: SourceDocument | None) -> tuple[str, str, str]:
     if document is None:
         return '\n', '"', '  '
     text = document.text
-    crlf = text.count('\r\n') if '\r' in text else 0  # the ends most lines have
-    newline = '\r\n' if 2 * crlf > text.count('\n') else '\n'
-    quote = "'" if "'" in text and text.count("='") > text.count('="') else '"'
+    known = document.memo.get('layout')  # (text, line end, quote): counted once per text
+    if known is not None and known[0] is text:
+        newline, quote = known[1], known[2]
+    else:
+        crlf = text.count('\r\n') if '\r' in text else 0  # the ends most lines have
+        newline = '\r\n' if crlf and 2 * crlf > text.count('\n') else '\n'
+        quote = "'" if "'" in text and text.count("='") > text.count('="') else '"'
+        document.memo['layout'] = (text, newline, quote)
     space = document.node.text or ''
     unit = space.rsplit('\n', 1)[-1] if '\n' in space else ''
     return newline, quote, unit if unit and not unit.strip() else '  '
@@ -103,14 +108,18 @@ class UrdfWriter(ElementWriter):
         :raises ModelError: naming the link or joint that holds a value set since that is
             not of its kind (``inertial.mass = 'abc'``), instead of the error deep inside.
         """
+        if self.verbatim and self.document_record is not None and not self.prologue():
+            text = as_read_text(self.robot, self.mend)
+            if text is not None:
+                return text
+        return self.document_anew()
+
+    def document_anew(self) -> str:
+        """Return the whole file written from the model (a copy of the file's text not tried)."""
         document = self.document_record
         if document is None:
             return ''.join([self.declaration, '\n', self.write_robot(), '\n'])
         mend = self.mend
-        if self.verbatim and (not mend or (not document.mended and
-                                           document.node.getparent() is None)) \
-                and not self.prologue() and is_as_read(self.robot):
-            return document.text.rstrip('\x00') if mend else document.text  # as it is
         splice = self.splice = Splice(document, self.newline, self.quote, self.declared)
         text = splice.text
         node = document.node
@@ -315,10 +324,30 @@ def urdf_file_bytes(robot: RobotModel, *, mend: bool = True) -> bytes:
     return codecs.BOM_UTF8 + data if writer.bom and utf8 else data
 
 
+def as_read_text(robot: RobotModel, mend: bool = True) -> str | None:
+    """
+    Return the text of the file ``robot`` was read from if that is what writing it gives.
+
+    That is while nothing was edited (:func:`.urdf_edits.is_as_read`) and, with ``mend``,
+    the reader mended nothing around the root (a malformed declaration, a wrapper).
+    """
+    document = robot.extras
+    if not isinstance(document, SourceDocument) or mend and (
+            document.mended or document.node.getparent() is not None) \
+            or not is_as_read(robot):
+        return None
+    return document.text.rstrip('\x00') if mend else document.text
+
+
 def write_urdf(robot: RobotModel, path: str | PathLike[str] | None = None) -> str:
     """Return the URDF text of ``robot``; also write it to ``path`` when given."""
-    writer = UrdfWriter(robot)
-    text = writer.document()
+    text = as_read_text(robot)  # nothing edited: the file's text, no writer made
+    if text is not None:
+        bom = robot.extras is not None and robot.extras.bom
+    else:
+        writer = UrdfWriter(robot)
+        text = writer.document_anew()
+        bom = writer.bom
     if path is not None:
-        write_text(path, text, bom=writer.bom)
+        write_text(path, text, bom=bom)
     return text

@@ -40,7 +40,7 @@ def read_directives(root: Any, text: str) -> list[Directive]:
 
     ``text`` is the file's: most never name urdfgenpy, and are not searched further.
     """
-    if 'urdfgenpy' not in text:
+    if '!' not in text or 'urdfgenpy' not in text:  # no comment at all; none names it
         return []
     before = list(root.itersiblings(preceding=True))[::-1]
     leading = {id(node) for node in before}

@@ -38,6 +38,8 @@ from urdfgenpy_ros.model.preserved import SourceDocument
 if TYPE_CHECKING:
     from urdfgenpy_ros.model import RobotModel
 
+_ITEMS = (Material, Link, Joint, Extension)  # what a robot holds of its file's top level
+
 
 def is_edited(item: Any) -> bool:
     """Return whether a model element differs from what was read (or was not read at all)."""
@@ -67,14 +69,19 @@ def is_as_read(robot: RobotModel) -> bool:
     node = document.node
     if node.get('name') != robot.name or node.get('version') != robot.urdf_version:
         return False
-    owners = owners_of_blocks(robot)
     holders: list[Link | Joint] = [*robot.links, *robot.joints]
-    blocks = [*robot.extensions,  # extensions_if_any: no empty list made (lazy_lists)
-              *(block for owner in holders for block in owner.extensions_if_any or ())]
-    items: list[Any] = [*robot.materials, *robot.links, *robot.joints, *blocks]
-    read = [item for item in document.order
-            if isinstance(item, (Material, Link, Joint, Extension))]
-    if len(items) != len(read) or {id(item) for item in items} != {id(i) for i in read}:
+    owners: dict[int, Link | Joint] = {}
+    blocks = [*robot.extensions]
+    for holder in holders:
+        held = holder.extensions_if_any  # no empty list made (lazy_lists)
+        if held:
+            blocks += held
+            for block in held:
+                owners[id(block)] = holder
+    read = [item for item in document.order if isinstance(item, _ITEMS)]
+    materials = robot.materials
+    if len(materials) + len(holders) + len(blocks) != len(read) or {
+            *map(id, materials), *map(id, holders), *map(id, blocks)} != {*map(id, read)}:
         return False
     for item in read:
         if isinstance(item, Extension):
@@ -82,6 +89,7 @@ def is_as_read(robot: RobotModel) -> bool:
             if block_edited(document, item) or (
                     owner is not None and item.tag == 'gazebo' and item.reference != owner.name):
                 return False
-        elif is_edited(item):
+        elif (extras := item.extras) is None or extras.snapshot is None or \
+                values(item) != extras.snapshot:  # is_edited, inline: once per element
             return False
-    return not any(owner.sensors_if_any for owner in holders)
+    return not any(holder.sensors_if_any for holder in holders)

@@ -113,6 +113,8 @@ class ElementWriter:
     def write_inertial(self, inertial: Inertial, pad: str | None, link: Link,
                        slot: Any = None) -> str:
         """Return the ``<inertial>`` element of ``link``."""
+        if inertial.extras is None and slot is None and pad is not None and self.quote == '"':
+            return FRESH[type(inertial)](self, inertial, pad)  # what write_object does then
         return self.write_object(INERTIAL, inertial, pad, slot)
 
     def source_text(self, node: Any, as_read: bool = False) -> str:
@@ -167,7 +169,8 @@ class ElementWriter:
             if text is None:
                 text = self._leaves[item] = in_quotes(FRESH[kind](self, item, pad), self.quote)
             return text
-        return in_quotes(FRESH[kind](self, item, pad), self.quote)
+        text = FRESH[kind](self, item, pad)
+        return text if self.quote == '"' else in_quotes(text, self.quote)  # a call less
 
     def write(self, element: Element, item: Any, node: Any, pad: str | None) -> str:
         """Return ``element`` with the fields of ``item``, laid out like ``node`` if any."""

@@ -30,7 +30,7 @@ from typing import Any
 
 from urdfgenpy_ros.formats._xml import esc
 from urdfgenpy_ros.formats.urdf_schema import (
-    Element, ELEMENTS, FLOAT, LENGTHS, OF_CLASS, REQUIRED, TEXT)
+    Element, ELEMENTS, FLOAT, LENGTHS, OF_CLASS, raw_field, REQUIRED, TEXT)
 from urdfgenpy_ros.model.joint import JointType
 
 Writer = Callable[[Any, Any, str], str]
@@ -38,9 +38,9 @@ _LEAVES = ('origin',)  # one-line frozen children written in place, not by a cal
 
 
 def _attributes(element: Element, owner: str, lines: list[str], indent: str,
-                target: str = 'a') -> None:
+                target: str = 'a', cls: type | None = None) -> None:
     """
-    Emit code that sets ``target`` to the attributes of ``element`` (fields of ``owner``).
+    Emit code setting ``target`` to the attributes of ``element`` (fields of ``owner``, a ``cls``).
 
     The usual case is one f-string: every attribute that defaults to None is None, the
     others are set, and names are plain strings that need no escaping. Anything else
@@ -55,7 +55,8 @@ def _attributes(element: Element, owner: str, lines: list[str], indent: str,
         var = f'v{number}'
         expression = _FIELD_EXPRESSIONS.get((element.tag, attr.field), '{owner}.{field}')
         plain = (element.tag, attr.field) not in _FIELD_EXPRESSIONS  # a field as the user set it
-        lines.append(f'{indent}{var} = ' + expression.format(owner=owner, field=attr.field))
+        lines.append(f'{indent}{var} = ' + expression.format(owner=owner, field=_field(
+            cls, attr.field)))
         if attr.kind == TEXT:
             skip = f" and {var} != ''" if attr.default == '' else ''
             slow.append(f'if {var} is not None{skip}:')
@@ -65,7 +66,7 @@ def _attributes(element: Element, owner: str, lines: list[str], indent: str,
             slow.append(f'    {target} += \' {attr.name}="\' + t + \'"\'')
         else:
             text = 'number' if attr.kind == FLOAT else 'vector'
-            unless = f' and {owner}.{attr.unless} is None' if attr.unless else ''
+            unless = f' and {owner}.{_field(cls, attr.unless)} is None' if attr.unless else ''
             slow.append(f'if {var} is not None{unless}:')
             if attr.kind != FLOAT and plain:  # axis = (0, 1): named by wrong_kind
                 slow.append(f'    if len({var}) != {LENGTHS[attr.kind]}: '
@@ -98,19 +99,26 @@ def _attributes(element: Element, owner: str, lines: list[str], indent: str,
 # How to read an attribute that is not a plain field: a box's size is its three lengths;
 # a joint's type is a JointType, whose text is its value.
 _FIELD_EXPRESSIONS = {('box', 'size'): '({owner}.length, {owner}.width, {owner}.height)',
-                      ('joint', 'type'): 'TYPES.get(w := {owner}.type, w)'}
+                      ('joint', 'type'): 'TYPES.get(w := {owner}.{field}, w)'}
 
 
-def _leaf(element: Element, owner: str, lines: list[str], indent: str, kids: str) -> None:
+def _field(cls: type | None, name: str) -> str:
+    """Return the attribute to read field ``name`` of a ``cls`` by: its bare slot if it has one."""
+    return name if cls is None else raw_field(cls, name)
+
+
+def _leaf(element: Element, owner: str, lines: list[str], indent: str, kids: str,
+          cls: type | None = None) -> None:
     """Emit code that appends a one-line child element ``<tag .../>`` of ``owner`` to ``kids``."""
-    _attributes(element, owner, lines, indent, 'c')
+    _attributes(element, owner, lines, indent, 'c', cls)
     lines.append(f"{indent}{kids}.append(f'<{element.tag}{{c}}/>')")
 
 
 def _body(element: Element, lines: list[str], indent: str, depth: int) -> None:
     """Emit code that writes ``element`` of ``item`` into ``t`` at indentation ``p{depth}``."""
     pad, inner = f'p{depth}', f'p{depth + 1}'
-    _attributes(element, 'item', lines, indent)
+    cls = element.cls
+    _attributes(element, 'item', lines, indent, 'a', cls)
     if not element.children:
         lines.append(f"{indent}t = f'<{element.tag}{{a}}/>'")
         return
@@ -120,27 +128,28 @@ def _body(element: Element, lines: list[str], indent: str, depth: int) -> None:
     for child in element.children:
         tag = child.tags[0]
         if child.many:  # written by the writer of each part's class, unless read
-            lines.append(f'{indent}for part in item.{child.field}:')
+            lines.append(f'{indent}for part in item.{_field(cls, str(child.field))}:')
             lines.append(f'{indent}    {kids}.append(obj(part, {inner}) if part.extras is not '
                          f'None else FRESH[type(part)](writer, part, {inner}))')
         elif child.field is None:
             inline = ELEMENTS[tag]
             body = indent
             if child.optional:
-                test = ' or '.join(f'item.{attr.field} is not None' for attr in inline.attrs)
+                test = ' or '.join(f'item.{_field(cls, attr.field)} is not None'
+                                   for attr in inline.attrs)
                 lines.append(f'{indent}if {test}:')
                 body = indent + '    '
             if inline.children:  # <geometry>: a wrapper around the shape object
-                shape = inline.children[0].field
+                shape = _field(cls, str(inline.children[0].field))
                 lines.append(f'{body}part = item.{shape}')
                 lines.append(f'{body}g = {inner} + unit')
                 lines.append(f'{body}x = obj(part, g) if part.extras is not None else '
                              'FRESH[type(part)](writer, part, g)')
                 lines.append(f"{body}{kids}.append(f'<{tag}>\\n{{g}}{{x}}\\n{{{inner}}}</{tag}>')")
             else:
-                _leaf(inline, 'item', lines, body, kids)
+                _leaf(inline, 'item', lines, body, kids, cls)
         else:
-            lines.append(f'{indent}part = item.{child.field}')
+            lines.append(f'{indent}part = item.{_field(cls, child.field)}')
             if child.field == 'origin':  # left out while it neither moves nor turns
                 lines.append(f'{indent}if part is not None:')
                 lines.append(f'{indent}    if part.extras is not None:')

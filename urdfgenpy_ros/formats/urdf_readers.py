@@ -33,7 +33,7 @@ from typing import Any
 
 from urdfgenpy_ros.formats.urdf_schema import (
     Attr, DEFAULT_CHILD, Element, ELEMENTS, FLOAT, GEOMETRY, MAY_BE_UNUSABLE, OF_CLASS,
-    plan, REQUIRED, TEXT, unusable, VEC3)
+    plan, raw_field, REQUIRED, TEXT, unusable, VEC3)
 from urdfgenpy_ros.model.errors import SourceLocation
 from urdfgenpy_ros.model.joint import JointType
 from urdfgenpy_ros.model.lazy_lists import LazyList
@@ -178,7 +178,9 @@ def _build(code: _Code, element: Element, indent: int) -> None:
     parts = [f'f_{name}' for name in fields]
     parts += [f'(None if f_{name} is None else f_{name}.extras.snapshot)' for name in nested]
     parts += [f'tuple([part.extras.snapshot for part in f_{name}])' for name in lists]
-    code.add(indent, f'ex = Preserved(node, ({", ".join(parts)},))')
+    code.add(indent, 'ex = new(Preserved)')  # Preserved(node, snapshot), without its __init__
+    code.add(indent, 'ex.node = node')
+    code.add(indent, f'ex.snapshot = ({", ".join(parts)},)')
     code.add(indent, 'where = tnew(SL, (r.file, node.sourceline, None, None, ()))')
     if element.make is not None:
         given = ', '.join(f'f_{attr.field}' for attr in element.attrs)
@@ -200,8 +202,8 @@ def _build(code: _Code, element: Element, indent: int) -> None:
             code.add(indent, f'{code.const(getattr(cls, name).__set__)}(o, {value})')
         elif isinstance(cls.__dict__.get(name), LazyList):  # the list is made on first use
             code.add(indent, f'o.{name}_if_any = None')
-        else:
-            code.add(indent, f'o.{name} = {value}')
+        else:  # a new object is in no robot: its bare slot, no edit counted
+            code.add(indent, f'o.{raw_field(cls, name)} = {value}')
     code.add(indent, 'return o')
 
 

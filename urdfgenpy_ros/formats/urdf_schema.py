@@ -249,8 +249,13 @@ def plan(cls: type) -> tuple[tuple[str, ...], tuple[str, ...], tuple[str, ...]]:
     return _PLANS[cls]
 
 
-def _raw(cls: type, name: str) -> str:
-    """Return the attribute that reads field ``name`` of ``cls`` fastest: its bare slot."""
+def raw_field(cls: type, name: str) -> str:
+    """
+    Return the attribute that reads or sets field ``name`` of ``cls`` fastest: its bare slot.
+
+    A field whose setter counts edits or renames (``Joint.parent``, ``Link.name``) has its
+    slot also under ``<name>_slot``: the compiled readers, writers and snapshots use it.
+    """
     slot = getattr(cls, f'{name}_slot', None)  # a slot whose setter counts edits keeps it
     return f'{name}_slot' if isinstance(slot, types.MemberDescriptorType) else name
 
@@ -259,7 +264,7 @@ def _compile_values() -> dict[type, Callable[[Any], tuple]]:
     """Return, per model class, a function that takes a by-value snapshot of an object."""
     namespace: dict[str, Any] = {}
     for number, (cls, (fields, nested, lists)) in enumerate(_PLANS.items()):
-        read = {name: _raw(cls, name) for name in (*fields, *nested, *lists)}
+        read = {name: raw_field(cls, name) for name in (*fields, *nested, *lists)}
         parts = [f'item.{read[name]}' for name in fields]
         parts += [f'(None if (part := item.{read[name]}) is None else V[type(part)](part))'
                   for name in nested]

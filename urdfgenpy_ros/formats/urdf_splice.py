@@ -31,7 +31,7 @@ from lxml import etree
 
 from urdfgenpy_ros.formats._xml import esc, escape_text, without_declared
 from urdfgenpy_ros.formats.source_record import (
-    attribute_value, attributes, children, gaps, Span, Spans, text_value, unchanged)
+    attribute_value, attributes, children, gaps, shallow, Span, Spans, text_value, unchanged)
 from urdfgenpy_ros.model.preserved import SourceDocument
 
 _DOUBLE_QUOTED = re.compile(r'(\s[^\s=<>]+=)"([^"\']*)"')
@@ -67,7 +67,11 @@ class Splice:
         self.quote = quote
         self.declared = declared
         self.top = document.node.getroottree().getroot()
-        self.spans = Spans(text, self.top)
+        key = 'spans' + newline  # the spans of the text's top level: found once per text
+        known = document.memo.get(key)
+        if known is None or known[0] is not document.text:
+            known = document.memo[key] = (document.text, shallow(text, 0, len(text), last=True))
+        self.spans = Spans(text, self.top, known[1])
 
     def span(self, node: Any) -> Span | None:
         """Return the span of a node of the document, if it has one."""

@@ -93,7 +93,7 @@ class RobotModel:
             raise ModelTypeError(f'robot {self.name!r}: add_link() takes a Link, '
                                  f'got {type(link).__name__}')
         links = self._links
-        name = link.name
+        name = link.name_slot  # the slot: no property call
         if name in links:
             raise ModelError(f'robot {self.name!r}: link {name!r} already exists '
                              '(link names must be unique: rename one)')
@@ -108,12 +108,12 @@ class RobotModel:
             raise ModelTypeError(f'robot {self.name!r}: add_joint() takes a Joint, '
                                  f'got {type(joint).__name__}')
         joints = self._joints
-        name = joint.name
+        name = joint.name_slot
         if name in joints:
             raise ModelError(f'robot {self.name!r}: joint {name!r} already exists '
                              '(joint names must be unique: rename one)')
         links = self._links
-        parent, child = joint.parent, joint.child
+        parent, child = joint.parent_slot, joint.child_slot
         if (parent not in links or child not in links or parent == child) and checks.is_on():
             for role, link in (('parent', parent), ('child', child)):
                 if link not in links:

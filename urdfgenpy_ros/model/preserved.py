@@ -106,10 +106,12 @@ class SourceDocument(Preserved):
     ``blocks`` lxml's text of each block's element when read, by element, to tell an
     edited block; ``mended`` whether the reader mended the XML declaration (P102);
     ``directives`` the comments that speak to urdfgenpy, in document order (:class:`Directive`).
-    Writers find each node's span in ``text`` (:mod:`urdfgenpy_ros.formats.source_record`).
+    Writers find each node's span in ``text`` (:mod:`urdfgenpy_ros.formats.source_record`)
+    and keep in ``memo`` what they work out from it (its line ends, the spans of its
+    nodes), each entry with the text it was made from: it holds while ``text`` is that text.
     """
 
-    __slots__ = ('order', 'text', 'bom', 'mended', 'blocks', 'directives')
+    __slots__ = ('order', 'text', 'bom', 'mended', 'blocks', 'directives', 'memo')
 
     def __init__(self, node: Any, order: list[Any], text: str, *, bom: bool = False,
                  mended: bool = False, blocks: dict[Any, bytes] | None = None,
@@ -121,6 +123,20 @@ class SourceDocument(Preserved):
         self.mended = mended
         self.blocks = blocks if blocks is not None else {}
         self.directives = directives if directives is not None else []
+        self.memo: dict[str, tuple[Any, ...]] = {}
+
+    def __getstate__(self) -> tuple[None, dict[str, Any]]:
+        """Return what a copy takes: every slot but ``memo`` (a copy works it out again)."""
+        slots = {name: getattr(self, name) for name in (*Preserved.__slots__,
+                                                        *SourceDocument.__slots__)}
+        del slots['memo']
+        return None, slots
+
+    def __setstate__(self, state: tuple[None, dict[str, Any]]) -> None:
+        """Take a copy's slots; its ``memo`` starts empty."""
+        for name, value in state[1].items():
+            setattr(self, name, value)
+        self.memo = {}
 
     def elements(self, tag: str) -> list[Any]:
         """

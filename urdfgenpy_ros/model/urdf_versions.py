@@ -122,7 +122,7 @@ def needed_version(robot: RobotModel) -> Version:
         if limit is not None and (limit.acceleration is not None or
                                   limit.deceleration is not None or limit.jerk is not None):
             return (1, 2)
-        if joint.origin.quat_xyzw is not None:
+        if joint.origin_slot.quat_xyzw is not None:  # the slot: no property call
             needed = (1, 1)
     if needed == (1, 1):
         return needed
