@@ -21,6 +21,7 @@ from pathlib import Path
 import click
 
 from urdfgenpy_ros.examples import EXAMPLES
+from urdfgenpy_ros.formats._xml import write_text, xml_bytes
 from urdfgenpy_ros.model.errors import UrdfgenpyError
 
 
@@ -36,11 +37,11 @@ def example(name: str, output_dir: Path, force: bool) -> None:
     texts = {output_dir / f'{name}.urdf': robot.to_urdf(),
              output_dir / f'{name}.urdf.xacro': robot.to_xacro()}
     for path, text in texts.items():  # a file as the example writes it is written again
-        if not force and path.is_file() and path.read_bytes() != text.encode('utf-8'):
+        if not force and path.is_file() and path.read_bytes() != xml_bytes(text):
             raise UrdfgenpyError(f'{path} exists and differs from the example (edited?): '
                                  'pass --force to overwrite it, or --output-dir elsewhere')
-    for path in texts:
-        robot.save(path)
+    for path, text in texts.items():  # the texts compared above, not written anew
+        write_text(path, text)
     paths = list(texts)
     robot.print_tree()
     for path in paths:
