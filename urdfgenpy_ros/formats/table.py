@@ -178,49 +178,37 @@ def write_mjcf_warning(robot: RobotModel, path: PathArg | None, **options: Any) 
     return result.text
 
 
-def _xacro_options() -> tuple[Option, ...]:
-    from urdfgenpy_ros.formats.writer_options import xacro_options
-    return xacro_options()
+def _options(name: str) -> Callable[[], tuple[Option, ...]]:
+    """Return the writer options ``writer_options.name`` gives, imported when asked (start-up)."""
+    def options() -> tuple[Option, ...]:
+        from urdfgenpy_ros.formats import writer_options
+        found: tuple[Option, ...] = getattr(writer_options, name)()
+        return found
+    return options
 
 
-def _urdf_options() -> tuple[Option, ...]:
-    from urdfgenpy_ros.formats.writer_options import urdf_options
-    return urdf_options()
-
-
-def _sdf_options() -> tuple[Option, ...]:
-    from urdfgenpy_ros.formats.writer_options import sdf_options
-    return sdf_options()
-
-
-def _mjcf_options() -> tuple[Option, ...]:
-    from urdfgenpy_ros.formats.writer_options import mjcf_options
-    return mjcf_options()
-
-
-def _prepare_sdf(robot: RobotModel, options: Mapping[str, Any]) -> ReviewRecord:
-    from urdfgenpy_ros.formats.prepare import prepare_sdf
-    return prepare_sdf(robot, options)
-
-
-def _prepare_mjcf(robot: RobotModel, options: Mapping[str, Any]) -> ReviewRecord:
-    from urdfgenpy_ros.formats.prepare import prepare_mjcf
-    return prepare_mjcf(robot, options)
+def _prepare(name: str) -> Callable[[RobotModel, Mapping[str, Any]], ReviewRecord]:
+    """Return ``prepare.name``, the format's prepare, imported at its first call (start-up)."""
+    def prepare(robot: RobotModel, options: Mapping[str, Any]) -> ReviewRecord:
+        from urdfgenpy_ros.formats import prepare as module
+        found: ReviewRecord = getattr(module, name)(robot, options)
+        return found
+    return prepare
 
 
 FORMATS: list[Format] = [
     Format('xacro', ('.urdf.xacro', '.xacro'), 'Xacro', _read_xacro, _write_xacro,
-           _xacro_options),
-    Format('urdf', ('.urdf',), 'URDF', _read_urdf, _write_urdf, _urdf_options,
+           _options('xacro_options')),
+    Format('urdf', ('.urdf',), 'URDF', _read_urdf, _write_urdf, _options('urdf_options'),
            misplaced='{flag} applies to .urdf and .xacro output only: drop it or write .urdf'),
-    Format('sdf', ('.sdf',), 'SDF', None, _write_sdf, _sdf_options,
+    Format('sdf', ('.sdf',), 'SDF', None, _write_sdf, _options('sdf_options'),
            not_read='reading SDF is not supported (convert from URDF or Xacro)',
-           prepare=_prepare_sdf, one_tree=True),
+           prepare=_prepare('prepare_sdf'), one_tree=True),
     Format('mjcf', ('.xml', '.mjcf'), 'MuJoCo MJCF', None, write_mjcf_warning,
-           _mjcf_options,
+           _options('mjcf_options'),
            not_read='reading MJCF is not supported: urdfgenpy writes it (a URDF or Xacro '
                     'file named .xml: rename it .urdf or .urdf.xacro)',
-           prepare=_prepare_mjcf, one_tree=True,
+           prepare=_prepare('prepare_mjcf'), one_tree=True,
            misplaced='{flags} apply to MJCF output (.xml, .mjcf) only: drop them or write .xml'),
     Format('assembly', ('.assembly.yaml', '.assembly.yml'), 'assembly file',
            _read_assembly, None),
