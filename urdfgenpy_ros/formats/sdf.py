@@ -38,7 +38,6 @@ from urdfgenpy_ros.formats._xml import robot_name, write_text
 from urdfgenpy_ros.formats.sdf_frames import merge_for_sdf, Merged
 from urdfgenpy_ros.formats.sdf_gazebo import (
     apply_blocks, apply_shape_blocks, gazebo_losses, script_notes)
-from urdfgenpy_ros.formats.sdf_inertia import refusal
 from urdfgenpy_ros.formats.sdf_mimic import Follow, follows, mimic_notes, MIMIC_VERSION
 from urdfgenpy_ros.formats.sdf_mimic import sdf_version
 from urdfgenpy_ros.model.errors import ModelError
@@ -283,18 +282,14 @@ def _check_ends(robot: RobotModel) -> None:
 
 def _refused(merged: RobotModel) -> list[str]:
     """Return a line for each link of the SDF whose inertia libsdformat refuses."""
-    moving = {joint.child for joint in merged.joints if joint.type is not JointType.FIXED}
+    from urdfgenpy_ros.formats.sdf_refusals import sdformat_refusals
+    from urdfgenpy_ros.model.findings import Findings
     lines = []
-    for link in merged.links:
-        inertial = link.inertial if link.name != WORLD else None
-        problem = refusal(inertial) if inertial is not None else None
-        if inertial is not None and problem is not None:
-            code, message = problem
-            code = 'I201' if code == 'I210' and link.name in moving else code
-            source = inertial.source
-            where = f'{source}: ' if source is not None and source.line is not None else ''
-            lines.append(f'{where}error {code} link {link.name!r}: {message}, which '
-                         f'libsdformat refuses: Gazebo will not load this SDF ({_MENDS[code]})')
+    for finding in sdformat_refusals(merged, Findings(merged)):
+        where = f'{finding.location}: ' if finding.location.line is not None else ''
+        lines.append(f'{where}error {finding.code} {finding.element}: {finding.message}, '
+                     'which libsdformat refuses: Gazebo will not load this SDF '
+                     f'({_MENDS[finding.code]})')
     return lines
 
 

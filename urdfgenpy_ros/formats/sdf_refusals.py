@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 from urdfgenpy_ros.formats.sdf_inertia import refusal
 from urdfgenpy_ros.model.errors import Severity, SourceLocation, ValidationError
 from urdfgenpy_ros.model.findings import Findings, link_path
+from urdfgenpy_ros.model.joint import JointType
 from urdfgenpy_ros.reshape.lumping import lumps, WORLD
 
 if TYPE_CHECKING:
@@ -29,7 +30,8 @@ if TYPE_CHECKING:
 
 _SAME = {'I202': ('I202', 'I203'), 'I203': ('I202', 'I203'), 'I210': ('I201', 'I210'),
          'R305': ('R305',)}  # the inertia check's codes for what libsdformat refuses
-_HINTS = {'I210': 'give it a positive mass (kg)', 'R305': 'write finite numbers in its <inertial>'}
+_HINTS = {'I201': 'give it a positive mass (kg)', 'I210': 'give it a positive mass (kg)',
+          'R305': 'write finite numbers in its <inertial>'}
 
 
 def sdformat_refusals(robot: RobotModel, findings: Findings) -> list[ValidationError]:
@@ -52,6 +54,8 @@ def sdformat_refusals(robot: RobotModel, findings: Findings) -> list[ValidationE
                      None)
         if found is None:
             code, message = problem
+            if code == 'I210' and _moves(robot, link.name):
+                code = 'I201'  # the inertia check's code for a link that moves
             source = link.inertial.source if link.inertial is not None else None
             where = (source if source is not None and source.line is not None
                      else SourceLocation(path=link_path(link.name) + '/inertial/inertia'))
@@ -59,6 +63,12 @@ def sdformat_refusals(robot: RobotModel, findings: Findings) -> list[ValidationE
                                     _HINTS.get(code, 'libsdformat refuses it'))
         refused.append(found)
     return refused
+
+
+def _moves(robot: RobotModel, name: str) -> bool:
+    """Return whether link ``name`` hangs on a joint that moves."""
+    joint = robot.parent_joint(name)
+    return joint is not None and joint.type is not JointType.FIXED
 
 
 def check_libsdformat(robot: RobotModel, findings: Findings) -> None:
