@@ -29,6 +29,7 @@ from typing import Any, TYPE_CHECKING
 
 from lxml import etree
 
+from urdfgenpy_ros.formats.urdf import as_read_text
 from urdfgenpy_ros.model.preserved import SourceDocument
 
 if TYPE_CHECKING:
@@ -44,7 +45,7 @@ def mujoco_block(robot: RobotModel) -> Any | None:
     document = robot.extras
     if not isinstance(document, SourceDocument):
         return None  # built in Python: the model has no place for one
-    if None in document.node.nsmap and _as_file(robot, document):
+    if None in document.node.nsmap and as_read_text(robot) is not None:
         return None  # the written file keeps its default namespace: no <mujoco> tag in it
     return next(iter(document.elements('mujoco')), None)
 
@@ -52,7 +53,7 @@ def mujoco_block(robot: RobotModel) -> Any | None:
 def urdf_root(robot: RobotModel) -> Any:
     """Return the ``<robot>`` element of ``robot``'s URDF, with its source lines."""
     document = robot.extras
-    if isinstance(document, SourceDocument) and _as_file(robot, document) \
+    if isinstance(document, SourceDocument) and as_read_text(robot) is not None \
             and None not in document.node.nsmap and _utf8(document.text) \
             and not any(warning.code in _REREAD for warning in robot.read_warnings):
         return document.node
@@ -62,13 +63,6 @@ def urdf_root(robot: RobotModel) -> Any:
     return etree.fromstring(write_urdf(robot).encode('utf-8'),
                             etree.XMLParser(huge_tree=True, resolve_entities=False,
                                             no_network=True, recover=kept))
-
-
-def _as_file(robot: RobotModel, document: SourceDocument) -> bool:
-    """Return whether the URDF writer writes ``robot`` as the text of its file."""
-    from urdfgenpy_ros.formats.urdf_edits import is_as_read
-    return not document.mended and document.node.getparent() is None \
-        and is_as_read(robot)
 
 
 def _utf8(text: str) -> bool:
